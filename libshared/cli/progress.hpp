@@ -1,0 +1,28 @@
+/// @file progress.hpp
+/// @brief A progress line on stderr: count, rate, and percent and ETA when
+/// the input size is known. Redrawn at most five times a second.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+namespace tk::cli {
+
+class Progress {
+ public:
+  Progress(std::string tool, bool enabled);
+  ~Progress();
+  /// `done` items so far; `fraction` of the work done, negative if unknown.
+  void update(std::uint64_t done, double fraction = -1.0);
+  /// Clears the line.
+  void finish();
+
+ private:
+  std::string tool_;
+  bool enabled_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point start_, last_;
+};
+
+}  // namespace tk::cli

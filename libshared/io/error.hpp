@@ -1,0 +1,44 @@
+/// @file error.hpp
+/// @brief The one error type of the toolkit: a message and where it happened.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace tk {
+
+/// A place in the input: file name as the user gave it ("-" shows as
+/// "<stdin>") and 1-based line number; line 0 means "no particular line".
+struct Location {
+  std::string file;
+  std::size_t line = 0;
+};
+
+/// Thrown for bad data and runtime failures; main turns it into
+/// "tool: file:line: message" and exit status 1.
+class Error : public std::runtime_error {
+ public:
+  explicit Error(const std::string& message, Location where = {})
+      : std::runtime_error(message), where_(std::move(where)) {}
+
+  const Location& where() const noexcept { return where_; }
+  /// "file:line: message", "file: message" or just "message".
+  std::string located_message() const;
+
+ private:
+  Location where_;
+};
+
+}  // namespace tk
+
+namespace tk {
+
+/// A bad combination of options found after parsing: exit status 2 and the
+/// "Try 'tool --help'" hint, like CLI11's own usage errors.
+class UsageError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace tk

@@ -1,0 +1,78 @@
+/// @file record_writer.cpp
+#include "io/record_writer.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+#include "io/csv.hpp"
+#include "io/error.hpp"
+
+namespace tk::io {
+
+RecordWriter::RecordWriter(OutputFormat format, std::FILE* out)
+    : format_(format), out_(out), interactive_(isatty(fileno(out)) != 0),
+      last_flush_(std::chrono::steady_clock::now()) {}
+
+std::string cell_text(const Record& value) {
+  switch (value.type()) {
+    case Record::value_t::string: return value.get<std::string>();
+    case Record::value_t::null: return {};
+    default: return value.dump();
+  }
+}
+
+void RecordWriter::emit(const std::string& text) {
+  if (std::fwrite(text.data(), 1, text.size(), out_) != text.size())
+    throw Error(std::string("write error: ") + std::strerror(errno));
+  const auto now = std::chrono::steady_clock::now();
+  if (interactive_ || now - last_flush_ > std::chrono::milliseconds(200)) {
+    flush();
+    last_flush_ = now;
+  }
+}
+
+void RecordWriter::flush() {
+  if (std::fflush(out_) != 0) throw Error(std::string("write error: ") + std::strerror(errno));
+}
+
+void RecordWriter::write(const Record& record) {
+  if (format_ == OutputFormat::csv) {
+    write_csv(record);
+    return;
+  }
+  line_ = record.dump(-1, ' ', false, Record::error_handler_t::replace);
+  line_ += '\n';
+  emit(line_);
+}
+
+void RecordWriter::write_csv(const Record& record) {
+  line_.clear();
+  if (columns_.empty()) {
+    // Pass-through fields in input order, then the tool's own in declared order.
+    for (const auto& item : record.items())
+      if (std::find(declared_.begin(), declared_.end(), item.key()) == declared_.end())
+        columns_.push_back(item.key());
+    columns_.insert(columns_.end(), declared_.begin(), declared_.end());
+    for (std::size_t i = 0; i < columns_.size(); ++i) {
+      if (i) line_ += ',';
+      append_csv_field(line_, columns_[i]);
+    }
+    line_ += '\n';
+  }
+  for (const auto& item : record.items())
+    if (std::find(columns_.begin(), columns_.end(), item.key()) == columns_.end())
+      throw Error("csv output: field '" + item.key() +
+                  "' is not among the columns set by the first record");
+  for (std::size_t i = 0; i < columns_.size(); ++i) {
+    if (i) line_ += ',';
+    auto found = record.find(columns_[i]);
+    if (found != record.end()) append_csv_field(line_, cell_text(*found));
+  }
+  line_ += '\n';
+  emit(line_);
+}
+
+}  // namespace tk::io

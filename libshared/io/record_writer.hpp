@@ -1,0 +1,50 @@
+/// @file record_writer.hpp
+/// @brief Writes records as JSON Lines (default) or CSV with a header row.
+#pragma once
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "io/record.hpp"
+
+namespace tk::io {
+
+enum class OutputFormat { json_lines, csv };
+
+/// One writer for every tool. JSON Lines writes each record as one compact
+/// object. CSV takes its columns from the first record plus the fields the
+/// tool declares, so records that lack an optional field still line up.
+/// Output is buffered but flushed at least every 0.2 s (and per record on a
+/// terminal) so slow pipelines show results as they come.
+class RecordWriter {
+ public:
+  explicit RecordWriter(OutputFormat format, std::FILE* out = stdout);
+
+  /// Fields the tool may add to records, in output order.
+  void declare_fields(std::vector<std::string> names) { declared_ = std::move(names); }
+
+  /// Throws Error on a write failure, or (CSV) for a field that is not a column.
+  void write(const Record& record);
+  /// Flushes and reports a write error as Error.
+  void flush();
+
+ private:
+  void write_csv(const Record& record);
+  void emit(const std::string& text);
+
+  OutputFormat format_;
+  std::FILE* out_;
+  bool interactive_;
+  std::vector<std::string> declared_;
+  std::vector<std::string> columns_;
+  std::string line_;
+  std::chrono::steady_clock::time_point last_flush_;
+};
+
+/// A record field as CSV cell text: strings raw, numbers and booleans as in
+/// JSON, null as empty, arrays and objects as compact JSON.
+std::string cell_text(const Record& value);
+
+}  // namespace tk::io

@@ -1,0 +1,176 @@
+/// @file big_tests.cpp
+#include "primes/big_tests.hpp"
+
+namespace tk::primes {
+
+namespace {
+
+/// base^exponent mod N by left-to-right binary powering. A base that fits
+/// a word multiplies in with one short product per set bit, so a Fermat or
+/// Miller-Rabin test costs one squaring and one reduction per bit.
+void power_mod(mpz_class& result, const mpz_class& base, const mpz_class& exponent, const Modulus& N) {
+  mpz_ptr x = result.get_mpz_t();
+  const mpz_srcptr e = exponent.get_mpz_t();
+  mpz_class b = base;
+  N.reduce(b.get_mpz_t());
+  if (mpz_sgn(e) == 0) {
+    result = 1;
+    return;
+  }
+  const bool small = mpz_fits_ulong_p(b.get_mpz_t());
+  const unsigned long word = small ? mpz_get_ui(b.get_mpz_t()) : 0;
+  const bool two = small && word == 2;
+  mpz_set(x, b.get_mpz_t());
+  mpz_realloc2(x, 2 * N.bits() + 128);
+  for (mp_bitcnt_t bit = mpz_sizeinbase(e, 2) - 1; bit-- > 0;) {
+    mpz_mul(x, x, x);
+    if (mpz_tstbit(e, bit)) {
+      if (two) {
+        mpz_mul_2exp(x, x, 1);
+      } else if (small) {
+        mpz_mul_ui(x, x, word);
+      } else {
+        N.reduce(x);
+        mpz_mul(x, x, b.get_mpz_t());
+      }
+    }
+    N.reduce(x);
+  }
+}
+
+}  // namespace
+
+bool fermat_probable_prime(const Modulus& N, const mpz_class& base) {
+  mpz_class b = base % N.value();
+  if (b == 0) return true;
+  mpz_class r;
+  power_mod(r, b, N.value() - 1, N);
+  return r == 1;
+}
+
+bool strong_probable_prime(const Modulus& N, const mpz_class& base) {
+  const mpz_class n_minus_1 = N.value() - 1;
+  mpz_class b = base % N.value();
+  if (b == 0) return true;
+  const mp_bitcnt_t s = mpz_scan1(n_minus_1.get_mpz_t(), 0);
+  mpz_class d;
+  mpz_tdiv_q_2exp(d.get_mpz_t(), n_minus_1.get_mpz_t(), s);
+  mpz_class x;
+  power_mod(x, b, d, N);
+  if (x == 1 || x == n_minus_1) return true;
+  for (mp_bitcnt_t r = 1; r < s; ++r) {
+    mpz_mul(x.get_mpz_t(), x.get_mpz_t(), x.get_mpz_t());
+    N.reduce(x.get_mpz_t());
+    if (x == n_minus_1) return true;
+    if (x == 1) return false;
+  }
+  return false;
+}
+
+SelfridgeChoice selfridge_d(const mpz_class& N) {
+  SelfridgeChoice choice;
+  for (std::int64_t d = 5;; d = d > 0 ? -(d + 2) : -d + 2) {
+    const int j = mpz_si_kronecker(static_cast<long>(d), N.get_mpz_t());
+    if (j == -1) {
+      choice.d = d;
+      return choice;
+    }
+    if (j == 0) {
+      mpz_class g;
+      mpz_gcd_ui(g.get_mpz_t(), N.get_mpz_t(), static_cast<unsigned long>(d < 0 ? -d : d));
+      if (g != N) {
+        choice.d = d;
+        choice.factor = g;
+        return choice;
+      }
+    }
+    if (d == -15 && mpz_perfect_square_p(N.get_mpz_t())) return choice;
+  }
+}
+
+// Works in Z_N[sqrt(D)] with alpha = (1 + sqrt(D))/2, alpha^m = (V_m + U_m sqrt(D))/2.
+// Doubling: U_2m = U_m V_m = ((U+V)^2 - U^2 - V^2)/2 and
+// V_2m = (V_m^2 + D U_m^2)/2: three squarings and two reductions, and no
+// running power of Q (Q^m = (V_m^2 - D U_m^2)/4 when it is needed).
+// Incrementing: U_m+1 = (U_m + V_m)/2, V_m+1 = (D U_m + V_m)/2.
+// After U_d, V_d, the steps V_{2^r d} use W_r = V_{2^r d} / Q^(2^(r-1) d),
+// which obeys W_{r+1} = W_r^2 - 2: one squaring per step, as in LLR.
+bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_class& factor) {
+  const mpz_class& n = N.value();
+  const mpz_class n_plus_1 = n + 1;
+  const mp_bitcnt_t s = mpz_scan1(n_plus_1.get_mpz_t(), 0);
+  mpz_class k;
+  mpz_tdiv_q_2exp(k.get_mpz_t(), n_plus_1.get_mpz_t(), s);
+
+  const std::size_t room = 2 * N.bits() + 128;
+  mpz_class u = 1, v = 1, uu, vv, sum;
+  for (mpz_class* z : {&u, &v, &uu, &vv, &sum}) mpz_realloc2(z->get_mpz_t(), room);
+  const long dl = static_cast<long>(d_param);
+  auto halve = [&](mpz_class& x) {  // x/2 mod N for 0 <= x < 2N... any x reduced first
+    if (mpz_odd_p(x.get_mpz_t())) x += n;
+    mpz_tdiv_q_2exp(x.get_mpz_t(), x.get_mpz_t(), 1);
+  };
+  for (mp_bitcnt_t bit = mpz_sizeinbase(k.get_mpz_t(), 2) - 1; bit-- > 0;) {
+    mpz_add(sum.get_mpz_t(), u.get_mpz_t(), v.get_mpz_t());
+    mpz_mul(sum.get_mpz_t(), sum.get_mpz_t(), sum.get_mpz_t());
+    mpz_mul(uu.get_mpz_t(), u.get_mpz_t(), u.get_mpz_t());
+    mpz_mul(vv.get_mpz_t(), v.get_mpz_t(), v.get_mpz_t());
+    // u := ((u+v)^2 - u^2 - v^2) / 2 exactly (it is 2uv as integers)
+    mpz_sub(sum.get_mpz_t(), sum.get_mpz_t(), uu.get_mpz_t());
+    mpz_sub(sum.get_mpz_t(), sum.get_mpz_t(), vv.get_mpz_t());
+    mpz_tdiv_q_2exp(u.get_mpz_t(), sum.get_mpz_t(), 1);
+    N.reduce(u.get_mpz_t());
+    // v := (v^2 + D u^2) / 2
+    if (dl > 0) mpz_addmul_ui(vv.get_mpz_t(), uu.get_mpz_t(), static_cast<unsigned long>(dl));
+    else mpz_submul_ui(vv.get_mpz_t(), uu.get_mpz_t(), static_cast<unsigned long>(-dl));
+    N.reduce(vv.get_mpz_t());
+    halve(vv);
+    mpz_swap(v.get_mpz_t(), vv.get_mpz_t());
+    if (mpz_tstbit(k.get_mpz_t(), bit)) {
+      mpz_add(sum.get_mpz_t(), u.get_mpz_t(), v.get_mpz_t());
+      // v := (D u + v)/2, u := (u + v)/2
+      mpz_mul_si(vv.get_mpz_t(), u.get_mpz_t(), dl);
+      mpz_add(vv.get_mpz_t(), vv.get_mpz_t(), v.get_mpz_t());
+      N.reduce(vv.get_mpz_t());
+      halve(vv);
+      mpz_swap(v.get_mpz_t(), vv.get_mpz_t());
+      if (mpz_cmp(sum.get_mpz_t(), n.get_mpz_t()) >= 0) sum -= n;
+      halve(sum);
+      mpz_swap(u.get_mpz_t(), sum.get_mpz_t());
+    }
+  }
+  if (u == 0 || v == 0) return true;
+  if (s < 2) return false;
+
+  // Q^k = (V^2 - D U^2) / 4, then W_1 = V_k^2 / Q^k - 2.
+  mpz_mul(uu.get_mpz_t(), u.get_mpz_t(), u.get_mpz_t());
+  mpz_mul(vv.get_mpz_t(), v.get_mpz_t(), v.get_mpz_t());
+  mpz_class qk = vv;
+  if (dl > 0) mpz_submul_ui(qk.get_mpz_t(), uu.get_mpz_t(), static_cast<unsigned long>(dl));
+  else mpz_addmul_ui(qk.get_mpz_t(), uu.get_mpz_t(), static_cast<unsigned long>(-dl));
+  N.reduce(qk.get_mpz_t());
+  halve(qk);
+  halve(qk);
+  mpz_class inverse;
+  if (!mpz_invert(inverse.get_mpz_t(), qk.get_mpz_t(), n.get_mpz_t())) {
+    mpz_gcd(factor.get_mpz_t(), qk.get_mpz_t(), n.get_mpz_t());
+    if (factor == n) factor = 0;
+    return false;
+  }
+  N.reduce(vv.get_mpz_t());
+  mpz_class w;
+  mpz_realloc2(w.get_mpz_t(), room);
+  mpz_mul(w.get_mpz_t(), vv.get_mpz_t(), inverse.get_mpz_t());
+  w -= 2;
+  N.reduce(w.get_mpz_t());
+  if (w == 0) return true;
+  for (mp_bitcnt_t r = 2; r < s; ++r) {
+    mpz_mul(w.get_mpz_t(), w.get_mpz_t(), w.get_mpz_t());
+    mpz_sub_ui(w.get_mpz_t(), w.get_mpz_t(), 2);
+    N.reduce(w.get_mpz_t());
+    if (w == 0) return true;
+  }
+  return false;
+}
+
+}  // namespace tk::primes

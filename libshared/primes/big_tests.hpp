@@ -1,0 +1,31 @@
+/// @file big_tests.hpp
+/// @brief Probable-prime tests for integers of any size with GMP, using the
+/// Modulus' reduction (special form k*2^n+c when it has one).
+#pragma once
+
+#include <gmpxx.h>
+
+#include <cstdint>
+
+#include "primes/modulus.hpp"
+
+namespace tk::primes {
+
+/// a^(N-1) == 1 (mod N). N odd, N > 3.
+bool fermat_probable_prime(const Modulus& N, const mpz_class& base);
+
+/// Miller-Rabin strong probable prime to `base`. N odd, N > 3.
+bool strong_probable_prime(const Modulus& N, const mpz_class& base);
+
+/// Result of choosing Selfridge's D for N.
+struct SelfridgeChoice {
+  std::int64_t d = 0;       ///< 0 when N is a perfect square
+  mpz_class factor = 0;     ///< a nontrivial factor found on the way, else 0
+};
+SelfridgeChoice selfridge_d(const mpz_class& N);
+
+/// Strong Lucas probable prime with P = 1, Q = (1 - D)/4 (D from
+/// selfridge_d). Sets `factor` if the test stumbles on one.
+bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d, mpz_class& factor);
+
+}  // namespace tk::primes

@@ -1,0 +1,42 @@
+/// @file candidate_input.cpp
+#include "primes/candidate_input.hpp"
+
+#include "primes/candidate.hpp"
+#include "primes/number_expression.hpp"
+#include "primes/prime_text_formats.hpp"
+
+namespace tk::primes {
+
+namespace {
+
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  const auto last = text.find_last_not_of(" \t");
+  return text.substr(first, last - first + 1);
+}
+
+}  // namespace
+
+bool NumberLineDecoder::decode(std::string_view line, const Location& where, Record& out) {
+  const std::string_view text = trim(line);
+  if (text.empty() || text.starts_with("#") || text.starts_with("//")) return false;
+  try {
+    out = record_from_number_text(text, max_bits_);
+  } catch (const Error& e) {
+    throw Error(e.what(), where);
+  }
+  return true;
+}
+
+io::NativeFormatProbe candidate_format_probe(std::size_t max_bits) {
+  return [max_bits](std::string_view first_line) -> std::unique_ptr<io::LineDecoder> {
+    if (auto decoder = probe_prime_text_format(first_line, max_bits)) return decoder;
+    const std::string_view text = trim(first_line);
+    if (text.starts_with("#") || text.starts_with("//") || looks_like_number(text))
+      return std::make_unique<NumberLineDecoder>(max_bits);
+    return nullptr;
+  };
+}
+
+}  // namespace tk::primes

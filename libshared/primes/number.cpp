@@ -1,0 +1,38 @@
+/// @file number.cpp
+#include "primes/number.hpp"
+
+#include <cmath>
+
+#include "io/error.hpp"
+
+namespace tk::primes {
+
+mpz_class evaluate_kbnc(const KbncForm& form, std::size_t max_bits) {
+  if (form.b < 2) throw Error("base b must be at least 2");
+  const double bits = static_cast<double>(form.n) * std::log2(static_cast<double>(form.b)) +
+                      static_cast<double>(mpz_sizeinbase(form.k.get_mpz_t(), 2));
+  if (bits > static_cast<double>(max_bits) + 1)
+    throw Error("number has about " + std::to_string(static_cast<std::uint64_t>(bits)) +
+                " bits, more than --max-bits " + std::to_string(max_bits));
+  mpz_class value;
+  if (form.b == 2) {
+    mpz_mul_2exp(value.get_mpz_t(), form.k.get_mpz_t(), form.n);
+  } else {
+    mpz_ui_pow_ui(value.get_mpz_t(), form.b, form.n);
+    value *= form.k;
+  }
+  if (form.c >= 0) value += static_cast<unsigned long>(form.c);
+  else value -= static_cast<unsigned long>(-(form.c + 1)) + 1UL;
+  return value;
+}
+
+std::string kbnc_text(const KbncForm& form) {
+  std::string text;
+  if (form.k != 1) text = form.k.get_str() + "*";
+  text += std::to_string(form.b) + "^" + std::to_string(form.n);
+  if (form.c > 0) text += "+" + std::to_string(form.c);
+  if (form.c < 0) text += std::to_string(form.c);
+  return text;
+}
+
+}  // namespace tk::primes

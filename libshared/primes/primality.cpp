@@ -1,0 +1,175 @@
+/// @file primality.cpp
+#include "primes/primality.hpp"
+
+#include <algorithm>
+#include <random>
+
+#include "primes/big_tests.hpp"
+#include "primes/modulus.hpp"
+#include "primes/montgomery64.hpp"
+#include "primes/prime64.hpp"
+#include "primes/trial_division.hpp"
+
+namespace tk::primes {
+
+std::string_view verdict_name(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::composite: return "composite";
+    case Verdict::unknown: return "unknown";
+    case Verdict::probable_prime: return "probable-prime";
+    case Verdict::prime: return "prime";
+  }
+  return "unknown";
+}
+
+std::string_view test_name(TestKind kind) {
+  switch (kind) {
+    case TestKind::trial: return "trial";
+    case TestKind::fermat: return "fermat";
+    case TestKind::miller_rabin: return "mr";
+    case TestKind::lucas: return "lucas";
+    case TestKind::bpsw: return "bpsw";
+  }
+  return "bpsw";
+}
+
+std::optional<TestKind> parse_test_kind(std::string_view text) {
+  if (text == "trial") return TestKind::trial;
+  if (text == "fermat") return TestKind::fermat;
+  if (text == "mr" || text == "miller-rabin") return TestKind::miller_rabin;
+  if (text == "lucas") return TestKind::lucas;
+  if (text == "bpsw") return TestKind::bpsw;
+  return std::nullopt;
+}
+
+std::uint64_t default_trial_bound(std::size_t bits) {
+  // Enough to drop most composites cheaply, never more than ~1% of a test.
+  if (bits <= 64) return 61;
+  const std::uint64_t scaled = static_cast<std::uint64_t>(bits) * bits / 8;
+  return std::clamp<std::uint64_t>(scaled, 1000, std::uint64_t{1} << 20);
+}
+
+namespace {
+
+TestOutcome composite(std::string witness) { return {Verdict::composite, std::move(witness)}; }
+
+std::string base_witness(std::uint64_t base) { return "base " + std::to_string(base); }
+
+/// Bases for Fermat / Miller-Rabin: the chosen ones, then random ones drawn
+/// from a generator seeded by --seed and the number itself, so results do
+/// not depend on thread scheduling.
+std::vector<mpz_class> choose_bases(const mpz_class& n, const TestPlan& plan) {
+  std::vector<mpz_class> bases;
+  for (std::uint64_t b : plan.bases) bases.emplace_back(static_cast<unsigned long>(b));
+  if (plan.bases.empty() && plan.random_bases == 0) bases.emplace_back(2);
+  if (plan.random_bases && n > 4) {
+    gmp_randclass random(gmp_randinit_mt);
+    mpz_class seed = n;
+    seed ^= mpz_class(static_cast<unsigned long>(plan.seed));
+    random.seed(seed);
+    const mpz_class span = n - 3;  // bases in [2, n - 2]
+    for (unsigned i = 0; i < plan.random_bases; ++i) bases.push_back(random.get_z_range(span) + 2);
+  }
+  return bases;
+}
+
+std::string witness_text(const mpz_class& base) { return "base " + base.get_str(); }
+
+TestOutcome test_u64(std::uint64_t n, const TestPlan& plan) {
+  if (n == 2) return {Verdict::prime, {}};
+  if (n % 2 == 0) return composite("factor 2");
+  const std::uint64_t bound = plan.trial_bound.value_or(default_trial_bound(64));
+  if (bound >= 3) {
+    if (std::uint64_t f = small_factor_u64(n, bound)) return composite("factor " + std::to_string(f));
+    // No factor up to sqrt(n): trial division has proved n prime.
+    if (static_cast<u128>(bound) * bound >= n) return {Verdict::prime, {}};
+  }
+  auto lucas = [&]() -> std::optional<TestOutcome> {
+    std::uint64_t factor = 0;
+    const std::int64_t d = selfridge_d_u64(n, factor);
+    if (d == 0) return composite("square");
+    if (factor) return composite("factor " + std::to_string(factor));
+    if (!strong_lucas_probable_prime_u64(n, d)) return composite("lucas D=" + std::to_string(d));
+    return std::nullopt;
+  };
+  switch (plan.kind) {
+    case TestKind::trial: return {Verdict::unknown, {}};
+    case TestKind::fermat:
+    case TestKind::miller_rabin:
+      for (const mpz_class& base : choose_bases(n, plan)) {
+        const std::uint64_t b = mpz_get_ui(base.get_mpz_t());
+        const bool pass = plan.kind == TestKind::fermat ? fermat_probable_prime_u64(n, b)
+                                                        : strong_probable_prime_u64(n, b);
+        if (!pass) return composite(base_witness(b));
+      }
+      return {Verdict::probable_prime, {}};
+    case TestKind::lucas:
+      if (auto failed = lucas()) return *failed;
+      return {Verdict::probable_prime, {}};
+    case TestKind::bpsw:
+      if (!strong_probable_prime_u64(n, 2)) return composite(base_witness(2));
+      if (auto failed = lucas()) return *failed;
+      return {Verdict::prime, {}};  // BPSW has no pseudoprime below 2^64
+  }
+  return {};
+}
+
+TestOutcome test_big(const Number& number, const TestPlan& plan) {
+  const mpz_class& n = number.value;
+  if (mpz_even_p(n.get_mpz_t())) return composite("factor 2");
+  const std::uint64_t bound = plan.trial_bound.value_or(default_trial_bound(mpz_sizeinbase(n.get_mpz_t(), 2)));
+  if (bound >= 3)
+    if (std::uint64_t f = trial_factor(number, bound)) return composite("factor " + std::to_string(f));
+  if (plan.kind == TestKind::trial) return {Verdict::unknown, {}};
+
+  std::optional<SpecialForm> special;
+  if (number.form && number.form->b == 2 && mpz_fits_ulong_p(number.form->k.get_mpz_t()))
+    special = detect_special_form(n, number.form->c);
+  else
+    special = detect_special_form(n);
+  const Modulus modulus = special ? Modulus(n, *special) : Modulus(n);
+
+  auto lucas = [&]() -> std::optional<TestOutcome> {
+    const SelfridgeChoice choice = selfridge_d(n);
+    if (choice.d == 0) return composite("square");
+    if (choice.factor != 0) return composite("factor " + choice.factor.get_str());
+    mpz_class factor = 0;
+    if (!strong_lucas_probable_prime(modulus, choice.d, factor))
+      return composite(factor != 0 ? "factor " + factor.get_str() : "lucas D=" + std::to_string(choice.d));
+    return std::nullopt;
+  };
+  switch (plan.kind) {
+    case TestKind::trial: break;
+    case TestKind::fermat:
+    case TestKind::miller_rabin:
+      for (const mpz_class& base : choose_bases(n, plan)) {
+        const bool pass = plan.kind == TestKind::fermat ? fermat_probable_prime(modulus, base)
+                                                        : strong_probable_prime(modulus, base);
+        if (!pass) return composite(witness_text(base));
+      }
+      return {Verdict::probable_prime, {}};
+    case TestKind::lucas:
+      if (auto failed = lucas()) return *failed;
+      return {Verdict::probable_prime, {}};
+    case TestKind::bpsw:
+      if (!strong_probable_prime(modulus, 2)) return composite(base_witness(2));
+      if (auto failed = lucas()) return *failed;
+      return {Verdict::probable_prime, {}};
+  }
+  return {Verdict::unknown, {}};
+}
+
+}  // namespace
+
+TestOutcome test_number(const Number& number, const TestPlan& plan) {
+  const mpz_class& n = number.value;
+  if (n < 2) return composite("n < 2");
+  if (mpz_sizeinbase(n.get_mpz_t(), 2) <= 64) {
+    std::uint64_t value = 0;
+    mpz_export(&value, nullptr, -1, sizeof value, 0, 0, n.get_mpz_t());
+    return test_u64(value, plan);
+  }
+  return test_big(number, plan);
+}
+
+}  // namespace tk::primes

@@ -1,0 +1,43 @@
+/// @file primality.hpp
+/// @brief Chooses and runs a primality test on a Number: the 64-bit fast
+/// path below 2^64, GMP with the special-form reduction above.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "primes/number.hpp"
+
+namespace tk::primes {
+
+/// Ordered from weakest to strongest, so a form's verdict is its members' minimum.
+enum class Verdict { composite, unknown, probable_prime, prime };
+std::string_view verdict_name(Verdict verdict);
+
+enum class TestKind { trial, fermat, miller_rabin, lucas, bpsw };
+std::string_view test_name(TestKind kind);
+/// Parses "trial", "fermat", "mr" (or "miller-rabin"), "lucas", "bpsw".
+std::optional<TestKind> parse_test_kind(std::string_view text);
+
+struct TestPlan {
+  TestKind kind = TestKind::bpsw;
+  std::vector<std::uint64_t> bases;      ///< Fermat / Miller-Rabin bases (default {2})
+  unsigned random_bases = 0;             ///< extra bases drawn at random
+  std::uint64_t seed = 0;                ///< with the number, fixes the random bases
+  std::optional<std::uint64_t> trial_bound;  ///< none: automatic by size; 0: none
+};
+
+struct TestOutcome {
+  Verdict verdict = Verdict::unknown;
+  std::string witness;  ///< for composites: "factor 3", "base 2", "lucas D=-7", ...
+};
+
+/// The automatic trial-division bound for a number of `bits` bits.
+std::uint64_t default_trial_bound(std::size_t bits);
+
+TestOutcome test_number(const Number& number, const TestPlan& plan);
+
+}  // namespace tk::primes

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the toolkit builds, tests and benchmarks with.
+# Idempotent: packages already installed are skipped, and apt-get runs only
+# when something is missing. Uses sudo when not root.
+set -euo pipefail
+
+# Build and runtime: compiler, CMake, the libraries every tool links.
+build_pkgs=(g++ cmake make pkg-config libcli11-dev libgmp-dev libeigen3-dev
+            libfmt-dev nlohmann-json3-dev scdoc)
+# Tests: unit tests, CLI tests, the PARI/GP oracle, sanitizer runtime.
+test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp)
+# Benchmarks: peers timed in the same run (never runtime dependencies).
+bench_pkgs=(libflint-dev)
+
+want=("${build_pkgs[@]}")
+case "${1:-build}" in
+  build) ;;
+  test)  want+=("${test_pkgs[@]}") ;;
+  bench) want+=("${test_pkgs[@]}" "${bench_pkgs[@]}") ;;
+  *) echo "usage: $0 [build|test|bench]" >&2; exit 2 ;;
+esac
+
+missing=()
+for p in "${want[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "setup-deps: installing ${missing[*]}" >&2
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "setup-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,150 @@
+/// @file main.cpp
+/// @brief mrtest: decides whether numbers are prime, as a pipeline filter.
+#include <chrono>
+#include <set>
+
+#include "cli/progress.hpp"
+#include "cli/tool_app.hpp"
+#include "concurrency/ordered_pool.hpp"
+#include "io/error.hpp"
+#include "io/record_reader.hpp"
+#include "io/record_writer.hpp"
+#include "primes/candidate.hpp"
+#include "primes/candidate_input.hpp"
+#include "primes/number_expression.hpp"
+
+namespace {
+
+using tk::Record;
+using tk::primes::Verdict;
+
+struct Job {
+  Record record;
+  tk::Location where;
+};
+
+struct Outcome {
+  Record record;
+  Verdict verdict = Verdict::unknown;
+  std::optional<tk::Error> error;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  tk::cli::ToolApp tool("mrtest",
+                        "Decide whether numbers are prime: reads numbers, expressions, NewPGen/ABC files or "
+                        "records, and adds verdict, test, witness and seconds to each record.",
+                        "Verdicts: prime (proved: BPSW below 2^64, or trial division), probable-prime, "
+                        "composite (with witness), unknown (trial division only).\nSee mrtest(1).");
+  std::string test = "bpsw";
+  std::vector<std::uint64_t> bases;
+  unsigned rounds = 0;
+  std::uint64_t seed = 0;
+  std::optional<std::uint64_t> trial_bound;
+  std::vector<std::string> keep;
+  bool skip_bad = false;
+  std::size_t max_bits = tk::primes::kDefaultMaxBits;
+
+  CLI::App& app = tool.app();
+  app.add_option("-t,--test", test, "bpsw (default), mr, fermat, lucas or trial")
+      ->type_name("NAME")
+      ->check(CLI::IsMember({"bpsw", "mr", "miller-rabin", "fermat", "lucas", "trial"}));
+  app.add_option("-b,--bases", bases, "bases for mr and fermat, e.g. 2,3,5 (default 2)")
+      ->type_name("LIST")
+      ->delimiter(',')
+      ->check(CLI::Range(std::uint64_t{2}, ~std::uint64_t{0}));
+  app.add_option("-r,--rounds", rounds, "extra random bases for mr and fermat")->check(CLI::Range(0u, 100000u))->type_name("N");
+  app.add_option("--seed", seed, "seed for the random bases (with each number, fixes them)")->type_name("S");
+  app.add_option("--trial-bound", trial_bound, "trial division by primes up to B (0: none; default by size)")
+      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1} << 32))
+      ->type_name("B");
+  app.add_option("-k,--keep", keep, "pass on only records with these verdicts: prime, probable, composite, unknown")
+      ->type_name("LIST")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"prime", "probable", "probable-prime", "composite", "unknown"}));
+  app.add_flag("--skip-bad", skip_bad, "report malformed records on stderr and go on");
+  app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits (default 2^26)")
+      ->check(CLI::Range(std::size_t{2}, std::size_t{1} << 32))
+      ->type_name("BITS");
+  tool.add_threads_option();
+  tool.add_input_files();
+
+  return tool.run(argc, argv, [&] {
+    tk::primes::TestPlan plan;
+    plan.kind = *tk::primes::parse_test_kind(test);
+    plan.bases = bases;
+    plan.random_bases = rounds;
+    plan.seed = seed;
+    plan.trial_bound = trial_bound;
+    if ((!bases.empty() || rounds) && plan.kind != tk::primes::TestKind::miller_rabin &&
+        plan.kind != tk::primes::TestKind::fermat)
+      throw tk::UsageError("--bases and --rounds go with --test mr or --test fermat");
+
+    std::set<Verdict> wanted;
+    for (const auto& name : keep) {
+      if (name == "prime") wanted.insert(Verdict::prime);
+      else if (name == "composite") wanted.insert(Verdict::composite);
+      else if (name == "unknown") wanted.insert(Verdict::unknown);
+      else wanted.insert(Verdict::probable_prime);
+    }
+
+    tk::io::RecordReader reader(tool.common().inputs, tk::primes::candidate_format_probe(max_bits));
+    tk::io::RecordWriter writer(tool.output_format());
+    writer.declare_fields({"verdict", "test", "witness", "seconds", "members"});
+    tk::cli::Progress progress("mrtest", tool.show_progress());
+    std::uint64_t done = 0, skipped = 0;
+
+    auto report_bad = [&](const tk::Error& error) {
+      if (!skip_bad) throw error;
+      ++skipped;
+      tool.warn(error.located_message());
+    };
+    auto work = [&](Job& job) {
+      Outcome out;
+      try {
+        const auto start = std::chrono::steady_clock::now();
+        const tk::primes::Candidate candidate = tk::primes::candidate_from_record(job.record, max_bits);
+        out.verdict = tk::primes::test_candidate(candidate, plan, job.record);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        job.record.erase("seconds");
+        // Keep "members" last: it is the bulky field.
+        Record members;
+        if (job.record.contains("members")) {
+          members = std::move(job.record["members"]);
+          job.record.erase("members");
+        }
+        job.record["seconds"] = std::round(seconds * 1e6) / 1e6;
+        if (!members.is_null()) job.record["members"] = std::move(members);
+        out.record = std::move(job.record);
+      } catch (const tk::Error& e) {
+        out.error = tk::Error(e.what(), job.where);
+      }
+      return out;
+    };
+    auto emit = [&](Outcome& out) {
+      ++done;
+      progress.update(done, reader.fraction_done());
+      if (out.error) return report_bad(*out.error);
+      if (wanted.empty() || wanted.count(out.verdict)) writer.write(out.record);
+    };
+
+    tk::OrderedPool<Job, Outcome> pool(tool.common().threads, work, emit);
+    for (;;) {
+      Job job;
+      try {
+        if (!reader.next(job.record)) break;
+      } catch (const tk::Error& e) {
+        pool.finish();  // results before the bad line are written first
+        report_bad(e);
+        continue;
+      }
+      job.where = reader.where();
+      pool.submit(std::move(job));
+    }
+    pool.finish();
+    progress.finish();
+    writer.flush();
+    if (skipped) tool.warn("skipped " + std::to_string(skipped) + " bad record" + (skipped == 1 ? "" : "s"));
+  });
+}
