@@ -8,12 +8,15 @@ function(toolkit_add_tool name)
   target_compile_definitions(${name} PRIVATE TOOLKIT_TOOL_NAME="${name}")
   install(TARGETS ${name} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   install(FILES ${PROJECT_SOURCE_DIR}/man/${name}.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
-  set(bats_file ${PROJECT_SOURCE_DIR}/test/bats/${name}.bats)
-  if(TOOLKIT_TESTS AND EXISTS ${bats_file})
-    add_test(NAME bats_${name}
-             COMMAND bats --tap ${bats_file})
-    set_tests_properties(bats_${name} PROPERTIES
-      ENVIRONMENT "TOOLKIT_BIN=$<TARGET_FILE_DIR:${name}>;TOOLKIT_ROOT=${PROJECT_SOURCE_DIR}"
-      TIMEOUT 1800)
+  # test/bats/NAME.bats and NAME_*.bats (e.g. NAME_oracle.bats), each one ctest test.
+  file(GLOB bats_files ${PROJECT_SOURCE_DIR}/test/bats/${name}.bats ${PROJECT_SOURCE_DIR}/test/bats/${name}_*.bats)
+  if(TOOLKIT_TESTS)
+    foreach(bats_file IN LISTS bats_files)
+      get_filename_component(suite ${bats_file} NAME_WE)
+      add_test(NAME bats_${suite} COMMAND bats --tap ${bats_file})
+      set_tests_properties(bats_${suite} PROPERTIES
+        ENVIRONMENT "TOOLKIT_BIN=$<TARGET_FILE_DIR:${name}>;TOOLKIT_ROOT=${PROJECT_SOURCE_DIR};TOOLKIT_BUILD=${PROJECT_BINARY_DIR}"
+        TIMEOUT 1800)
+    endforeach()
   endif()
 endfunction()

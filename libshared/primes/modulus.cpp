@@ -12,8 +12,8 @@ std::optional<SpecialForm> detect_special_form(const mpz_class& N, std::optional
     mpz_tdiv_q_2exp(rest.get_mpz_t(), rest.get_mpz_t(), n);
     if (mpz_sizeinbase(rest.get_mpz_t(), 2) > 64) return std::nullopt;
     const std::uint64_t k = mpz_get_ui(rest.get_mpz_t());
-    // The shift reduction pays only when 2^n dominates k.
-    if (n < 64 || (n < 128 && (k >> (n - 64)) != 0)) return std::nullopt;
+    // 2^n >= 2^64 > k: one round of the shift reduction removes about n bits.
+    if (n < 64) return std::nullopt;
     return SpecialForm{k, n, c};
   };
   if (c_hint && *c_hint != 0 && *c_hint > -(std::int64_t{1} << 31) && *c_hint < (std::int64_t{1} << 31))

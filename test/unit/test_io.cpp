@@ -1,0 +1,232 @@
+// Unit tests for the shared record I/O: line reading, CSV, JSON Lines,
+// format detection and the writer.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "io/csv.hpp"
+#include "io/error.hpp"
+#include "io/input_file.hpp"
+#include "io/record_reader.hpp"
+#include "io/record_writer.hpp"
+
+using tk::Error;
+using tk::Record;
+using namespace tk::io;
+
+namespace {
+
+/// A temporary file holding `content`, removed at scope exit.
+class TempFile {
+ public:
+  explicit TempFile(const std::string& content) {
+    static int counter = 0;
+    path_ = (std::filesystem::temp_directory_path() /
+             ("tk_io_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++)))
+                .string();
+    std::ofstream(path_, std::ios::binary) << content;
+  }
+  ~TempFile() { std::filesystem::remove(path_); }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+std::vector<Record> read_all(const std::string& content, NativeFormatProbe probe = {}) {
+  TempFile file(content);
+  RecordReader reader({file.path()}, std::move(probe));
+  std::vector<Record> out;
+  Record r;
+  while (reader.next(r)) out.push_back(r);
+  return out;
+}
+
+std::string write_all(const std::vector<Record>& records, OutputFormat format,
+                      std::vector<std::string> declared = {}) {
+  char* buffer = nullptr;
+  size_t size = 0;
+  std::FILE* out = open_memstream(&buffer, &size);
+  {
+    RecordWriter writer(format, out);
+    writer.declare_fields(std::move(declared));
+    for (const auto& r : records) writer.write(r);
+    writer.flush();
+  }
+  std::fclose(out);
+  std::string text(buffer, size);
+  std::free(buffer);
+  return text;
+}
+
+}  // namespace
+
+TEST(InputFile, SplitsLinesAndCountsThem) {
+  TempFile file("a\r\nbb\n\nlast");
+  InputFile input(file.path());
+  std::string_view line;
+  std::vector<std::string> lines;
+  while (input.next(line)) lines.emplace_back(line);
+  EXPECT_EQ(lines, (std::vector<std::string>{"a", "bb", "", "last"}));
+  EXPECT_EQ(input.line_number(), 4u);
+}
+
+TEST(InputFile, LinesLongerThanTheBufferSurvive) {
+  const std::string long_line(3u << 20, 'x');
+  TempFile file(long_line + "\nshort\n");
+  InputFile input(file.path());
+  std::string_view line;
+  ASSERT_TRUE(input.next(line));
+  EXPECT_EQ(line.size(), long_line.size());
+  ASSERT_TRUE(input.next(line));
+  EXPECT_EQ(line, "short");
+}
+
+TEST(InputFile, NulByteIsAnErrorWithItsLine) {
+  TempFile file(std::string("ok\nbad\0line\n", 12));
+  InputFile input(file.path());
+  std::string_view line;
+  ASSERT_TRUE(input.next(line));
+  try {
+    input.next(line);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where().line, 2u);
+    EXPECT_NE(std::string(e.what()).find("binary"), std::string::npos);
+  }
+}
+
+TEST(InputFile, MissingFileNamesTheFile) {
+  try {
+    InputFile input("/nonexistent/file.txt");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.located_message().rfind("/nonexistent/file.txt: cannot open", 0), 0u);
+  }
+}
+
+TEST(Csv, QuotedFieldsWithCommasQuotesAndNewlines) {
+  TempFile file("\"a,b\",\"say \"\"hi\"\"\",\"two\nlines\",plain\n");
+  InputFile input(file.path());
+  std::string_view line;
+  ASSERT_TRUE(input.next(line));
+  const auto fields = read_csv_row(line, input);
+  EXPECT_EQ(fields, (std::vector<std::string>{"a,b", "say \"hi\"", "two\nlines", "plain"}));
+}
+
+TEST(Csv, UnterminatedQuoteIsAnError) {
+  TempFile file("\"open,field\n");
+  InputFile input(file.path());
+  std::string_view line;
+  ASSERT_TRUE(input.next(line));
+  EXPECT_THROW(read_csv_row(line, input), Error);
+}
+
+TEST(Csv, QuotingRoundTrips) {
+  std::string out;
+  append_csv_field(out, "a,\"b\"");
+  EXPECT_EQ(out, "\"a,\"\"b\"\"\"");
+}
+
+TEST(RecordReader, DetectsJsonLinesAndKeepsKeyOrder) {
+  const auto records = read_all("\n{\"z\":1,\"a\":\"x\"}\n\n{\"b\":[1,2]}\n");
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[0].begin().key(), "z");
+  EXPECT_EQ(records[1]["b"][1], 2);
+}
+
+TEST(RecordReader, DetectsCsvWithHeader) {
+  const auto records = read_all("number,id\r\n97,a\r\n\"100\",\"b,c\"\r\n");
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[0]["number"], "97");
+  EXPECT_EQ(records[1]["id"], "b,c");
+}
+
+TEST(RecordReader, CsvFieldCountMismatchNamesTheLine) {
+  try {
+    read_all("a,b\n1,2\n3\n");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where().line, 3u);
+    EXPECT_STREQ(e.what(), "expected 2 csv fields, found 1");
+  }
+}
+
+TEST(RecordReader, BadJsonNamesTheLineAndCanContinue) {
+  TempFile file("{\"a\":1}\n{\"a\":\n[1]\n{\"a\":3}\n");
+  RecordReader reader({file.path()});
+  Record r;
+  ASSERT_TRUE(reader.next(r));
+  int errors = 0;
+  std::vector<std::size_t> lines;
+  for (;;) {
+    try {
+      if (!reader.next(r)) break;
+      EXPECT_EQ(r["a"], 3);
+    } catch (const Error& e) {
+      ++errors;
+      lines.push_back(e.where().line);
+    }
+  }
+  EXPECT_EQ(errors, 2);
+  EXPECT_EQ(lines, (std::vector<std::size_t>{2, 3}));
+}
+
+TEST(RecordReader, NativeProbeClaimsItsFormat) {
+  struct Upper : LineDecoder {
+    bool decode(std::string_view line, const tk::Location&, Record& out) override {
+      out = Record::object();
+      out["line"] = std::string(line);
+      return true;
+    }
+  };
+  auto probe = [](std::string_view first) -> std::unique_ptr<LineDecoder> {
+    if (first.starts_with("#native")) return std::make_unique<Upper>();
+    return nullptr;
+  };
+  const auto records = read_all("#native\nx\n", probe);
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[1]["line"], "x");
+}
+
+TEST(RecordReader, ReadsSeveralFilesEachWithItsOwnFormat) {
+  TempFile json("{\"n\":1}\n"), csv("n\n2\n");
+  RecordReader reader({json.path(), csv.path()});
+  Record r;
+  ASSERT_TRUE(reader.next(r));
+  EXPECT_EQ(r["n"], 1);
+  ASSERT_TRUE(reader.next(r));
+  EXPECT_EQ(r["n"], "2");
+  EXPECT_EQ(reader.where().file, csv.path());
+  EXPECT_FALSE(reader.next(r));
+}
+
+TEST(RecordWriter, JsonLinesAreCompactAndRoundTripDoubles) {
+  Record r = Record::object();
+  r["x"] = 0.1;
+  r["big"] = "123456789012345678901234567890";
+  r["n"] = 42;
+  const std::string text = write_all({r}, OutputFormat::json_lines);
+  EXPECT_EQ(text, "{\"x\":0.1,\"big\":\"123456789012345678901234567890\",\"n\":42}\n");
+  EXPECT_EQ(Record::parse(text)["x"].get<double>(), 0.1);
+}
+
+TEST(RecordWriter, CsvPutsDeclaredFieldsLastAndLeavesGapsEmpty) {
+  Record a = Record::object(), b = Record::object();
+  a["id"] = "a";
+  a["verdict"] = "prime";
+  b["id"] = "b,c";
+  b["witness"] = "base 2";
+  b["verdict"] = "composite";
+  const std::string text = write_all({a, b}, OutputFormat::csv, {"verdict", "witness"});
+  EXPECT_EQ(text, "id,verdict,witness\na,prime,\n\"b,c\",composite,base 2\n");
+}
+
+TEST(RecordWriter, CsvRejectsAFieldOutsideTheHeader) {
+  Record a = Record::object(), b = Record::object();
+  a["id"] = 1;
+  b["other"] = 2;
+  EXPECT_THROW(write_all({a, b}, OutputFormat::csv), Error);
+}
