@@ -25,9 +25,9 @@ constexpr std::uint64_t kMaxExponent = 0xFFFFFFFFu;  // n must fit 32 bits
 constexpr std::uint64_t kMaxChainLength = 64;        // the most candidate_from_record accepts
 
 std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
+  const auto first = text.find_first_not_of(" \t\r");  // '\r': CRLF lines from elsewhere
   if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
 }
 
 /// Whitespace-separated words; stops after `limit` + 1 so a huge junk line
@@ -332,6 +332,7 @@ AbcTemplate parse_abc_expression(std::string_view text) {
 /// Signed decimal values, one per variable, as a data line (or an ABCD
 /// header's brackets) gives them.
 std::vector<std::string> abc_values(std::string_view text, std::size_t count, std::size_t max_bits) {
+  if (text.find(':') != std::string_view::npos) throw Error("separate values with spaces, not ':'");
   const auto fields = words(text, count);
   if (fields.size() != count)
     throw Error("expected " + std::to_string(count) + (count == 1 ? " value" : " values") + " ($a..$" +
@@ -340,10 +341,7 @@ std::vector<std::string> abc_values(std::string_view text, std::size_t count, st
   std::vector<std::string> values;
   for (std::string_view field : fields) {
     const std::string_view digits = field.substr(field[0] == '+' || field[0] == '-' ? 1 : 0);
-    if (!all_digits(digits)) {
-      if (field.find(':') != std::string_view::npos) throw Error("separate values with spaces, not ':'");
-      throw Error("value " + quoted(field) + " is not a decimal integer");
-    }
+    if (!all_digits(digits)) throw Error("value " + quoted(field) + " is not a decimal integer");
     if (digits.size() > max_decimal_digits(max_bits))
       throw Error("value has more bits than --max-bits " + std::to_string(max_bits));
     values.emplace_back(field);
