@@ -8,7 +8,10 @@ namespace {
 /// base^exponent mod N by left-to-right binary powering. A base that fits
 /// a word multiplies in with one short product per set bit, so a Fermat or
 /// Miller-Rabin test costs one squaring and one reduction per bit.
-void power_mod(mpz_class& result, const mpz_class& base, const mpz_class& exponent, const Modulus& N) {
+bool cancelled(const std::atomic<bool>* cancel) { return cancel && cancel->load(std::memory_order_relaxed); }
+
+void power_mod(mpz_class& result, const mpz_class& base, const mpz_class& exponent, const Modulus& N,
+               const std::atomic<bool>* cancel = nullptr) {
   mpz_ptr x = result.get_mpz_t();
   const mpz_srcptr e = exponent.get_mpz_t();
   mpz_class b = base;
@@ -23,6 +26,7 @@ void power_mod(mpz_class& result, const mpz_class& base, const mpz_class& expone
   mpz_set(x, b.get_mpz_t());
   mpz_realloc2(x, 2 * N.bits() + 128);
   for (mp_bitcnt_t bit = mpz_sizeinbase(e, 2) - 1; bit-- > 0;) {
+    if (cancelled(cancel)) return;
     mpz_mul(x, x, x);
     if (mpz_tstbit(e, bit)) {
       if (two) {
@@ -48,7 +52,7 @@ bool fermat_probable_prime(const Modulus& N, const mpz_class& base) {
   return r == 1;
 }
 
-bool strong_probable_prime(const Modulus& N, const mpz_class& base) {
+bool strong_probable_prime(const Modulus& N, const mpz_class& base, const std::atomic<bool>* cancel) {
   const mpz_class n_minus_1 = N.value() - 1;
   mpz_class b = base % N.value();
   if (b == 0) return true;
@@ -56,7 +60,7 @@ bool strong_probable_prime(const Modulus& N, const mpz_class& base) {
   mpz_class d;
   mpz_tdiv_q_2exp(d.get_mpz_t(), n_minus_1.get_mpz_t(), s);
   mpz_class x;
-  power_mod(x, b, d, N);
+  power_mod(x, b, d, N, cancel);
   if (x == 1 || x == n_minus_1) return true;
   for (mp_bitcnt_t r = 1; r < s; ++r) {
     mpz_mul(x.get_mpz_t(), x.get_mpz_t(), x.get_mpz_t());
@@ -95,7 +99,8 @@ SelfridgeChoice selfridge_d(const mpz_class& N) {
 // Incrementing: U_m+1 = (U_m + V_m)/2, V_m+1 = (D U_m + V_m)/2.
 // After U_d, V_d, the steps V_{2^r d} use W_r = V_{2^r d} / Q^(2^(r-1) d),
 // which obeys W_{r+1} = W_r^2 - 2: one squaring per step, as in LLR.
-bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_class& factor) {
+bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_class& factor,
+                                 const std::atomic<bool>* cancel) {
   const mpz_class& n = N.value();
   const mpz_class n_plus_1 = n + 1;
   const mp_bitcnt_t s = mpz_scan1(n_plus_1.get_mpz_t(), 0);
@@ -111,6 +116,7 @@ bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_cla
     mpz_tdiv_q_2exp(x.get_mpz_t(), x.get_mpz_t(), 1);
   };
   for (mp_bitcnt_t bit = mpz_sizeinbase(k.get_mpz_t(), 2) - 1; bit-- > 0;) {
+    if (cancelled(cancel)) return false;
     mpz_add(sum.get_mpz_t(), u.get_mpz_t(), v.get_mpz_t());
     mpz_mul(sum.get_mpz_t(), sum.get_mpz_t(), sum.get_mpz_t());
     mpz_mul(uu.get_mpz_t(), u.get_mpz_t(), u.get_mpz_t());
@@ -165,6 +171,7 @@ bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_cla
   N.reduce(w.get_mpz_t());
   if (w == 0) return true;
   for (mp_bitcnt_t r = 2; r < s; ++r) {
+    if (cancelled(cancel)) return false;
     mpz_mul(w.get_mpz_t(), w.get_mpz_t(), w.get_mpz_t());
     mpz_sub_ui(w.get_mpz_t(), w.get_mpz_t(), 2);
     N.reduce(w.get_mpz_t());

@@ -5,6 +5,7 @@
 
 #include <gmpxx.h>
 
+#include <atomic>
 #include <cstdint>
 
 #include "primes/modulus.hpp"
@@ -14,8 +15,9 @@ namespace tk::primes {
 /// a^(N-1) == 1 (mod N). N odd, N > 3.
 bool fermat_probable_prime(const Modulus& N, const mpz_class& base);
 
-/// Miller-Rabin strong probable prime to `base`. N odd, N > 3.
-bool strong_probable_prime(const Modulus& N, const mpz_class& base);
+/// Miller-Rabin strong probable prime to `base`. N odd, N > 3. When
+/// `cancel` becomes true the test stops early (its result is then meaningless).
+bool strong_probable_prime(const Modulus& N, const mpz_class& base, const std::atomic<bool>* cancel = nullptr);
 
 /// Result of choosing Selfridge's D for N.
 struct SelfridgeChoice {
@@ -26,6 +28,7 @@ SelfridgeChoice selfridge_d(const mpz_class& N);
 
 /// Strong Lucas probable prime with P = 1, Q = (1 - D)/4 (D from
 /// selfridge_d). Sets `factor` if the test stumbles on one.
-bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d, mpz_class& factor);
+bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d, mpz_class& factor,
+                                 const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace tk::primes

@@ -2,6 +2,8 @@
 #include "primes/primality.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <future>
 #include <random>
 
 #include "primes/big_tests.hpp"
@@ -114,6 +116,22 @@ TestOutcome test_u64(std::uint64_t n, const TestPlan& plan) {
   return {};
 }
 
+/// BPSW with the Lucas half on a second thread. The verdict and witness are
+/// those of the sequential order: a failed base-2 test wins over Lucas.
+template <class Lucas>
+TestOutcome split_bpsw(const Modulus& modulus, Lucas& lucas) {
+  std::atomic<bool> cancel{false};
+  // Modulus keeps scratch space, so each thread reduces with its own copy.
+  const Modulus lucas_modulus = modulus.form() ? Modulus(modulus.value(), *modulus.form()) : Modulus(modulus.value());
+  auto lucas_result = std::async(std::launch::async, [&] { return lucas(lucas_modulus, &cancel); });
+  const bool base2_passed = strong_probable_prime(modulus, 2, nullptr);
+  if (!base2_passed) cancel = true;
+  std::optional<TestOutcome> lucas_failure = lucas_result.get();
+  if (!base2_passed) return composite(base_witness(2));
+  if (lucas_failure) return *lucas_failure;
+  return {Verdict::probable_prime, {}};
+}
+
 TestOutcome test_big(const Number& number, const TestPlan& plan) {
   const mpz_class& n = number.value;
   if (mpz_even_p(n.get_mpz_t())) return composite("factor 2");
@@ -129,12 +147,12 @@ TestOutcome test_big(const Number& number, const TestPlan& plan) {
     special = detect_special_form(n);
   const Modulus modulus = special ? Modulus(n, *special) : Modulus(n);
 
-  auto lucas = [&]() -> std::optional<TestOutcome> {
+  auto lucas = [&](const Modulus& m, const std::atomic<bool>* cancel) -> std::optional<TestOutcome> {
     const SelfridgeChoice choice = selfridge_d(n);
     if (choice.d == 0) return composite("square");
     if (choice.factor != 0) return composite("factor " + choice.factor.get_str());
     mpz_class factor = 0;
-    if (!strong_lucas_probable_prime(modulus, choice.d, factor))
+    if (!strong_lucas_probable_prime(m, choice.d, factor, cancel))
       return composite(factor != 0 ? "factor " + factor.get_str() : "lucas D=" + std::to_string(choice.d));
     return std::nullopt;
   };
@@ -149,11 +167,12 @@ TestOutcome test_big(const Number& number, const TestPlan& plan) {
       }
       return {Verdict::probable_prime, {}};
     case TestKind::lucas:
-      if (auto failed = lucas()) return *failed;
+      if (auto failed = lucas(modulus, nullptr)) return *failed;
       return {Verdict::probable_prime, {}};
     case TestKind::bpsw:
+      if (plan.split_bits && modulus.bits() >= plan.split_bits) return split_bpsw(modulus, lucas);
       if (!strong_probable_prime(modulus, 2)) return composite(base_witness(2));
-      if (auto failed = lucas()) return *failed;
+      if (auto failed = lucas(modulus, nullptr)) return *failed;
       return {Verdict::probable_prime, {}};
   }
   return {Verdict::unknown, {}};

@@ -28,7 +28,13 @@ struct TestPlan {
   unsigned random_bases = 0;             ///< extra bases drawn at random
   std::uint64_t seed = 0;                ///< with the number, fixes the random bases
   std::optional<std::uint64_t> trial_bound;  ///< none: automatic by size; 0: none
+  /// BPSW on numbers of at least this many bits runs its Miller-Rabin and
+  /// Lucas halves on two threads; 0: never.
+  std::size_t split_bits = 0;
 };
+
+/// Where splitting BPSW over two threads pays for the thread start.
+inline constexpr std::size_t kDefaultSplitBits = 20000;
 
 struct TestOutcome {
   Verdict verdict = Verdict::unknown;

@@ -49,9 +49,8 @@ bool all_digits(std::string_view text) {
 
 std::optional<std::uint64_t> parse_u64(std::string_view text) {
   std::uint64_t value = 0;
-  if (!all_digits(text) || std::from_chars(text.data(), text.data() + text.size(), value).ec != std::errc())
-    return std::nullopt;
-  return value;
+  const bool fits = all_digits(text) && std::from_chars(text.data(), text.data() + text.size(), value).ec == std::errc();
+  return fits ? std::optional(value) : std::nullopt;
 }
 
 /// Input text quoted in a message, cut short, control bytes shown as '?'.
@@ -134,11 +133,9 @@ struct NewPGenShape {
 ///   PFGW agree; only llrCUDA 3.8.7 reads it as an extra 2k*b^n-3 member).
 NewPGenShape parse_newpgen_header(std::string_view header) {
   std::vector<std::string_view> fields;
-  for (std::size_t start = 0; fields.size() < 6;) {
-    const std::size_t colon = header.find(':', start);
+  for (std::size_t start = 0, colon = 0; colon != std::string_view::npos && fields.size() < 6; start = colon + 1) {
+    colon = header.find(':', start);
     fields.push_back(header.substr(start, colon == std::string_view::npos ? colon : colon - start));
-    if (colon == std::string_view::npos) break;
-    start = colon + 1;
   }
   const std::string name = quoted(header);
   if (fields.size() < 4 || fields.size() > 5 || fields[1].size() != 1)
@@ -162,13 +159,10 @@ NewPGenShape parse_newpgen_header(std::string_view header) {
   const std::uint64_t bits = *mask;
   if (bits == 0) {
     switch (letter) {
-      case 'P': add_chain(0, 1, +1); break;
-      case 'M': add_chain(0, 1, -1); break;
+      case 'P': case 'M': add_chain(0, 1, letter == 'P' ? +1 : -1); break;
       case 'T': add_chain(0, 1, -1); add_chain(0, 1, +1); break;
-      case 'S': add_chain(0, 2, -1); break;
-      case 'C': add_chain(0, 2, +1); break;
-      case '1': add_chain(-1, chain_length, -1); break;
-      case '2': add_chain(-1, chain_length, +1); break;
+      case 'S': case 'C': add_chain(0, 2, letter == 'C' ? +1 : -1); break;
+      case '1': case '2': add_chain(-1, chain_length, letter == '2' ? +1 : -1); break;
       default: throw unsupported("letter " + std::string(1, letter) + " has no record shape");
     }
   } else {
@@ -312,14 +306,8 @@ AbcTemplate parse_abc_expression(std::string_view text) {
   if (t.expression.find('|') != std::string::npos)
     throw Error("abc headers joining expressions with '|' are not supported");
   if (const auto amp = t.expression.find('&'); amp != std::string::npos) {
-    auto squeeze = [](std::string_view part) {
-      std::string out;
-      for (char ch : part)
-        if (ch != ' ' && ch != '\t') out += ch;
-      return out;
-    };
-    const std::string first = squeeze(std::string_view(t.expression).substr(0, amp));
-    const std::string second = squeeze(std::string_view(t.expression).substr(amp + 1));
+    std::string first = t.expression.substr(0, amp), second = t.expression.substr(amp + 1);
+    for (std::string* part : {&first, &second}) std::erase_if(*part, [](char ch) { return ch == ' ' || ch == '\t'; });
     if (second.find('&') != std::string::npos || !match_pair(first, second, t))
       throw Error("abc header " + quoted(text) +
                   " joins expressions with '&'; only K*2^N+1 & K*2^N-1 (twin) and K*2^N-1 & 2*(K*2^N-1)+1"
@@ -415,21 +403,14 @@ class PrimeTextDecoder final : public io::LineDecoder {
     const HeaderKind kind = header_kind(text);
     if (kind != HeaderKind::none) mode_ = Mode::none;  // until the new header proves valid
     switch (kind) {
-      case HeaderKind::newpgen:
-        newpgen_ = parse_newpgen_header(text);
-        mode_ = Mode::newpgen;
-        return false;
-      case HeaderKind::abc:
-        abc_ = parse_abc_expression(header_body(text, 3));
-        mode_ = Mode::abc;
-        return false;
-      case HeaderKind::abcd:
+      case HeaderKind::newpgen: newpgen_ = parse_newpgen_header(text); mode_ = Mode::newpgen; return false;
+      case HeaderKind::abc: abc_ = parse_abc_expression(header_body(text, 3)); mode_ = Mode::abc; return false;
+      case HeaderKind::abcd:  // the header itself is the first candidate
         start_abcd(header_body(text, 4));
-        out = abc_record(abc_, running_text(), max_bits_);  // the header is the first candidate
+        out = abc_record(abc_, running_text(), max_bits_);
         return true;
-      case HeaderKind::abc2:
-        // One ABC2 header stands for many candidates; a decoder yields one per line.
-        throw Error("abc2 files are not supported");
+      // One ABC2 header stands for many candidates; a LineDecoder yields one per line.
+      case HeaderKind::abc2: throw Error("abc2 files are not supported");
       case HeaderKind::none: break;
     }
     switch (mode_) {

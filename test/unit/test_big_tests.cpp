@@ -167,3 +167,23 @@ TEST(Primality, RandomBasesAreReproducible) {
   EXPECT_EQ(first.witness, second.witness);
   EXPECT_EQ(first.verdict, Verdict::composite);
 }
+
+// Splitting BPSW over two threads must not change any verdict or witness.
+TEST(Primality, SplitBpswGivesTheSequentialVerdictsAndWitnesses) {
+  TestPlan sequential, split;
+  split.split_bits = 100;
+  sequential.trial_bound = split.trial_bound = 0;  // let the big tests decide
+  gmp_randclass random(gmp_randinit_mt);
+  random.seed(5);
+  for (int i = 0; i < 40; ++i) {
+    mpz_class n = random.get_z_bits(200 + 10 * i) | 1;
+    if (i % 3 == 0) mpz_nextprime(n.get_mpz_t(), n.get_mpz_t());
+    const Number number{n, std::nullopt};
+    const TestOutcome a = test_number(number, sequential), b = test_number(number, split);
+    EXPECT_EQ(a.verdict, b.verdict) << n;
+    EXPECT_EQ(a.witness, b.witness) << n;
+  }
+  // 2^521 - 1 is a Mersenne prime.
+  const Number mersenne{(mpz_class(1) << 521) - 1, KbncForm{1, 2, 521, -1}};
+  EXPECT_EQ(test_number(mersenne, split).verdict, Verdict::probable_prime);
+}

@@ -77,6 +77,8 @@ int main(int argc, char** argv) {
     plan.random_bases = rounds;
     plan.seed = seed;
     plan.trial_bound = trial_bound;
+    // With -j 2 or more, one big number alone still keeps two cores busy.
+    plan.split_bits = tool.common().threads > 1 ? tk::primes::kDefaultSplitBits : 0;
     if ((!bases.empty() || rounds) && plan.kind != tk::primes::TestKind::miller_rabin &&
         plan.kind != tk::primes::TestKind::fermat)
       throw tk::UsageError("--bases and --rounds go with --test mr or --test fermat");
