@@ -29,6 +29,23 @@ struct Outcome {
   std::optional<tk::Error> error;
 };
 
+// Small numbers travel to the worker threads in batches, so that -j pays
+// one hand-over per batch rather than per number; a number that may take
+// long goes at once, so that it does not hold up the others.
+constexpr std::size_t kBatchSize = 64;
+
+bool likely_slow(const Record& record) {
+  for (const char* field : {"number", "expr"}) {
+    auto found = record.find(field);
+    if (found != record.end() && found->is_string()) {
+      const auto& text = found->get_ref<const std::string&>();
+      return text.size() > 40 || text.find_first_of("^*!#") != std::string::npos;
+    }
+  }
+  auto n = record.find("n");
+  return n == record.end() || !n->is_number_unsigned() || n->get<std::uint64_t>() > 256;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -102,7 +119,7 @@ int main(int argc, char** argv) {
       ++skipped;
       tool.warn(error.located_message());
     };
-    auto work = [&](Job& job) {
+    auto test_one = [&](Job& job) {
       Outcome out;
       try {
         const auto start = std::chrono::steady_clock::now();
@@ -124,26 +141,49 @@ int main(int argc, char** argv) {
       }
       return out;
     };
-    auto emit = [&](Outcome& out) {
-      ++done;
-      progress.update(done, reader.fraction_done());
-      if (out.error) return report_bad(*out.error);
-      if (wanted.empty() || wanted.count(out.verdict)) writer.write(out.record);
+    auto work = [&](std::vector<Job>& batch) {
+      std::vector<Outcome> outcomes;
+      outcomes.reserve(batch.size());
+      for (Job& job : batch) outcomes.push_back(test_one(job));
+      return outcomes;
+    };
+    auto emit = [&](std::vector<Outcome>& outcomes) {
+      for (Outcome& out : outcomes) {
+        ++done;
+        progress.update(done, reader.fraction_done());
+        if (out.error) {
+          report_bad(*out.error);
+          continue;
+        }
+        if (wanted.empty() || wanted.count(out.verdict)) writer.write(out.record);
+      }
     };
 
-    tk::OrderedPool<Job, Outcome> pool(tool.common().threads, work, emit);
+    tk::OrderedPool<std::vector<Job>, std::vector<Outcome>> pool(tool.common().threads, work, emit);
+    // One thread works inline: no hand-over to save, and a slow producer's
+    // numbers come out as they arrive.
+    const std::size_t batch_size = tool.common().threads > 1 ? kBatchSize : 1;
+    std::vector<Job> batch;
+    auto submit_batch = [&] {
+      if (!batch.empty()) pool.submit(std::move(batch));
+      batch.clear();
+    };
     for (;;) {
       Job job;
       try {
         if (!reader.next(job.record)) break;
       } catch (const tk::Error& e) {
+        submit_batch();
         pool.finish();  // results before the bad line are written first
         report_bad(e);
         continue;
       }
       job.where = reader.where();
-      pool.submit(std::move(job));
+      const bool slow = likely_slow(job.record);
+      batch.push_back(std::move(job));
+      if (slow || batch.size() >= batch_size) submit_batch();
     }
+    submit_batch();
     pool.finish();
     progress.finish();
     writer.flush();
