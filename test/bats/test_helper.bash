@@ -5,6 +5,7 @@ load '/usr/lib/bats/bats-assert/load'
 
 TOOLKIT_ROOT="${TOOLKIT_ROOT:-$(cd "$BATS_TEST_DIRNAME/../.." && pwd)}"
 TOOLKIT_BIN="${TOOLKIT_BIN:-$TOOLKIT_ROOT/build}"
+TOOLKIT_BUILD="${TOOLKIT_BUILD:-$TOOLKIT_BIN}"
 PATH="$TOOLKIT_BIN:$PATH"
 FIXTURES="$TOOLKIT_ROOT/test/fixtures"
 

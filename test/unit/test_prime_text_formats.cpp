@@ -435,6 +435,7 @@ TEST(AbcdText, RunningValuesAreBounded) {
 TEST(PrimeTextRobustness, RandomLinesOnlyEverThrowError) {
   std::mt19937 rng(12345);
   const std::string alphabet = "0123456789 :$abczABCD&|[]/+-*^()!#%\t.xPMTSC\x01\xff";
+  const char* tokens[] = {"*2^", "+1", "-1", " & ", "2*(", "-1)+1", "$a", "$b", "[", "]", ":", "//", "ABC "};
   const char* headers[] = {"1000:P:1:2:1", "1000:T:0:2:3", "1000:1:3:2:42", "ABC $a*2^$b+1",
                            "ABC $a*2^$b+1 & $a*2^$b-1", "ABCD $a*2^$b$c [3 10 +1]", "ABC $a^$b%$c!"};
   const auto start = std::chrono::steady_clock::now();
@@ -445,7 +446,10 @@ TEST(PrimeTextRobustness, RandomLinesOnlyEverThrowError) {
     for (int i = 0; i < 12; ++i) {
       std::string line;
       const std::size_t length = rng() % 40;
-      for (std::size_t j = 0; j < length; ++j) line += alphabet[rng() % alphabet.size()];
+      for (std::size_t j = 0; j < length; ++j) {
+        if (rng() % 3 == 0) line += tokens[rng() % std::size(tokens)];
+        else line += alphabet[rng() % alphabet.size()];
+      }
       if (rng() % 4 == 0) line = std::string(headers[rng() % std::size(headers)]).substr(0, rng() % 30) + line;
       try {
         if (i == 0) decoder->decode(headers[round % std::size(headers)], Location{"f", 1}, record);
