@@ -210,7 +210,7 @@ NewPGenShape parse_newpgen_header(std::string_view header) {
   } else {
     throw unsupported("its members are not a twin, sophie germain pair or cunningham chain");
   }
-  if (shape.dual && (shape.form || shape.offset != 0)) throw unsupported("dual (b^n+-k) files with more than one member");
+  if (shape.dual && (shape.form || shape.offset != 0)) throw unsupported("dual files other than b^n+k or b^n-k");
   return shape;
 }
 
@@ -221,7 +221,7 @@ Record newpgen_record(const NewPGenShape& shape, std::string_view line, std::siz
   std::uint64_t n = parse_n(fields[1]);
   if (shape.offset < 0 && n < static_cast<std::uint64_t>(-shape.offset))
     throw Error("n must be at least 1: this chain starts at k*b^(n-1)");
-  n += static_cast<std::uint64_t>(shape.offset);  // offsets are -1..2, n at most 2^32: no overflow
+  n = static_cast<std::uint64_t>(static_cast<std::int64_t>(n) + shape.offset);  // offset -1..2, n < 2^32
   if (shape.dual) {  // b^n+k or b^n-k, as LLR's MODE_DUAL
     if (k >= (mpz_class(1) << 62)) throw Error("k of a dual newpgen file must be below 2^62");
     check_size(1, shape.base, n, max_bits);
@@ -242,10 +242,6 @@ struct AbcTemplate {
   std::string k_text, n_text;       ///< the form's k and n: a placeholder or digits
 };
 
-bool is_operand(std::string_view text) {
-  return all_digits(text) || (text.size() == 2 && text[0] == '$' && text[1] >= 'a' && text[1] <= 'z');
-}
-
 /// prefix K*2^N suffix, with K and N each a placeholder or digits.
 std::optional<std::pair<std::string, std::string>> match_k2n(std::string_view text, std::string_view prefix,
                                                              std::string_view suffix) {
@@ -255,6 +251,7 @@ std::optional<std::pair<std::string, std::string>> match_k2n(std::string_view te
   const auto power = text.find("*2^");
   if (power == std::string_view::npos) return std::nullopt;
   const std::string_view k = text.substr(0, power), n = text.substr(power + 3);
+  auto is_operand = [](std::string_view s) { return all_digits(s) || (s.size() == 2 && s[0] == '$' && s[1] >= 'a'); };
   if (!is_operand(k) || !is_operand(n)) return std::nullopt;
   return std::make_pair(std::string(k), std::string(n));
 }
@@ -262,17 +259,14 @@ std::optional<std::pair<std::string, std::string>> match_k2n(std::string_view te
 /// Sets t.form for the pairs twinsieve and sgsieve write, in either order:
 /// K*2^N+1 & K*2^N-1 (twin) and K*2^N-1 & 2*(K*2^N-1)+1 (Sophie Germain).
 bool match_pair(std::string_view first, std::string_view second, AbcTemplate& t) {
+  struct Pattern { const char* form; std::string_view prefix1, suffix1, prefix2, suffix2; };
+  static constexpr Pattern kPatterns[] = {{"twin", "", "+1", "", "-1"}, {"sg", "", "-1", "2*(", "-1)+1"}};
   for (int order = 0; order < 2; ++order, std::swap(first, second)) {
-    const auto plus = match_k2n(first, "", "+1"), minus = match_k2n(second, "", "-1");
-    if (plus && minus && *plus == *minus) {
-      t.form = "twin";
-      std::tie(t.k_text, t.n_text) = *plus;
-      return true;
-    }
-    const auto p = match_k2n(first, "", "-1"), two_p_plus_1 = match_k2n(second, "2*(", "-1)+1");
-    if (p && two_p_plus_1 && *p == *two_p_plus_1) {
-      t.form = "sg";
-      std::tie(t.k_text, t.n_text) = *p;
+    for (const Pattern& p : kPatterns) {
+      const auto one = match_k2n(first, p.prefix1, p.suffix1), other = match_k2n(second, p.prefix2, p.suffix2);
+      if (!one || !other || *one != *other) continue;
+      t.form = p.form;
+      std::tie(t.k_text, t.n_text) = *one;
       return true;
     }
   }
@@ -323,8 +317,7 @@ std::vector<std::string> abc_values(std::string_view text, std::size_t count, st
   if (text.find(':') != std::string_view::npos) throw Error("separate values with spaces, not ':'");
   const auto fields = words(text, count);
   if (fields.size() != count)
-    throw Error("expected " + std::to_string(count) + (count == 1 ? " value" : " values") + " ($a..$" +
-                std::string(1, static_cast<char>('a' + count - 1)) + "), found " +
+    throw Error("expected " + std::to_string(count) + " values ($a...), found " +
                 (fields.size() > count ? "more" : std::to_string(fields.size())));
   std::vector<std::string> values;
   for (std::string_view field : fields) {
