@@ -199,3 +199,23 @@ b,15,composite,bpsw,factor 3"
   assert_success
   assert_line --index 0 "200000"
 }
+
+@test "list options do not swallow the file that follows" {
+  echo 97 > one.txt
+  run bash -c "mrtest -k prime,composite -t mr -b 2,3 one.txt | json-field verdict"
+  assert_success
+  assert_output "prime"
+}
+
+@test "NewPGen and ABC files map onto the shared records" {
+  printf '1000000:T:0:2:3\n3 1\n5 4\n' > twin.npg
+  run bash -c "mrtest twin.npg | cut -d, -f1-3"
+  assert_success
+  assert_line --index 0 '{"k":3,"n":1,"form":"twin"'
+  printf 'ABC $a*2^$b-1 // sieved to 1e6\n3 2\n3 3\n' > riesel.abc
+  run bash -c "mrtest riesel.abc | cut -d, -f1-4"
+  assert_line --index 0 '{"k":3,"b":2,"n":2,"c":-1'
+  run bash -c "printf 'ABC \$a*2^\$b-1\n3 x\n' | mrtest"
+  assert_failure 1
+  assert_output --partial "mrtest: <stdin>:2:"
+}

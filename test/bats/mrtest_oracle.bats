@@ -82,3 +82,24 @@ square"
   run bash -c "mrtest -t fermat --trial-bound 0 lists/carmichael.txt | json-field verdict | sort -u"
   assert_output "probable-prime"
 }
+
+@test "NewPGen (twin, sg, +1) and ABC files give PARI's verdicts" {
+  {
+    echo "1000000:T:0:2:3"; for k in $(seq 1 2 401); do echo "$k 100"; done
+    echo "1000000:S:0:2:10"; for k in $(seq 1 2 401); do echo "$k 80"; done
+    echo "1000000:P:1:2:1"; for k in $(seq 1 2 401); do echo "$k 300"; done
+  } > mixed.npg
+  gp -q > want.txt <<'GP'
+v(N) = if(N < 2^64, if(isprime(N), 2, 0), if(ispseudoprime(N), 1, 0));
+name(x) = if(x == 2, "prime", if(x == 1, "probable-prime", "composite"));
+forstep(k = 1, 401, 2, print(name(min(v(k*2^100-1), v(k*2^100+1)))));
+forstep(k = 1, 401, 2, print(name(min(v(k*2^80-1), v(k*2^81-1)))));
+forstep(k = 1, 401, 2, print(name(v(k*2^300+1))));
+forstep(k = 1, 401, 2, forstep(n = 60, 70, 5, print(name(v(k*2^n-1)))));
+GP
+  { echo 'ABC $a*2^$b-1'; for k in $(seq 1 2 401); do for n in 60 65 70; do echo "$k $n"; done; done; } > riesel.abc
+  mrtest -j 2 mixed.npg riesel.abc | json-field verdict > got.txt
+  run diff want.txt got.txt
+  assert_success
+  [ "$(grep -c prime want.txt)" -gt 15 ]
+}

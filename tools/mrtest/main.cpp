@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
   app.add_option("-b,--bases", bases, "bases for mr and fermat, e.g. 2,3,5 (default 2)")
       ->type_name("LIST")
       ->delimiter(',')
+      ->allow_extra_args(false)  // "-b 2,3 FILE": FILE is not a base
       ->check(CLI::Range(std::uint64_t{2}, ~std::uint64_t{0}));
   app.add_option("-r,--rounds", rounds, "extra random bases for mr and fermat")->check(CLI::Range(0u, 100000u))->type_name("N");
   app.add_option("--seed", seed, "seed for the random bases (with each number, fixes them)")->type_name("S");
@@ -79,6 +80,7 @@ int main(int argc, char** argv) {
   app.add_option("-k,--keep", keep, "pass on only records with these verdicts: prime, probable, composite, unknown")
       ->type_name("LIST")
       ->delimiter(',')
+      ->allow_extra_args(false)
       ->check(CLI::IsMember({"prime", "probable", "probable-prime", "composite", "unknown"}));
   app.add_flag("--skip-bad", skip_bad, "report malformed records on stderr and go on");
   app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits (default 2^26)")
