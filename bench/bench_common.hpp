@@ -8,7 +8,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <initializer_list>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bench {
@@ -36,6 +38,15 @@ double time_cpu(F&& work) {
   const double start = cpu_seconds();
   work();
   return cpu_seconds() - start;
+}
+
+/// Mean CPU seconds of `ours` and of `peer`, run in the order ours, peer,
+/// peer, ours: a machine that speeds up or slows down steadily during the
+/// repeat affects both sides alike.
+template <class Ours, class Peer>
+std::pair<double, double> time_interleaved(Ours&& ours, Peer&& peer) {
+  const double a = time_cpu(ours), b = time_cpu(peer), c = time_cpu(peer), d = time_cpu(ours);
+  return {(a + d) / 2, (b + c) / 2};
 }
 
 inline double median(std::vector<double> values) {

@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "bench_common.hpp"
 #include "primes/prime64.hpp"
@@ -45,22 +47,16 @@ int main() {
   check_agree(numbers, expected, peer());
   std::size_t primes = 0;
   for (unsigned char v : expected) primes += v;
-  std::printf("bench_u64: %zu random odd 64-bit numbers (%zu primes), is_prime_u64 vs FLINT n_is_prime, %d repeats\n",
+  std::printf("bench_u64: %zu random odd 64-bit numbers (%zu primes), is_prime_u64 vs FLINT n_is_prime, %d repeats of ours-peer-peer-ours\n",
               kCount, primes, repeats);
 
   bench::Results results("bench_u64");
   for (int r = 0; r < repeats; ++r) {
-    std::vector<unsigned char> mine, theirs;
-    double t_ours = 0, t_peer = 0;
-    // Alternate who goes first, so neither side always gets the warmer cache.
-    if (r % 2 == 0) {
-      t_ours = bench::time_cpu([&] { mine = ours(); });
-      t_peer = bench::time_cpu([&] { theirs = peer(); });
-    } else {
-      t_peer = bench::time_cpu([&] { theirs = peer(); });
-      t_ours = bench::time_cpu([&] { mine = ours(); });
-    }
-    check_agree(numbers, mine, theirs);
+    std::vector<std::vector<unsigned char>> mine, theirs;  // the verdicts of every run
+    const auto [t_ours, t_peer] = bench::time_interleaved([&] { mine.push_back(ours()); },
+                                                          [&] { theirs.push_back(peer()); });
+    for (const auto& m : mine)
+      for (const auto& t : theirs) check_agree(numbers, m, t);
     results.add(t_ours, t_peer);
   }
   results.report(1.0);

@@ -17,7 +17,7 @@ class Montgomery64 {
     // Newton iteration for n^-1 mod 2^64: each step doubles the correct bits.
     u64 inverse = n;  // correct to 3 bits for odd n
     for (int i = 0; i < 5; ++i) inverse *= 2 - n * inverse;
-    neg_inverse_ = 0 - inverse;
+    inverse_ = inverse;
     r2_ = static_cast<u64>((static_cast<u128>(0) - n) % n);  // 2^128 mod n
     one_ = static_cast<u64>((static_cast<u128>(1) << 64) % n);
   }
@@ -25,15 +25,16 @@ class Montgomery64 {
   u64 modulus() const { return n_; }
   u64 one() const { return one_; }
 
-  /// REDC: t / 2^64 mod n for t < n * 2^64.
+  /// REDC: t / 2^64 mod n for t < n * 2^64. With m = t * n^-1 mod 2^64,
+  /// t - m*n is divisible by 2^64 and lies in (-n*2^64, n*2^64): subtract the
+  /// high halves and add n back on a borrow. No 129-bit carry, so no
+  /// hard-to-predict branch when n > 2^63.
   u64 reduce(u128 t) const {
-    const u64 m = static_cast<u64>(t) * neg_inverse_;
-    const u128 sum = t + static_cast<u128>(m) * n_;
-    // t + m*n can exceed 2^128 only when n > 2^63; track that carry.
-    const bool carry = sum < t;
-    u64 r = static_cast<u64>(sum >> 64);
-    if (carry || r >= n_) r -= n_;
-    return r;
+    const u64 m = static_cast<u64>(t) * inverse_;
+    const u64 mn_high = static_cast<u64>((static_cast<u128>(m) * n_) >> 64);
+    const u64 t_high = static_cast<u64>(t >> 64);
+    const u64 r = t_high - mn_high;
+    return t_high < mn_high ? r + n_ : r;
   }
 
   u64 mul(u64 a, u64 b) const { return reduce(static_cast<u128>(a) * b); }
@@ -59,7 +60,7 @@ class Montgomery64 {
   }
 
  private:
-  u64 n_, neg_inverse_, r2_, one_;
+  u64 n_, inverse_, r2_, one_;
 };
 
 }  // namespace tk::primes
