@@ -46,19 +46,23 @@ std::vector<Record> read_all(const std::string& content, NativeFormatProbe probe
 
 std::string write_all(const std::vector<Record>& records, OutputFormat format,
                       std::vector<std::string> declared = {}) {
-  char* buffer = nullptr;
-  size_t size = 0;
-  std::FILE* out = open_memstream(&buffer, &size);
-  {
-    RecordWriter writer(format, out);
-    writer.declare_fields(std::move(declared));
-    for (const auto& r : records) writer.write(r);
-    writer.flush();
-  }
-  std::fclose(out);
-  std::string text(buffer, size);
-  std::free(buffer);
-  return text;
+  // The memory stream is closed (and its buffer freed) even when write throws.
+  struct Stream {
+    char* buffer = nullptr;
+    size_t size = 0;
+    std::FILE* file = open_memstream(&buffer, &size);
+    ~Stream() {
+      if (file) std::fclose(file);
+      std::free(buffer);
+    }
+  } stream;
+  RecordWriter writer(format, stream.file);
+  writer.declare_fields(std::move(declared));
+  for (const auto& r : records) writer.write(r);
+  writer.flush();
+  std::fclose(stream.file);
+  stream.file = nullptr;
+  return std::string(stream.buffer, stream.size);
 }
 
 }  // namespace
