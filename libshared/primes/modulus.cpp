@@ -39,6 +39,15 @@ void Modulus::reduce(mpz_t x) const {
   reduce_special(x);
 }
 
+void Modulus::remainder(mpz_ptr out, mpz_srcptr in) const {
+  if (!form_) {
+    mpz_tdiv_r(out, in, n_.get_mpz_t());
+    return;
+  }
+  mpz_set(out, in);
+  reduce_special(out);
+}
+
 // With N = k*2^n + c, k*2^n = -c (mod N). Split x = q*2^n + r and
 // q = q1*k + q0; then x = q1*(-c) + q0*2^n + r (mod N), about n bits
 // shorter. Two or three rounds bring x below a few N.

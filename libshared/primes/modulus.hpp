@@ -32,6 +32,10 @@ class Modulus {
 
   /// x := x mod N, with 0 <= x < N; x may be negative or as large as N^2 * 2^64.
   void reduce(mpz_t x) const;
+  /// out := a number congruent to `in` with |out| < N (its sign may be
+  /// negative). `out` and `in` must differ: hot loops that square into a
+  /// scratch value and reduce back avoid GMP's copies for aliased operands.
+  void remainder(mpz_ptr out, mpz_srcptr in) const;
 
  private:
   void reduce_special(mpz_t x) const;
