@@ -211,6 +211,9 @@ Number parse_number(std::string_view text, std::size_t max_bits) {
   if (!text.empty() && text.size() <= 19 && text.find_first_not_of("0123456789") == std::string_view::npos) {
     unsigned long value = 0;
     for (char ch : text) value = value * 10 + static_cast<unsigned long>(ch - '0');
+    const std::size_t bits = value == 0 ? 1 : static_cast<std::size_t>(64 - __builtin_clzl(value));
+    if (bits > max_bits)
+      throw Error("number has " + std::to_string(bits) + " bits, more than --max-bits " + std::to_string(max_bits));
     return Number{mpz_class(value), std::nullopt};
   }
   Parser parser(text, max_bits);

@@ -13,7 +13,7 @@ TEST(NumberExpression, DecimalHexAndOperators) {
   EXPECT_EQ(parse_number("2^10-1").value, 1023);
   EXPECT_EQ(parse_number("2**10+1").value, 1025);
   EXPECT_EQ(parse_number("2^3^2").value, 512);  // right associative
-  EXPECT_EQ(parse_number("(2^127+1)/3").value, (mpz_class(1) << 127) / 3 + 1 - 1 + 0 * 0 + ((mpz_class(1) << 127) + 1) / 3 - (mpz_class(1) << 127) / 3);
+  EXPECT_EQ(parse_number("(2^127+1)/3").value, ((mpz_class(1) << 127) + 1) / 3);
   EXPECT_EQ(parse_number("10!+1").value, 3628801);
   EXPECT_EQ(parse_number("13#-1").value, 30029);
   EXPECT_EQ(parse_number(" 7 * 3 % 5 ").value, 1);
@@ -47,6 +47,8 @@ TEST(NumberExpression, RefusesNumbersAboveMaxBitsBeforeComputing) {
   EXPECT_THROW(parse_number("100000000!"), tk::Error);
   EXPECT_THROW(parse_number("(2^600)*(2^600)", 1024), tk::Error);
   EXPECT_THROW(parse_number(std::string(400, '9'), 1024), tk::Error);
+  EXPECT_THROW(parse_number("75858", 16), tk::Error);  // the decimal fast path too
+  EXPECT_NO_THROW(parse_number("65535", 16));
 }
 
 TEST(NumberExpression, DeepNestingIsAnErrorNotACrash) {
