@@ -25,6 +25,8 @@ mpz_class integer_field(const Record& record, const char* name, std::size_t max_
     const double d = value.get<double>();
     if (!std::isfinite(d) || d != std::floor(d))
       throw Error(std::string("field '") + name + "' is not an integer");
+    // 1e5 is an integer written as a float; above 2^53 digits may be lost.
+    if (std::fabs(d) <= static_cast<double>(kMaxSafeJsonInteger)) return mpz_class(d);
     throw Error(std::string("field '") + name +
                 "' is too large for a json number; write it as a string of decimal digits");
   }

@@ -93,6 +93,11 @@ TEST(Candidate, FormsExpandIntoTheirMembers) {
   EXPECT_EQ(c.members[1].number.value, (mpz_class("16869987339975") << 171960) + 1);
 }
 
+TEST(Candidate, IntegralFloatsBelow2To53AreIntegers) {
+  const auto c = candidate_from_record(tk::Record::parse(R"({"k":3e0,"n":1e1,"c":-1})"), 1 << 20);
+  EXPECT_EQ(c.members[0].number.value, 3 * 1024 - 1);
+}
+
 TEST(Candidate, MalformedRecordsAreErrors) {
   for (const char* bad : {R"({"id":1})", R"({"k":3})", R"({"k":3,"n":10})", R"({"k":3,"n":10,"form":"quad"})",
                           R"({"k":0,"n":10,"c":1})", R"({"k":3,"n":-1,"c":1})", R"({"k":1e300,"n":1,"c":1})",
