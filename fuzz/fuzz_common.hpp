@@ -28,10 +28,4 @@ inline bool oracle_enabled(std::string_view name) {
   std::abort();
 }
 
-/// Anything but tk::Error escaping a parser is a bug: name it, then abort.
-[[noreturn]] inline void unexpected_exception(const char* what, const char* where) {
-  std::fprintf(stderr, "\n==fuzz== unexpected exception from %s: %s\n", where, what);
-  std::abort();
-}
-
 }  // namespace tk::fuzz

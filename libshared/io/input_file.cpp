@@ -8,7 +8,7 @@
 
 namespace tk::io {
 
-InputFile::InputFile(const std::string& path) : buffer_(1u << 20) {
+InputFile::InputFile(const std::string& path) : buffer_(1u << 16) {
   if (path == "-" || path.empty()) {
     file_ = stdin;
     name_ = "<stdin>";
