@@ -219,3 +219,18 @@ b,15,composite,bpsw,factor 3"
   assert_failure 1
   assert_output --partial "mrtest: <stdin>:2:"
 }
+
+@test "fuzz seeds and regression inputs end with a verdict or a clean error" {
+  shopt -s nullglob
+  count=0
+  for input in "$TOOLKIT_ROOT"/fuzz/seeds/*/* "$TOOLKIT_ROOT"/fuzz/regressions/*/*; do
+    [ "$(basename "$input")" = README.md ] && continue
+    run mrtest --max-bits 4096 "$input"
+    [ "$status" -eq 0 ] || [ "$status" -eq 1 ] || { echo "$input: exit $status"; false; }
+    if [ "$status" -eq 1 ]; then
+      [[ "${lines[-1]}" == "mrtest: "* ]] || { echo "$input: ${lines[-1]}"; false; }
+    fi
+    count=$((count + 1))
+  done
+  [ "$count" -gt 10 ]
+}
