@@ -43,13 +43,32 @@ bool InputFile::fill() {
   if (end_ == buffer_.size()) buffer_.resize(buffer_.size() * 2);
   std::size_t got = std::fread(buffer_.data() + end_, 1, buffer_.size() - end_, file_);
   if (got == 0) {
+    eof_ = true;  // also after a read error: the next call ends this input
     if (std::ferror(file_))
-      throw Error(std::string("read error: ") + std::strerror(errno), {name_, line_number_ + 1});
-    eof_ = true;
+      throw Error(std::string("read error: ") + std::strerror(errno), {name_, 0});
     return false;
   }
   end_ += got;
   return true;
+}
+
+// Drops the rest of an over-long line, then reports it, so that the next
+// call (with --skip-bad) starts on the following line.
+void InputFile::skip_long_line() {
+  const std::size_t line = ++line_number_;
+  for (;;) {
+    const void* newline = std::memchr(buffer_.data() + begin_, '\n', end_ - begin_);
+    if (newline) {
+      const std::size_t stop = static_cast<std::size_t>(static_cast<const char*>(newline) - buffer_.data()) + 1;
+      consumed_ += stop - begin_;
+      begin_ = stop;
+      break;
+    }
+    consumed_ += end_ - begin_;
+    begin_ = end_ = 0;
+    if (!fill()) break;
+  }
+  throw Error("line longer than 64 MiB", {name_, line});
 }
 
 bool InputFile::next(std::string_view& line) {
@@ -64,13 +83,13 @@ bool InputFile::next(std::string_view& line) {
       advance = length + 1;
     } else {
       searched = available;
-      if (available > kMaxLineBytes)
-        throw Error("line longer than 64 MiB", {name_, line_number_ + 1});
+      if (available > kMaxLineBytes) skip_long_line();  // throws
       if (fill()) continue;  // fill() keeps offsets relative to begin_ valid
       if (end_ == begin_) return false;
       length = advance = end_ - begin_;  // last line without a newline
       base = buffer_.data() + begin_;
     }
+    if (length > kMaxLineBytes) skip_long_line();
     ++line_number_;
     consumed_ += advance;
     begin_ += advance;

@@ -39,6 +39,7 @@ class InputFile {
 
  private:
   bool fill();
+  [[noreturn]] void skip_long_line();
 
   std::FILE* file_ = nullptr;
   bool owns_ = false;
@@ -48,7 +49,6 @@ class InputFile {
   std::size_t begin_ = 0, end_ = 0;
   bool eof_ = false;
   std::uint64_t consumed_ = 0, size_ = 0;
-  std::string long_line_;
 };
 
 }  // namespace tk::io

@@ -9,9 +9,9 @@ namespace tk::io {
 
 namespace {
 
-bool is_blank(std::string_view line) {
-  return line.find_first_not_of(" \t\r\f\v") == std::string_view::npos;
-}
+constexpr const char* kBlank = " \t\r\f\v";
+
+bool is_blank(std::string_view line) { return line.find_first_not_of(kBlank) == std::string_view::npos; }
 
 /// nlohmann's messages start with "[json.exception.parse_error.101] parse
 /// error at line 1, column 7: ..."; keep the column and the reason.
@@ -64,7 +64,7 @@ bool RecordReader::open_next_input() {
 }
 
 void RecordReader::start_format(std::string_view first_line) {
-  const auto start = first_line.find_first_not_of(" \t");
+  const auto start = first_line.find_first_not_of(kBlank);
   if (first_line[start] == '{') {
     format_ = InputFormat::json_lines;
     return;
@@ -86,6 +86,8 @@ bool RecordReader::next(Record& out) {
       input_.reset();
       continue;
     }
+    if (format_ == InputFormat::unknown && input_->line_number() == 1 && line.starts_with("\xEF\xBB\xBF"))
+      line.remove_prefix(3);  // a UTF-8 byte-order mark would hide the first byte
     if (is_blank(line)) continue;
     if (format_ == InputFormat::unknown) start_format(line);
     bool produced = false;

@@ -124,20 +124,79 @@ Candidate candidate_from_record(const Record& record, std::size_t max_bits) {
   return candidate;
 }
 
+namespace {
+
+/// The text as digit runs and operators ("**" read as '^'), spaces dropped;
+/// empty when anything else occurs.
+std::vector<std::string_view> kbnc_tokens(std::string_view text) {
+  std::vector<std::string_view> tokens;
+  for (std::size_t i = 0; i < text.size();) {
+    const char ch = text[i];
+    if (ch == ' ' || ch == '\t') {
+      ++i;
+    } else if (std::isdigit(static_cast<unsigned char>(ch))) {
+      std::size_t end = i;
+      while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+      tokens.push_back(text.substr(i, end - i));
+      i = end;
+    } else if (text.substr(i, 2) == "**") {
+      tokens.push_back("^");
+      i += 2;
+    } else if (ch == '*' || ch == '^' || ch == '+' || ch == '-') {
+      tokens.push_back(text.substr(i, 1));
+      ++i;
+    } else {
+      return {};
+    }
+  }
+  return tokens;
+}
+
+/// k*b^n+c, b^n*k+c or b^n+c read from the text alone, without computing
+/// the number: the reader thread only sorts lines, the workers compute.
+std::optional<KbncForm> match_kbnc_text(std::string_view text) {
+  const auto t = kbnc_tokens(text);
+  auto is_number = [&](std::size_t i) { return i < t.size() && std::isdigit(static_cast<unsigned char>(t[i][0])); };
+  auto is_op = [&](std::size_t i, char op) { return i < t.size() && t[i].size() == 1 && t[i][0] == op; };
+  std::string_view k = "1", b, n, c, sign;
+  if (t.size() == 7 && is_number(0) && is_op(1, '*') && is_number(2) && is_op(3, '^') && is_number(4)) {
+    k = t[0], b = t[2], n = t[4];  // k*b^n+c
+  } else if (t.size() == 7 && is_number(0) && is_op(1, '^') && is_number(2) && is_op(3, '*') && is_number(4)) {
+    b = t[0], n = t[2], k = t[4];  // b^n*k+c
+  } else if (t.size() == 5 && is_number(0) && is_op(1, '^') && is_number(2)) {
+    b = t[0], n = t[2];  // b^n+c
+  } else {
+    return std::nullopt;
+  }
+  sign = t[t.size() - 2];
+  c = t.back();
+  if ((sign != "+" && sign != "-") || !is_number(t.size() - 1)) return std::nullopt;
+  if (b.size() > 19 || n.size() > 19 || c.size() > 18) return std::nullopt;  // word-sized parts only
+  KbncForm form;
+  form.k.set_str(std::string(k), 10);
+  form.b = std::stoull(std::string(b));
+  form.n = std::stoull(std::string(n));
+  form.c = std::stoll(std::string(c)) * (sign == "-" ? -1 : 1);
+  if (form.k < 1 || form.b < 2 || form.c == 0) return std::nullopt;
+  return form;
+}
+
+}  // namespace
+
 Record record_from_number_text(std::string_view text, std::size_t max_bits) {
-  Number number = parse_number(text, max_bits);
   Record record = Record::object();
-  if (number.form && number.form->c != 0) {
-    record["k"] = json_integer(number.form->k);
-    record["b"] = number.form->b;
-    record["n"] = number.form->n;
-    record["c"] = number.form->c;
-  } else if (text.find_first_not_of("0123456789 \t") == std::string_view::npos ||
+  if (auto form = match_kbnc_text(text)) {
+    evaluate_kbnc_bits_check(*form, max_bits);
+    record["k"] = json_integer(form->k);
+    record["b"] = form->b;
+    record["n"] = form->n;
+    record["c"] = form->c;
+  } else if (text.find_first_not_of("0123456789") == std::string_view::npos ||
              ((text.starts_with("0x") || text.starts_with("0X")) &&
               text.find_first_not_of("0123456789abcdefABCDEF", 2) == std::string_view::npos)) {
-    record["number"] = number.value.get_str();
+    record["number"] = parse_number(text, max_bits).value.get_str();
   } else {
-    record["expr"] = std::string(text);
+    record["expr"] = std::string(text);  // evaluated (and checked) by whoever tests it
   }
   return record;
 }

@@ -1,19 +1,26 @@
 /// @file number.cpp
 #include "primes/number.hpp"
 
+#include <algorithm>
 #include <cmath>
+
+#include <fmt/format.h>
 
 #include "io/error.hpp"
 
 namespace tk::primes {
 
-mpz_class evaluate_kbnc(const KbncForm& form, std::size_t max_bits) {
+void evaluate_kbnc_bits_check(const KbncForm& form, std::size_t max_bits) {
   if (form.b < 2) throw Error("base b must be at least 2");
   const double bits = static_cast<double>(form.n) * std::log2(static_cast<double>(form.b)) +
                       static_cast<double>(mpz_sizeinbase(form.k.get_mpz_t(), 2));
   if (bits > static_cast<double>(max_bits) + 1)
-    throw Error("number has about " + std::to_string(static_cast<std::uint64_t>(bits)) +
+    throw Error("number has about " + std::to_string(static_cast<std::uint64_t>(std::min(bits, 1e18))) +
                 " bits, more than --max-bits " + std::to_string(max_bits));
+}
+
+mpz_class evaluate_kbnc(const KbncForm& form, std::size_t max_bits) {
+  evaluate_kbnc_bits_check(form, max_bits);
   mpz_class value;
   if (form.b == 2) {
     mpz_mul_2exp(value.get_mpz_t(), form.k.get_mpz_t(), form.n);
@@ -27,12 +34,9 @@ mpz_class evaluate_kbnc(const KbncForm& form, std::size_t max_bits) {
 }
 
 std::string kbnc_text(const KbncForm& form) {
-  std::string text;
-  if (form.k != 1) text = form.k.get_str() + "*";
-  text += std::to_string(form.b) + "^" + std::to_string(form.n);
-  if (form.c > 0) text += "+" + std::to_string(form.c);
-  if (form.c < 0) text += std::to_string(form.c);
-  return text;
+  const std::string k = form.k == 1 ? std::string() : form.k.get_str() + "*";
+  if (form.c == 0) return fmt::format("{}{}^{}", k, form.b, form.n);
+  return fmt::format("{}{}^{}{:+d}", k, form.b, form.n, form.c);
 }
 
 }  // namespace tk::primes

@@ -26,6 +26,9 @@ struct Number {
 /// k*b^n+c as a value; Error if it would exceed `max_bits`.
 mpz_class evaluate_kbnc(const KbncForm& form, std::size_t max_bits);
 
+/// The size check of evaluate_kbnc alone, without computing the number.
+void evaluate_kbnc_bits_check(const KbncForm& form, std::size_t max_bits);
+
 /// "k*b^n+c" text for a form (b^n when k = 1, no c when c = 0).
 std::string kbnc_text(const KbncForm& form);
 

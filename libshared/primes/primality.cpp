@@ -124,6 +124,12 @@ TestOutcome split_bpsw(const Modulus& modulus, Lucas& lucas) {
   // Modulus keeps scratch space, so each thread reduces with its own copy.
   const Modulus lucas_modulus = modulus.form() ? Modulus(modulus.value(), *modulus.form()) : Modulus(modulus.value());
   auto lucas_result = std::async(std::launch::async, [&] { return lucas(lucas_modulus, &cancel); });
+  // Should the base-2 test throw (out of memory), stop the Lucas thread
+  // rather than wait for its full run in the future's destructor.
+  struct CancelOnExit {
+    std::atomic<bool>& flag;
+    ~CancelOnExit() { flag = true; }
+  } guard{cancel};
   const bool base2_passed = strong_probable_prime(modulus, 2, nullptr);
   if (!base2_passed) cancel = true;
   std::optional<TestOutcome> lucas_failure = lucas_result.get();

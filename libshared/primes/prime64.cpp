@@ -33,10 +33,13 @@ constexpr std::array<SmallPrime, 17> kSmallPrimes = [] {
 }();
 
 bool is_perfect_square(u64 n) {
+  // The double estimate is within one of the root; products in 128 bits so
+  // that roots near 2^32 cannot wrap around.
   u64 root = static_cast<u64>(std::sqrt(static_cast<double>(n)));
-  while (root * root > n) --root;
-  while ((root + 1) * (root + 1) <= n) ++root;
-  return root * root == n;
+  if (root > 0xFFFFFFFFu) root = 0xFFFFFFFFu;
+  while (static_cast<u128>(root) * root > n) --root;
+  while (static_cast<u128>(root + 1) * (root + 1) <= n) ++root;
+  return static_cast<u128>(root) * root == n;
 }
 
 }  // namespace

@@ -234,3 +234,23 @@ b,15,composite,bpsw,factor 3"
   done
   [ "$count" -gt 10 ]
 }
+
+@test "a UTF-8 byte-order mark does not hide JSON input" {
+  run bash -c "printf '\xef\xbb\xbf{\"number\":\"7\"}\n' | mrtest | json-field verdict"
+  assert_output "prime"
+}
+
+@test "--skip-bad gets past over-long lines and read errors, and fails for unreadable files" {
+  run bash -c "(head -c 70000000 /dev/zero | tr '\0' 1; echo; echo 7) | mrtest --skip-bad 2>/dev/null | json-field number"
+  assert_success
+  assert_output "7"
+  run timeout 20 mrtest --skip-bad < /
+  assert_failure 1
+  assert_output --partial "read error"
+  echo 7 > one.txt
+  run mrtest --skip-bad one.txt missing.txt
+  assert_failure 1
+  assert_output --partial '"number":"7"'
+  assert_output --partial "mrtest: missing.txt: cannot open"
+  assert_output --partial "1 input file was not read"
+}

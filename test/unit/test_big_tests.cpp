@@ -187,3 +187,22 @@ TEST(Primality, SplitBpswGivesTheSequentialVerdictsAndWitnesses) {
   const Number mersenne{(mpz_class(1) << 521) - 1, KbncForm{1, 2, 521, -1}};
   EXPECT_EQ(test_number(mersenne, split).verdict, Verdict::probable_prime);
 }
+
+// test_number is what mrtest runs: its 64-bit path against a sieve, and
+// against GMP at the top of the 64-bit range.
+TEST(Primality, TestNumberAgreesWithASieveAndWithGmpNear2To64) {
+  std::vector<bool> composite(300001);
+  for (std::size_t i = 2; i * i <= 300000; ++i)
+    if (!composite[i])
+      for (std::size_t j = i * i; j <= 300000; j += i) composite[j] = true;
+  TestPlan plan;
+  for (unsigned long n = 2; n <= 300000; ++n) {
+    const Verdict v = test_number(Number{mpz_class(n), std::nullopt}, plan).verdict;
+    ASSERT_EQ(v, composite[n] ? Verdict::composite : Verdict::prime) << n;
+  }
+  for (unsigned long n = ~0UL - 60001; n < ~0UL - 1; n += 2) {
+    const mpz_class z(n);
+    const Verdict v = test_number(Number{z, std::nullopt}, plan).verdict;
+    ASSERT_EQ(v == Verdict::prime, mpz_probab_prime_p(z.get_mpz_t(), 40) != 0) << n;
+  }
+}

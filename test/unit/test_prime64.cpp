@@ -6,6 +6,8 @@
 #include <random>
 #include <vector>
 
+#include <gmpxx.h>
+
 #include "primes/montgomery64.hpp"
 #include "primes/prime64.hpp"
 
@@ -136,4 +138,15 @@ TEST(Prime64, SmallFactorFindsSmallestPrimeFactor) {
   EXPECT_EQ(small_factor_u64(1000003ULL * 999983ULL, 1000), 0u);
   EXPECT_EQ(small_factor_u64(1000003ULL * 999983ULL, 1000000), 999983u);
   EXPECT_EQ(small_factor_u64(3ULL * 1000003ULL, 2), 0u);
+}
+
+// Near 2^64 the Selfridge search reaches its perfect-square check; roots near
+// 2^32 must not overflow (this band once hung).
+TEST(Prime64, TopOfTheRangeAgreesWithGmp) {
+  for (u64 n = ~u64{0} - 200001; n != 0 && n <= ~u64{0} - 1; n += 2) {
+    mpz_class z(static_cast<unsigned long>(n));
+    ASSERT_EQ(is_prime_u64(n), mpz_probab_prime_p(z.get_mpz_t(), 40) != 0) << n;
+  }
+  EXPECT_FALSE(is_prime_u64(4294967295ULL * 4294967295ULL));
+  EXPECT_TRUE(is_prime_u64(18446744073709549621ULL));
 }

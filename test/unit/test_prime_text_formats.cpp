@@ -54,7 +54,17 @@ Decoded decode_text(std::string_view text, std::size_t max_bits = kDefaultMaxBit
     }
     Record record;
     try {
-      if (decoder->decode(line, Location{"input.txt", line_number}, record)) decoded.records.push_back(record);
+      if (decoder->decode(line, Location{"input.txt", line_number}, record)) {
+        // Expressions are checked where they are computed, as mrtest's
+        // workers do next; an error there belongs to the same line.
+        try {
+          candidate_from_record(record, max_bits);
+        } catch (const Error& e) {
+          decoded.errors.emplace_back(line_number, e.what());
+          continue;
+        }
+        decoded.records.push_back(record);
+      }
     } catch (const Error& e) {
       EXPECT_EQ(e.where().file, "input.txt");
       decoded.errors.emplace_back(e.where().line, e.what());

@@ -1,5 +1,6 @@
 /// @file main.cpp
 /// @brief mrtest: decides whether numbers are prime, as a pipeline filter.
+#include <atomic>
 #include <chrono>
 #include <set>
 
@@ -12,6 +13,7 @@
 #include "primes/candidate.hpp"
 #include "primes/candidate_input.hpp"
 #include "primes/number_expression.hpp"
+#include "primes/trial_division.hpp"
 
 namespace {
 
@@ -25,6 +27,7 @@ struct Job {
 
 struct Outcome {
   Record record;
+  tk::Location where;
   Verdict verdict = Verdict::unknown;
   std::optional<tk::Error> error;
 };
@@ -96,8 +99,7 @@ int main(int argc, char** argv) {
     plan.random_bases = rounds;
     plan.seed = seed;
     plan.trial_bound = trial_bound;
-    // With -j 2 or more, one big number alone still keeps two cores busy.
-    plan.split_bits = tool.common().threads > 1 ? tk::primes::kDefaultSplitBits : 0;
+    tk::primes::small_primes();  // the trial-division table, built before any timing
     if ((!bases.empty() || rounds) && plan.kind != tk::primes::TestKind::miller_rabin &&
         plan.kind != tk::primes::TestKind::fermat)
       throw tk::UsageError("--bases and --rounds go with --test mr or --test fermat");
@@ -116,17 +118,28 @@ int main(int argc, char** argv) {
     tk::cli::Progress progress("mrtest", tool.show_progress());
     std::uint64_t done = 0, skipped = 0;
 
+    std::uint64_t unreadable = 0;
     auto report_bad = [&](const tk::Error& error) {
       if (!skip_bad) throw error;
-      ++skipped;
+      // A file that cannot be read at all (line 0) still fails the run at the end.
+      if (error.where().line == 0) ++unreadable;
+      else ++skipped;
       tool.warn(error.located_message());
     };
+    // A big number tested while other threads sit idle splits its BPSW over
+    // two threads; when every thread has work, splitting would only
+    // oversubscribe the cores.
+    const unsigned threads = tool.common().threads;
+    std::atomic<unsigned> busy{0};
     auto test_one = [&](Job& job) {
       Outcome out;
+      out.where = job.where;
       try {
         const auto start = std::chrono::steady_clock::now();
         const tk::primes::Candidate candidate = tk::primes::candidate_from_record(job.record, max_bits);
-        out.verdict = tk::primes::test_candidate(candidate, plan, job.record);
+        tk::primes::TestPlan job_plan = plan;
+        if (threads > 1 && busy.load() < threads) job_plan.split_bits = tk::primes::kDefaultSplitBits;
+        out.verdict = tk::primes::test_candidate(candidate, job_plan, job.record);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         job.record.erase("seconds");
         // Keep "members" last: it is the bulky field.
@@ -144,9 +157,11 @@ int main(int argc, char** argv) {
       return out;
     };
     auto work = [&](std::vector<Job>& batch) {
+      ++busy;
       std::vector<Outcome> outcomes;
       outcomes.reserve(batch.size());
       for (Job& job : batch) outcomes.push_back(test_one(job));
+      --busy;
       return outcomes;
     };
     auto emit = [&](std::vector<Outcome>& outcomes) {
@@ -157,7 +172,12 @@ int main(int argc, char** argv) {
           report_bad(*out.error);
           continue;
         }
-        if (wanted.empty() || wanted.count(out.verdict)) writer.write(out.record);
+        if (!wanted.empty() && !wanted.count(out.verdict)) continue;
+        try {
+          writer.write(out.record);
+        } catch (const tk::Error& e) {
+          throw tk::Error(e.what(), out.where);  // e.g. a field that is not a CSV column
+        }
       }
     };
 
@@ -190,5 +210,8 @@ int main(int argc, char** argv) {
     progress.finish();
     writer.flush();
     if (skipped) tool.warn("skipped " + std::to_string(skipped) + " bad record" + (skipped == 1 ? "" : "s"));
+    if (unreadable)
+      throw tk::Error(std::to_string(unreadable) + " input file" + (unreadable == 1 ? " was" : "s were") +
+                      " not read");
   });
 }
