@@ -1,22 +1,14 @@
 /// @file candidate_input.cpp
 #include "primes/candidate_input.hpp"
 
+#include "io/text.hpp"
 #include "primes/candidate.hpp"
 #include "primes/number_expression.hpp"
 #include "primes/prime_text_formats.hpp"
 
 namespace tk::primes {
 
-namespace {
-
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t");
-  return text.substr(first, last - first + 1);
-}
-
-}  // namespace
+using io::trim;
 
 bool NumberLineDecoder::decode(std::string_view line, const Location& where, Record& out) {
   const std::string_view text = trim(line);

@@ -15,20 +15,18 @@
 #include <vector>
 
 #include "io/error.hpp"
+#include "io/text.hpp"
 #include "primes/candidate.hpp"
 
 namespace tk::primes {
 
 namespace {
 
+using io::trim;
+
 constexpr std::uint64_t kMaxExponent = 0xFFFFFFFFu;  // n must fit 32 bits
 constexpr std::uint64_t kMaxChainLength = 64;        // the most candidate_from_record accepts
 
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r");  // '\r': CRLF lines from elsewhere
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
 
 /// Whitespace-separated words; stops after `limit` + 1 so a huge junk line
 /// cannot make a huge vector.
