@@ -109,7 +109,8 @@ SelfridgeChoice selfridge_d(const mpz_class& N) {
 // W_{r+1} = W_r^2 - 2 (one squaring per step, as in LLR), with
 // Q^d = (V_d^2 - D U_d^2) / 4.
 bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_class& factor,
-                                 const std::atomic<bool>* cancel) {
+                                 const std::atomic<bool>* cancel, bool* zero_at_last) {
+  if (zero_at_last) *zero_at_last = false;
   const mpz_class& n = N.value();
   const mpz_class n_plus_1 = n + 1;
   const mp_bitcnt_t s = mpz_scan1(n_plus_1.get_mpz_t(), 0);
@@ -175,15 +176,18 @@ bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_cla
   mpz_mul(w.get_mpz_t(), vv.get_mpz_t(), inverse.get_mpz_t());
   w -= 2;
   N.reduce(w.get_mpz_t());
-  if (w == 0) return true;
-  for (mp_bitcnt_t r = 2; r < s; ++r) {
+  // W_r = 0 for some r in 1..s-1 passes the test; r = s-1 is the last step.
+  for (mp_bitcnt_t r = 1;; ++r) {
+    if (w == 0) {
+      if (zero_at_last) *zero_at_last = r == s - 1;
+      return true;
+    }
+    if (r + 1 >= s) return false;
     if (cancelled(cancel)) return false;
     mpz_mul(w.get_mpz_t(), w.get_mpz_t(), w.get_mpz_t());
     mpz_sub_ui(w.get_mpz_t(), w.get_mpz_t(), 2);
     N.reduce(w.get_mpz_t());
-    if (w == 0) return true;
   }
-  return false;
 }
 
 }  // namespace tk::primes

@@ -28,7 +28,9 @@ SelfridgeChoice selfridge_d(const mpz_class& N);
 
 /// Strong Lucas probable prime with P = 1, Q = (1 - D)/4 (D from
 /// selfridge_d). Sets `factor` if the test stumbles on one.
+/// `zero_at_last` (when given) tells whether V_{(N+1)/2} = 0, the condition
+/// that proves N = k*2^n - 1 prime under Rodseth's criterion.
 bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d, mpz_class& factor,
-                                 const std::atomic<bool>* cancel = nullptr);
+                                 const std::atomic<bool>* cancel = nullptr, bool* zero_at_last = nullptr);
 
 }  // namespace tk::primes

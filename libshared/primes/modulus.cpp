@@ -81,8 +81,13 @@ void Modulus::reduce_special(mpz_t x) const {
       break;
     }
   }
-  // x is now below about 2^66 * N: finish with one short division.
-  if (mpz_cmp(x, n_.get_mpz_t()) >= 0) mpz_tdiv_r(x, x, n_.get_mpz_t());
+  // x is now below about 2^66 * N. Usually (c = -1 and x < 2N or so) a
+  // subtraction or two finish; otherwise one short division.
+  if (mpz_sizeinbase(x, 2) <= bits_ + 1) {
+    while (mpz_cmp(x, n_.get_mpz_t()) >= 0) mpz_sub(x, x, n_.get_mpz_t());
+  } else {
+    mpz_tdiv_r(x, x, n_.get_mpz_t());
+  }
   if (negative && mpz_sgn(x) != 0) mpz_sub(x, n_.get_mpz_t(), x);
 }
 

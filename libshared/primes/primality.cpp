@@ -116,25 +116,41 @@ TestOutcome test_u64(std::uint64_t n, const TestPlan& plan) {
   return {};
 }
 
-/// BPSW with the Lucas half on a second thread. The verdict and witness are
-/// those of the sequential order: a failed base-2 test wins over Lucas.
+/// What the Lucas half found: a composite witness, or a pass that for
+/// N = k*2^n - 1 may also be a proof of primality.
+struct LucasOutcome {
+  std::optional<TestOutcome> failure;
+  bool proves_prime = false;
+};
+
+/// BPSW with the Lucas half on a second thread; verdicts and witnesses are
+/// those of the sequential order (see test_big).
 template <class Lucas>
-TestOutcome split_bpsw(const Modulus& modulus, Lucas& lucas) {
-  std::atomic<bool> cancel{false};
+TestOutcome split_bpsw(const Modulus& modulus, Lucas& lucas, bool lucas_first) {
+  std::atomic<bool> cancel_lucas{false}, cancel_base2{false};
   // Modulus keeps scratch space, so each thread reduces with its own copy.
   const Modulus lucas_modulus = modulus.form() ? Modulus(modulus.value(), *modulus.form()) : Modulus(modulus.value());
-  auto lucas_result = std::async(std::launch::async, [&] { return lucas(lucas_modulus, &cancel); });
+  auto lucas_result = std::async(std::launch::async, [&] {
+    LucasOutcome outcome = lucas(lucas_modulus, &cancel_lucas);
+    // Lucas first: its failure or proof decides, the base-2 test can stop.
+    if (lucas_first && (outcome.failure || outcome.proves_prime)) cancel_base2 = true;
+    return outcome;
+  });
   // Should the base-2 test throw (out of memory), stop the Lucas thread
   // rather than wait for its full run in the future's destructor.
   struct CancelOnExit {
     std::atomic<bool>& flag;
     ~CancelOnExit() { flag = true; }
-  } guard{cancel};
-  const bool base2_passed = strong_probable_prime(modulus, 2, nullptr);
-  if (!base2_passed) cancel = true;
-  std::optional<TestOutcome> lucas_failure = lucas_result.get();
+  } guard{cancel_lucas};
+  const bool base2_passed = strong_probable_prime(modulus, 2, &cancel_base2);
+  if (!base2_passed && !lucas_first) cancel_lucas = true;
+  const LucasOutcome lucas_outcome = lucas_result.get();
+  if (lucas_first) {
+    if (lucas_outcome.failure) return *lucas_outcome.failure;
+    if (lucas_outcome.proves_prime) return {Verdict::probable_prime, {}};
+  }
   if (!base2_passed) return composite(base_witness(2));
-  if (lucas_failure) return *lucas_failure;
+  if (lucas_outcome.failure) return *lucas_outcome.failure;
   return {Verdict::probable_prime, {}};
 }
 
@@ -153,14 +169,24 @@ TestOutcome test_big(const Number& number, const TestPlan& plan) {
     special = detect_special_form(n);
   const Modulus modulus = special ? Modulus(n, *special) : Modulus(n);
 
-  auto lucas = [&](const Modulus& m, const std::atomic<bool>* cancel) -> std::optional<TestOutcome> {
+  // N = k*2^n - 1 with 2^n > k: N + 1 = k*2^n, so the Lucas half ends in the
+  // LLR iteration W -> W^2 - 2 on V_k(P', 1), P' = 1/Q - 2. When (Q/N) = -1,
+  // Rodseth's criterion holds ((P'-2 / N) = 1, (P'+2 / N) = -1), and
+  // W_{n-1} = 0 proves N prime; a prime passes Miller-Rabin, so that half
+  // can be skipped. Such numbers therefore run Lucas first.
+  // (k = 2^64 - 1 with n = 64 is the one shape here with 2^n - 1 <= k, where
+  // the criterion's bound p >= 2^n - 1 on prime factors is not enough.)
+  const bool riesel_shape = special && special->c == -1 && (special->n > 64 || special->k < ~std::uint64_t{0});
+  auto lucas = [&](const Modulus& m, const std::atomic<bool>* cancel) -> LucasOutcome {
     const SelfridgeChoice choice = selfridge_d(n);
-    if (choice.d == 0) return composite("square");
-    if (choice.factor != 0) return composite("factor " + choice.factor.get_str());
+    if (choice.d == 0) return {composite("square")};
+    if (choice.factor != 0) return {composite("factor " + choice.factor.get_str())};
     mpz_class factor = 0;
-    if (!strong_lucas_probable_prime(m, choice.d, factor, cancel))
-      return composite(factor != 0 ? "factor " + factor.get_str() : "lucas D=" + std::to_string(choice.d));
-    return std::nullopt;
+    bool zero_at_last = false;
+    if (!strong_lucas_probable_prime(m, choice.d, factor, cancel, &zero_at_last))
+      return {composite(factor != 0 ? "factor " + factor.get_str() : "lucas D=" + std::to_string(choice.d))};
+    const long q = static_cast<long>((1 - choice.d) / 4);
+    return {std::nullopt, riesel_shape && zero_at_last && mpz_si_kronecker(q, n.get_mpz_t()) == -1};
   };
   switch (plan.kind) {
     case TestKind::trial: break;
@@ -173,12 +199,19 @@ TestOutcome test_big(const Number& number, const TestPlan& plan) {
       }
       return {Verdict::probable_prime, {}};
     case TestKind::lucas:
-      if (auto failed = lucas(modulus, nullptr)) return *failed;
+      if (auto outcome = lucas(modulus, nullptr); outcome.failure) return *outcome.failure;
       return {Verdict::probable_prime, {}};
     case TestKind::bpsw:
-      if (plan.split_bits && modulus.bits() >= plan.split_bits) return split_bpsw(modulus, lucas);
+      if (plan.split_bits && modulus.bits() >= plan.split_bits) return split_bpsw(modulus, lucas, riesel_shape);
+      if (riesel_shape) {
+        const LucasOutcome outcome = lucas(modulus, nullptr);
+        if (outcome.failure) return *outcome.failure;
+        if (outcome.proves_prime) return {Verdict::probable_prime, {}};
+        if (!strong_probable_prime(modulus, 2)) return composite(base_witness(2));
+        return {Verdict::probable_prime, {}};
+      }
       if (!strong_probable_prime(modulus, 2)) return composite(base_witness(2));
-      if (auto failed = lucas(modulus, nullptr)) return *failed;
+      if (auto outcome = lucas(modulus, nullptr); outcome.failure) return *outcome.failure;
       return {Verdict::probable_prime, {}};
   }
   return {Verdict::unknown, {}};

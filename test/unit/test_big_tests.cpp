@@ -206,3 +206,26 @@ TEST(Primality, TestNumberAgreesWithASieveAndWithGmpNear2To64) {
     ASSERT_EQ(v == Verdict::prime, mpz_probab_prime_p(z.get_mpz_t(), 40) != 0) << n;
   }
 }
+
+// k*2^n - 1 runs Lucas first and skips Miller-Rabin when Rodseth's criterion
+// proves primality: verdicts must still match GMP, with one or two threads,
+// and the witnesses of both must agree.
+TEST(Primality, RieselShapesMatchGmpSequentialAndSplit) {
+  TestPlan sequential, split;
+  split.split_bits = 64;
+  sequential.trial_bound = split.trial_bound = 0;
+  int primes = 0;
+  for (std::uint64_t k = 1; k < 1500; k += 2) {
+    for (std::uint64_t n : {64ULL, 89ULL, 127ULL, 200ULL}) {
+      const mpz_class N = kbnc(k, n, -1);
+      const Number number{N, KbncForm{k, 2, n, -1}};
+      const TestOutcome a = test_number(number, sequential), b = test_number(number, split);
+      const bool expected = mpz_probab_prime_p(N.get_mpz_t(), 40) != 0;
+      ASSERT_EQ(a.verdict == Verdict::probable_prime, expected) << k << "*2^" << n << "-1";
+      ASSERT_EQ(a.verdict, b.verdict) << k << "*2^" << n << "-1";
+      ASSERT_EQ(a.witness, b.witness) << k << "*2^" << n << "-1";
+      primes += expected;
+    }
+  }
+  EXPECT_GT(primes, 40);
+}
