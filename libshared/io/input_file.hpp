@@ -30,7 +30,6 @@ class InputFile {
 
   /// Location of the line last returned.
   Location where() const { return {name_, line_number_}; }
-  const std::string& name() const { return name_; }
   std::size_t line_number() const { return line_number_; }
 
   /// Bytes consumed and total size (0 when unknown, as for a pipe).

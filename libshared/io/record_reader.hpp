@@ -43,7 +43,6 @@ class RecordReader {
 
   /// Where the record last returned (or the error last thrown) came from.
   Location where() const;
-  InputFormat format() const { return format_; }
   /// Fraction of the current input consumed, or a negative value when unknown.
   double fraction_done() const;
 

@@ -15,8 +15,9 @@ namespace tk::primes {
 /// a^(N-1) == 1 (mod N). N odd, N > 3.
 bool fermat_probable_prime(const Modulus& N, const mpz_class& base);
 
-/// Miller-Rabin strong probable prime to `base`. N odd, N > 3. When
-/// `cancel` becomes true the test stops early (its result is then meaningless).
+/// Miller-Rabin strong probable prime to `base`. N odd, N > 3. With a
+/// special-form N, the test stops early when `cancel` becomes true (its
+/// result is then meaningless); GMP's mpz_powm, used otherwise, cannot stop.
 bool strong_probable_prime(const Modulus& N, const mpz_class& base, const std::atomic<bool>* cancel = nullptr);
 
 /// Result of choosing Selfridge's D for N.

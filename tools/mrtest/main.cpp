@@ -157,11 +157,14 @@ int main(int argc, char** argv) {
       return out;
     };
     auto work = [&](std::vector<Job>& batch) {
-      ++busy;
+      struct Busy {  // counted while the batch runs, even if it throws
+        std::atomic<unsigned>& count;
+        explicit Busy(std::atomic<unsigned>& c) : count(c) { ++count; }
+        ~Busy() { --count; }
+      } running(busy);
       std::vector<Outcome> outcomes;
       outcomes.reserve(batch.size());
       for (Job& job : batch) outcomes.push_back(test_one(job));
-      --busy;
       return outcomes;
     };
     auto emit = [&](std::vector<Outcome>& outcomes) {
