@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 namespace tk::cli {
 
@@ -14,7 +15,8 @@ class Progress {
   Progress(std::string tool, bool enabled);
   ~Progress();
   /// `done` items so far; `fraction` of the work done, negative if unknown.
-  void update(std::uint64_t done, double fraction = -1.0);
+  /// A non-empty `detail` replaces the "N done, R/s" part.
+  void update(std::uint64_t done, double fraction = -1.0, std::string_view detail = {});
   /// Clears the line.
   void finish();
 

@@ -236,7 +236,8 @@ Record newpgen_record(const NewPGenShape& shape, std::string_view line, std::siz
 struct AbcTemplate {
   std::string expression;           ///< placeholders lower-cased to $a..$z
   std::size_t variable_count = 0;   ///< values per data line: $a up to the highest letter used
-  std::optional<std::string> form;  ///< "twin" or "sg" for PFGW's &-joined pairs
+  std::optional<std::string> form;  ///< twin, sg, cc1 or cc2 for PFGW's &-joined members
+  std::uint64_t length = 2;         ///< members of the form
   std::string k_text, n_text;       ///< the form's k and n: a placeholder or digits
 };
 
@@ -271,6 +272,31 @@ bool match_pair(std::string_view first, std::string_view second, AbcTemplate& t)
   return false;
 }
 
+/// Sets t.form for a chain K*2^N+c & K*2^(N+1)+c & ... (one c, numeric
+/// exponents that run on by one, in any order), as sieve writes chains.
+bool match_chain(const std::vector<std::string>& parts, AbcTemplate& t) {
+  std::optional<std::pair<std::string, std::string>> first;
+  std::vector<std::uint64_t> exponents;
+  const std::string_view sign = std::string_view(parts.front()).substr(std::max<std::size_t>(parts.front().size(), 2) - 2);
+  if (sign != "-1" && sign != "+1") return false;
+  for (const std::string& part : parts) {
+    const auto kn = match_k2n(part, "", sign);
+    if (!kn || !all_digits(kn->second) || (first && kn->first != first->first)) return false;
+    const auto n = parse_u64(kn->second);
+    if (!n || *n > kMaxExponent) return false;
+    if (!first) first = kn;
+    exponents.push_back(*n);
+  }
+  std::sort(exponents.begin(), exponents.end());
+  for (std::size_t i = 1; i < exponents.size(); ++i)
+    if (exponents[i] != exponents[0] + i) return false;
+  t.form = sign == "+1" ? "cc2" : (parts.size() == 2 ? "sg" : "cc1");
+  t.length = parts.size();
+  t.k_text = first->first;
+  t.n_text = std::to_string(exponents[0]);
+  return true;
+}
+
 AbcTemplate parse_abc_expression(std::string_view text) {
   AbcTemplate t;
   int highest = -1;
@@ -297,13 +323,18 @@ AbcTemplate parse_abc_expression(std::string_view text) {
   t.variable_count = static_cast<std::size_t>(highest) + 1;
   if (t.expression.find('|') != std::string::npos)
     throw Error("abc headers joining expressions with '|' are not supported");
-  if (const auto amp = t.expression.find('&'); amp != std::string::npos) {
-    std::string first = t.expression.substr(0, amp), second = t.expression.substr(amp + 1);
-    for (std::string* part : {&first, &second}) std::erase_if(*part, [](char ch) { return ch == ' ' || ch == '\t'; });
-    if (second.find('&') != std::string::npos || !match_pair(first, second, t))
+  if (t.expression.find('&') != std::string::npos) {
+    std::vector<std::string> parts;
+    for (std::size_t start = 0, amp = 0; amp != std::string::npos; start = amp + 1) {
+      amp = t.expression.find('&', start);
+      parts.push_back(t.expression.substr(start, amp == std::string::npos ? amp : amp - start));
+      std::erase_if(parts.back(), [](char ch) { return ch == ' ' || ch == '\t'; });
+    }
+    const bool pair = parts.size() == 2 && match_pair(parts[0], parts[1], t);
+    if (!pair && (parts.size() > kMaxChainLength || !match_chain(parts, t)))
       throw Error("abc header " + quoted(text) +
-                  " joins expressions with '&'; only K*2^N+1 & K*2^N-1 (twin) and K*2^N-1 & 2*(K*2^N-1)+1"
-                  " (sophie germain) are supported");
+                  " joins expressions with '&'; only K*2^N+1 & K*2^N-1 (twin), K*2^N-1 & 2*(K*2^N-1)+1"
+                  " (sophie germain) and chains K*2^N+c & K*2^(N+1)+c & ... are supported");
   }
   t.expression = std::string(trim(t.expression));
   return t;
@@ -348,8 +379,8 @@ Record abc_record(const AbcTemplate& t, const std::vector<std::string>& values, 
   if (!t.form) return record_from_number_text(substitute(t.expression, values, max_bits), max_bits);
   const mpz_class k = parse_k(substitute(t.k_text, values, max_bits), max_bits);
   const std::uint64_t n = parse_n(substitute(t.n_text, values, max_bits));
-  check_size(k, 2, *t.form == "sg" ? n + 1 : n, max_bits);
-  return form_record(k, n, *t.form, 2);
+  check_size(k, 2, *t.form == "twin" ? n : n + t.length - 1, max_bits);
+  return form_record(k, n, *t.form, t.length);
 }
 
 // ---------------------------------------------------------------- the decoder

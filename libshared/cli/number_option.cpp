@@ -1,0 +1,67 @@
+/// @file number_option.cpp
+#include "cli/number_option.hpp"
+
+#include <charconv>
+#include <string>
+
+#include "io/error.hpp"
+
+namespace tk::cli {
+
+namespace {
+
+bool digits(std::string_view text, std::uint64_t& value) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string_view::npos) return false;
+  return std::from_chars(text.data(), text.data() + text.size(), value).ec == std::errc();
+}
+
+}  // namespace
+
+std::uint64_t parse_count(std::string_view text, std::string_view option) {
+  auto bad = [&](const std::string& why) {
+    return Error(std::string(option) + " '" + std::string(text.substr(0, 40)) + "' " + why);
+  };
+  const auto not_integer = [&] { return bad("is not a non-negative integer (digits, 1e9, 1.1e9 or 2^40)"); };
+  const auto overflow = [&] { return bad("does not fit in 64 bits"); };
+  if (text.starts_with('-')) throw bad("is negative");
+  const std::size_t operator_at = text.find_first_of("eE^");
+  std::uint64_t value = 0, exponent = 0;
+  if (operator_at == std::string_view::npos) {
+    if (!digits(text, value)) throw not_integer();
+    return value;
+  }
+  if (!digits(text.substr(operator_at + 1), exponent)) throw not_integer();
+  std::string_view mantissa = text.substr(0, operator_at);
+  if (text[operator_at] == '^') {
+    std::uint64_t base = 0;
+    if (!digits(mantissa, base)) throw not_integer();
+    value = 1;
+    for (std::uint64_t i = 0; i < exponent && value != 0 && base != 1; ++i) {
+      if (base > 1 && value > UINT64_MAX / base) throw overflow();
+      value *= base;
+    }
+    return value;
+  }
+  // A decimal mantissa: 1.1e9 is an integer, 1.25e1 is not.
+  std::string whole(mantissa.substr(0, mantissa.find('.')));
+  std::string fraction(mantissa.find('.') == std::string_view::npos ? "" : mantissa.substr(mantissa.find('.') + 1));
+  while (!fraction.empty() && fraction.back() == '0') fraction.pop_back();
+  if (whole.empty() || !digits(whole, value) || (!fraction.empty() && fraction.find_first_not_of("0123456789") != std::string::npos))
+    throw not_integer();
+  if (fraction.size() > exponent) throw bad("is not a whole number");
+  std::string all = whole + fraction + std::string(exponent - fraction.size(), '0');
+  if (exponent > 40 && value != 0) throw overflow();
+  if (!digits(all.substr(std::min(all.find_first_not_of('0'), all.size() - 1)), value)) throw overflow();
+  return value;
+}
+
+std::pair<std::uint64_t, std::uint64_t> parse_range(std::string_view text, std::string_view option) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string_view::npos) throw Error(std::string(option) + " '" + std::string(text.substr(0, 40)) + "' is not a range A:B");
+  const std::uint64_t low = parse_count(text.substr(0, colon), option);
+  const std::uint64_t high = parse_count(text.substr(colon + 1), option);
+  if (high < low) throw Error(std::string(option) + " range " + std::string(text.substr(0, 80)) + " is empty: its end is below its start");
+  return {low, high};
+}
+
+}  // namespace tk::cli

@@ -1,0 +1,19 @@
+/// @file number_option.hpp
+/// @brief Integer option values as prime hunters write them: 1000000000,
+/// 1e9, 2^40, and inclusive ranges A:B of those.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <utility>
+
+namespace tk::cli {
+
+/// A non-negative integer below 2^64: digits, "AeB" (A times 10^B) or
+/// "A^B". Throws Error naming `option` for anything else or an overflow.
+std::uint64_t parse_count(std::string_view text, std::string_view option);
+
+/// "A:B" with A <= B, each as parse_count reads it.
+std::pair<std::uint64_t, std::uint64_t> parse_range(std::string_view text, std::string_view option);
+
+}  // namespace tk::cli

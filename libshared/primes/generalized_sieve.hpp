@@ -1,0 +1,100 @@
+/// @file generalized_sieve.hpp
+/// @brief The generalized sieve of "Prime Hunting" (Farkas et al., after
+/// Jarai): removes every x whose candidate k*2^e+c, for any member of the
+/// form, has a prime factor up to the bound.
+///
+/// One bit per x marks the survivors. Primes up to kSmallPrimeBound sieve
+/// it segment by segment (256 KiB at a time, so it stays in cache); larger
+/// primes come in fixed blocks of the prime range, which worker threads
+/// sieve against the bitmap while the calling thread applies the removals
+/// in block order. That order makes the survivors, the factor list and the
+/// checkpoints the same whatever the thread count, and lets --shard K/N
+/// take every N-th block.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "primes/sieve_roots.hpp"
+#include "primes/sieve_spec.hpp"
+
+namespace tk::primes {
+
+/// p divides member `member` of the candidate at x = x_min + offset.
+struct SieveFactor {
+  std::uint64_t offset;
+  std::uint64_t p;
+  std::uint32_t member;
+};
+
+struct SieveControl {
+  unsigned threads = 1;
+  unsigned shard_index = 0;  ///< 0-based
+  unsigned shard_count = 1;
+  /// Called on the calling thread, in a fixed order, for every removal.
+  std::function<void(const SieveFactor&)> on_factor;
+  /// Checked before each block is started; true stops the run cleanly.
+  std::function<bool()> should_stop;
+  /// Called on the calling thread after each block's removals are applied.
+  std::function<void()> after_block;
+};
+
+class GeneralizedSieve {
+ public:
+  static constexpr std::uint64_t kSmallPrimeBound = std::uint64_t(1) << 20;
+  static constexpr std::uint64_t kBlockWidth = std::uint64_t(1) << 22;  ///< primes per block span this much
+  static constexpr std::uint64_t kSegmentBits = std::uint64_t(1) << 21;
+
+  explicit GeneralizedSieve(const SieveSpec& spec);
+
+  const SieveSpec& spec() const { return spec_; }
+  std::uint64_t survivors() const { return survivors_; }
+  std::uint64_t small_prime_bound() const { return small_bound_; }
+  std::uint64_t block_count() const { return block_count_; }
+  std::uint64_t next_block() const { return next_block_; }
+  bool small_primes_done() const { return small_done_; }
+  bool finished() const { return small_done_ && next_block_ >= block_count_; }
+  /// The largest prime whose removals are all applied (for this shard).
+  std::uint64_t sieved_to() const;
+  std::uint64_t block_low(std::uint64_t block) const { return small_bound_ + 1 + block * kBlockWidth; }
+  std::uint64_t block_high(std::uint64_t block) const;
+
+  const std::vector<std::uint64_t>& bitmap() const { return bits_; }
+  /// State from a checkpoint: the bitmap after the small primes and the blocks before next_block.
+  void restore(std::vector<std::uint64_t> bitmap, std::uint64_t next_block);
+
+  void sieve_small_primes(const SieveControl& control);
+  /// Sieves the remaining blocks of this shard; false when should_stop ended it early.
+  bool sieve_large_primes(const SieveControl& control);
+
+  /// Calls f(offset) for every surviving x = x_min + offset, in increasing order.
+  template <class F>
+  void for_each_survivor(F&& f) const {
+    for (std::size_t w = 0; w < bits_.size(); ++w)
+      for (std::uint64_t word = bits_[w]; word; word &= word - 1)
+        f(static_cast<std::uint64_t>(w) * 64 + static_cast<std::uint64_t>(__builtin_ctzll(word)));
+  }
+
+ private:
+  /// True when the candidate itself is p (only possible for small n): p is not its proper factor.
+  bool candidate_is(std::uint64_t offset, std::uint32_t member, std::uint64_t p) const;
+  std::vector<SieveFactor> sieve_segment(std::uint64_t segment, const std::vector<std::uint32_t>& primes,
+                                         const std::vector<std::uint64_t>& roots, bool record);
+  std::vector<SieveFactor> sieve_block(std::uint64_t block);
+  std::uint64_t count_survivors() const;
+
+  SieveSpec spec_;
+  SieveRootFinder roots_;
+  std::vector<SieveMember> members_;
+  std::uint64_t count_;
+  std::uint64_t small_bound_;
+  std::uint64_t block_count_;
+  bool small_exponents_;  ///< some member's exponent is below 64
+  std::vector<std::uint64_t> bits_;
+  std::uint64_t survivors_;
+  std::uint64_t next_block_ = 0;
+  bool small_done_ = false;
+};
+
+}  // namespace tk::primes

@@ -1,0 +1,165 @@
+/// @file sieve_checkpoint.cpp
+#include "primes/sieve_checkpoint.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "io/error.hpp"
+
+namespace tk::primes {
+
+namespace {
+
+constexpr std::string_view kMagic = "toolkit-sieve-checkpoint 1\n";
+
+std::uint64_t fnv1a(const std::string& bytes) {
+  std::uint64_t hash = 0xcbf29ce484222325ull;
+  for (unsigned char byte : bytes) hash = (hash ^ byte) * 0x100000001b3ull;
+  return hash;
+}
+
+void put_varint(std::string& out, std::uint64_t value) {
+  while (value >= 0x80) {
+    out += static_cast<char>((value & 0x7f) | 0x80);
+    value >>= 7;
+  }
+  out += static_cast<char>(value);
+}
+
+void put_u64(std::string& out, std::uint64_t value) {
+  for (int i = 0; i < 8; ++i) out += static_cast<char>((value >> (8 * i)) & 0xff);
+}
+
+class Reader {
+ public:
+  Reader(const std::string& bytes, std::size_t end, const std::string& path) : bytes_(bytes), end_(end), path_(path) {}
+  std::uint64_t u64() {
+    need(8);
+    std::uint64_t value = 0;
+    for (int i = 0; i < 8; ++i) value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes_[pos_ + i])) << (8 * i);
+    pos_ += 8;
+    return value;
+  }
+  std::uint64_t varint() {
+    std::uint64_t value = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      need(1);
+      const auto byte = static_cast<unsigned char>(bytes_[pos_++]);
+      value |= static_cast<std::uint64_t>(byte & 0x7f) << shift;
+      if (!(byte & 0x80)) return value;
+    }
+    throw damaged();
+  }
+  std::string line() {
+    const std::size_t end = bytes_.find('\n', pos_);
+    if (end == std::string::npos || end >= end_) throw damaged();
+    std::string text = bytes_.substr(pos_, end - pos_);
+    pos_ = end + 1;
+    return text;
+  }
+  Error damaged() const { return Error("checkpoint is damaged or not a sieve checkpoint", Location{path_, 0}); }
+
+ private:
+  void need(std::size_t count) {
+    if (end_ - pos_ < count) throw damaged();
+  }
+  const std::string& bytes_;
+  std::size_t end_, pos_ = 0;
+  const std::string& path_;
+};
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw Error(fmt::format("cannot {} the checkpoint: {}", what, std::strerror(errno)), Location{path, 0});
+}
+
+}  // namespace
+
+std::string checkpoint_identity(const SieveSpec& spec, unsigned shard_index, unsigned shard_count) {
+  return fmt::format("{} shard={}/{}", spec.identity(), shard_index + 1, shard_count);
+}
+
+void save_checkpoint(const std::string& path, const GeneralizedSieve& sieve, const std::string& identity,
+                     std::uint64_t factors_bytes) {
+  std::string bytes(kMagic);
+  bytes += identity + "\n";
+  put_u64(bytes, sieve.next_block());
+  put_u64(bytes, factors_bytes);
+  put_u64(bytes, sieve.survivors());
+  std::uint64_t previous = 0;
+  sieve.for_each_survivor([&](std::uint64_t offset) {
+    put_varint(bytes, offset - previous);
+    previous = offset;
+  });
+  put_u64(bytes, fnv1a(bytes));
+
+  const std::string temporary = path + ".tmp";
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail(temporary, "create");
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (wrote < 0 && errno == EINTR) continue;
+    if (wrote <= 0) { ::close(fd); fail(temporary, "write"); }
+    done += static_cast<std::size_t>(wrote);
+  }
+  if (::fsync(fd) != 0) { ::close(fd); fail(temporary, "sync"); }
+  if (::close(fd) != 0) fail(temporary, "close");
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail(path, "rename into place");
+  // The rename itself is durable once the directory is synced.
+  std::string directory = std::filesystem::path(path).parent_path().string();
+  const int dir = ::open(directory.empty() ? "." : directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
+  }
+}
+
+std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const std::string& identity,
+                                               std::uint64_t candidate_count) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) {
+    if (errno == ENOENT) return std::nullopt;
+    fail(path, "open");
+  }
+  std::string bytes;
+  char chunk[65536];
+  for (std::size_t got; (got = std::fread(chunk, 1, sizeof chunk, file)) > 0;) bytes.append(chunk, got);
+  const bool read_error = std::ferror(file) != 0;
+  std::fclose(file);
+  if (read_error) fail(path, "read");
+
+  Reader whole(bytes, bytes.size(), path);
+  if (bytes.size() < kMagic.size() + 8 || bytes.compare(0, kMagic.size(), kMagic) != 0) throw whole.damaged();
+  std::uint64_t stored = 0;
+  for (std::size_t i = 0; i < 8; ++i)
+    stored |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[bytes.size() - 8 + i])) << (8 * i);
+  if (stored != fnv1a(bytes.substr(0, bytes.size() - 8))) throw whole.damaged();
+
+  Reader in(bytes, bytes.size() - 8, path);
+  in.line();  // magic
+  SieveCheckpoint checkpoint;
+  checkpoint.identity = in.line();
+  if (checkpoint.identity != identity)
+    throw Error(fmt::format("checkpoint was written for other parameters ({}); this run is {}", checkpoint.identity, identity),
+                Location{path, 0});
+  checkpoint.next_block = in.u64();
+  checkpoint.factors_bytes = in.u64();
+  const std::uint64_t survivors = in.u64();
+  if (survivors > candidate_count) throw in.damaged();
+  checkpoint.bitmap.assign((candidate_count + 63) / 64, 0);
+  std::uint64_t offset = 0;
+  for (std::uint64_t i = 0; i < survivors; ++i) {
+    const std::uint64_t gap = in.varint();
+    if (gap > candidate_count || (i > 0 && gap == 0) || (offset += gap) >= candidate_count) throw in.damaged();
+    checkpoint.bitmap[offset / 64] |= std::uint64_t(1) << (offset % 64);
+  }
+  return checkpoint;
+}
+
+}  // namespace tk::primes

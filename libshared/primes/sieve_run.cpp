@@ -1,0 +1,140 @@
+/// @file sieve_run.cpp
+#include "primes/sieve_run.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "cli/progress.hpp"
+#include "io/error.hpp"
+#include "primes/sieve_checkpoint.hpp"
+#include "primes/sieve_output.hpp"
+
+namespace tk::primes {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// Roughly pi(x), for the progress fraction.
+double prime_count_estimate(std::uint64_t x) {
+  const double value = static_cast<double>(std::max<std::uint64_t>(x, 3));
+  return value / std::log(value);
+}
+
+/// The factors file, truncated to where the checkpoint left it on resume.
+class FactorsFile {
+ public:
+  FactorsFile(const std::string& path, std::uint64_t keep_bytes, bool resume) : path_(path) {
+    if (path.empty()) return;
+    file_ = std::fopen(path.c_str(), resume ? "r+" : "w");
+    if (!file_ && resume && errno == ENOENT) file_ = std::fopen(path.c_str(), "w");
+    if (!file_) throw Error(fmt::format("cannot open the factors file: {}", std::strerror(errno)), Location{path, 0});
+    if (resume) {
+      std::fseek(file_, 0, SEEK_END);
+      const long size = std::ftell(file_);
+      if (size < 0 || static_cast<std::uint64_t>(size) < keep_bytes)
+        throw Error(fmt::format("the factors file is shorter ({} bytes) than the checkpoint recorded ({})", size, keep_bytes),
+                    Location{path, 0});
+      if (::ftruncate(fileno(file_), static_cast<off_t>(keep_bytes)) != 0 || std::fseek(file_, 0, SEEK_END) != 0)
+        throw Error(fmt::format("cannot truncate the factors file: {}", std::strerror(errno)), Location{path, 0});
+    }
+  }
+  ~FactorsFile() {
+    if (file_) std::fclose(file_);
+  }
+  explicit operator bool() const { return file_ != nullptr; }
+  void write(const std::string& line) {
+    if (std::fputs(line.c_str(), file_) < 0 || std::fputc('\n', file_) < 0) fail("write");
+  }
+  /// Flushes and syncs; the byte count a checkpoint may record.
+  std::uint64_t sync() {
+    if (!file_) return 0;
+    if (std::fflush(file_) != 0 || ::fsync(fileno(file_)) != 0) fail("write");
+    return static_cast<std::uint64_t>(std::ftell(file_));
+  }
+
+ private:
+  [[noreturn]] void fail(const char* what) {
+    throw Error(fmt::format("cannot {} the factors file: {}", what, std::strerror(errno)), Location{path_, 0});
+  }
+  std::string path_;
+  std::FILE* file_ = nullptr;
+};
+
+}  // namespace
+
+SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& options,
+                          const std::function<void(const std::string&)>& warn) {
+  const SieveSpec& spec = sieve.spec();
+  const std::string identity = checkpoint_identity(spec, options.shard_index, options.shard_count);
+  std::uint64_t factors_bytes = 0;
+  bool resumed = false;
+  if (options.resume) {
+    if (options.checkpoint_path.empty()) throw UsageError("--resume needs --checkpoint FILE");
+    if (auto checkpoint = load_checkpoint(options.checkpoint_path, identity, spec.count())) {
+      sieve.restore(std::move(checkpoint->bitmap), checkpoint->next_block);
+      factors_bytes = checkpoint->factors_bytes;
+      resumed = true;
+    } else {
+      warn("no checkpoint at " + options.checkpoint_path + ": starting from the beginning");
+    }
+  }
+  FactorsFile factors(options.factors_path, factors_bytes, resumed);
+
+  auto save = [&] {
+    if (!options.checkpoint_path.empty()) save_checkpoint(options.checkpoint_path, sieve, identity, factors.sync());
+  };
+  SieveControl control;
+  control.threads = options.threads;
+  control.shard_index = options.shard_index;
+  control.shard_count = options.shard_count;
+  if (factors) control.on_factor = [&](const SieveFactor& factor) { factors.write(factor_line(spec, factor)); };
+
+  SieveRunOutcome outcome;
+  cli::Progress progress("sieve", options.progress);
+  const auto started = Clock::now();
+  auto last_save = started, window_start = started;
+  std::uint64_t window_survivors = sieve.survivors();
+  const double total = prime_count_estimate(spec.p_max);
+  control.should_stop = [&] {
+    return outcome.rate_stopped || (options.stop_signal && options.stop_signal->load() != 0);
+  };
+  control.after_block = [&] {
+    const auto now = Clock::now();
+    const double window = std::chrono::duration<double>(now - window_start).count();
+    const double rate = window > 0 ? static_cast<double>(window_survivors - sieve.survivors()) / window : 0.0;
+    if (options.min_rate > 0 && window >= options.rate_window_seconds) {
+      if (rate < options.min_rate) outcome.rate_stopped = true;
+      window_start = now;
+      window_survivors = sieve.survivors();
+    }
+    if (!options.checkpoint_path.empty() && std::chrono::duration<double>(now - last_save).count() >= options.checkpoint_seconds) {
+      save();
+      last_save = now;
+    }
+    if (options.progress) {
+      const double done = prime_count_estimate(sieve.sieved_to()) / total;
+      progress.update(sieve.survivors(), done,
+                      fmt::format("p = {}, {} left, {:.0f} removed/s, {:.1f}%, eta {:.0f} s", sieve.sieved_to(),
+                                  sieve.survivors(), rate, 100 * done, seconds_since(started) * (1 - done) / std::max(done, 1e-9)));
+    }
+  };
+  if (!sieve.small_primes_done()) sieve.sieve_small_primes(control);
+  outcome.finished = sieve.sieve_large_primes(control);
+  progress.finish();
+  save();
+  outcome.depth = outcome.finished ? spec.p_max : sieve.sieved_to();
+  return outcome;
+}
+
+}  // namespace tk::primes
