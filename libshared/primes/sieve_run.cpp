@@ -23,8 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
 /// Roughly pi(x), for the progress fraction.
 double prime_count_estimate(std::uint64_t x) {
   const double value = static_cast<double>(std::max<std::uint64_t>(x, 3));
@@ -125,8 +123,7 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
     if (options.progress) {
       const double done = prime_count_estimate(sieve.sieved_to()) / total;
       progress.update(sieve.survivors(), done,
-                      fmt::format("p = {}, {} left, {:.0f} removed/s, {:.1f}%, eta {:.0f} s", sieve.sieved_to(),
-                                  sieve.survivors(), rate, 100 * done, seconds_since(started) * (1 - done) / std::max(done, 1e-9)));
+                      fmt::format("p = {}, {} left, {:.0f} removed/s", sieve.sieved_to(), sieve.survivors(), rate));
     }
   };
   if (!sieve.small_primes_done()) sieve.sieve_small_primes(control);

@@ -180,21 +180,21 @@ int main(int argc, char** argv) {
   for (const Named& named : forms) {
     CLI::App* sub = app.add_subcommand(named.name, std::string("sieve ") + named.help);
     FormOptions& o = form_options;
-    sub->add_option("--n", o.n, "the exponent n")->required();
-    sub->add_option("--k", o.k, "plain k range A:B (NewPGen's)");
-    sub->add_option("--h0", o.h0, "k = h0 + c*x (the seed's parametrisation)");
-    sub->add_option("--c", o.c, "step of k per x, usually a primorial");
-    sub->add_option("--x", o.x, "x range A:B for k = h0 + c*x");
-    sub->add_option("--pmax", o.pmax, "sieve with every prime up to this bound")->required();
+    sub->add_option("--n", o.n, "the exponent n")->required()->type_name("N");
+    sub->add_option("--k", o.k, "plain k range A:B (NewPGen's)")->type_name("A:B");
+    sub->add_option("--h0", o.h0, "k = h0 + c*x (the seed's parametrisation)")->type_name("H");
+    sub->add_option("--c", o.c, "step of k per x, usually a primorial")->type_name("C");
+    sub->add_option("--x", o.x, "x range A:B for k = h0 + c*x")->type_name("A:B");
+    sub->add_option("--pmax", o.pmax, "sieve with every prime up to this bound")->required()->type_name("P");
     if (named.form == tk::primes::SieveForm::cc1 || named.form == tk::primes::SieveForm::cc2)
-      sub->add_option("--length", o.length, "chain length (2 to 64)")->capture_default_str();
-    sub->add_option("--min-rate", o.min_rate, "stop early once fewer than this many candidates per second are removed");
-    sub->add_option("--rate-window", o.rate_window, "seconds over which --min-rate is measured")->capture_default_str();
-    sub->add_option("--factors", o.factors, "append 'p | k*2^n+-1' for every removal to FILE");
-    sub->add_option("--checkpoint", o.checkpoint, "save the state to FILE every few minutes and on SIGINT/SIGTERM");
-    sub->add_option("--checkpoint-every", o.checkpoint_seconds, "seconds between checkpoints")->capture_default_str();
+      sub->add_option("--length", o.length, "chain length (2 to 64)")->capture_default_str()->type_name("L");
+    sub->add_option("--min-rate", o.min_rate, "stop early once fewer than this many candidates per second are removed")->type_name("R");
+    sub->add_option("--rate-window", o.rate_window, "seconds over which --min-rate is measured")->capture_default_str()->type_name("S");
+    sub->add_option("--factors", o.factors, "append 'p | k*2^n+-1' for every removal to FILE")->type_name("FILE");
+    sub->add_option("--checkpoint", o.checkpoint, "save the state to FILE every few minutes and on SIGINT/SIGTERM")->type_name("FILE");
+    sub->add_option("--checkpoint-every", o.checkpoint_seconds, "seconds between checkpoints")->capture_default_str()->type_name("S");
     sub->add_flag("--resume", o.resume, "continue from the --checkpoint FILE (start afresh when it does not exist)");
-    sub->add_option("--shard", o.shard, "sieve only block K of every N blocks of large primes (K/N)")->capture_default_str();
+    sub->add_option("--shard", o.shard, "sieve only block K of every N blocks of large primes (K/N)")->capture_default_str()->type_name("K/N");
     sub->add_flag("--riesel-condition", o.riesel_condition,
                   "require the seed's Riesel conditions on every k*2^e-1 member (k odd, k < 2^e, (13/N) = -1)");
     auto* newpgen = sub->add_flag("--newpgen", o.newpgen, "write a NewPGen file (LLR and PFGW read it)");
