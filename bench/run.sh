@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Runs the benchmarks that `make bench` built and prints a summary table.
-# Builds nothing. Usage: bench/run.sh [bench_u64 bench_kbnc bench_generic]
+# Builds nothing. Usage: bench/run.sh [bench_u64 bench_kbnc bench_generic bench_sieve]
+# (bench_sieve is the script bench/bench_sieve.sh; it times the sieve tool
+# against the primesieve command and prints FIGURE lines where no peer runs here)
 # Environment: BUILD_DIR (default: build), BENCH_REPEATS (default 5; 3 for
 # bench_kbnc), BENCH_U64_REPEATS / BENCH_KBNC_REPEATS / BENCH_GENERIC_REPEATS
 # per benchmark, BENCH_GP (the gp binary), BENCH_STRICT=1 to exit 1 when a
@@ -10,16 +12,20 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
 benches=("$@")
-[ ${#benches[@]} -gt 0 ] || benches=(bench_u64 bench_kbnc bench_generic)
+[ ${#benches[@]} -gt 0 ] || benches=(bench_u64 bench_kbnc bench_generic bench_sieve)
 
 command -v "${BENCH_GP:-gp}" >/dev/null || { echo "run.sh: PARI/GP's gp not found (make bench-deps)" >&2; exit 2; }
 
 results=$(mktemp)
 trap 'rm -f "$results"' EXIT
 for name in "${benches[@]}"; do
-  bin=$build/bench/$name
-  [ -x "$bin" ] || bin=$(command -v "$name") || { echo "run.sh: $name not built (make bench)" >&2; exit 2; }
-  if ! "$bin" | tee -a "$results"; then
+  if [ -f "$root/bench/$name.sh" ]; then
+    bin=("bash" "$root/bench/$name.sh")
+  else
+    bin=("$build/bench/$name")
+    [ -x "${bin[0]}" ] || bin=("$(command -v "$name")") || { echo "run.sh: $name not built (make bench)" >&2; exit 2; }
+  fi
+  if ! BUILD_DIR="$build" "${bin[@]}" | tee -a "$results"; then
     echo "run.sh: $name FAILED" >&2
     exit 2
   fi
@@ -36,5 +42,10 @@ summary=$(awk '$1 == "RESULT" {
 echo "Summary (medians; ratio = peer time / our time, > 1 means we are faster)"
 printf "%-14s %11s %11s %9s %7s %5s   %s\n" benchmark "ours" "peer" ratio goal runs result
 echo "$summary"
+if grep -q '^FIGURE' "$results"; then
+  echo
+  echo "Figures without a peer in the same run"
+  grep '^FIGURE' "$results" | cut -d' ' -f2-
+fi
 if [ "$all_met" = 0 ] && [ "${BENCH_STRICT:-0}" = 1 ]; then exit 1; fi
 exit 0

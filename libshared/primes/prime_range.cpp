@@ -44,6 +44,12 @@ std::vector<std::uint64_t> primes_between(std::uint64_t a, std::uint64_t b) {
   return primes;
 }
 
+std::vector<std::uint32_t> primes_between_32(std::uint32_t a, std::uint32_t b) {
+  std::vector<std::uint32_t> primes;
+  primesieve::generate_primes(a, b, &primes);
+  return primes;
+}
+
 void prime_lines_between(std::uint64_t a, std::uint64_t b, unsigned threads,
                          const std::function<void(std::string_view)>& emit) {
   struct Chunk {

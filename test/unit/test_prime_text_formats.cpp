@@ -297,6 +297,17 @@ TEST(AbcText, TwinPairsMapToTwinForm) {
   EXPECT_EQ(fixed_n.records.at(0), form_record(4, 1000, "twin"));
 }
 
+TEST(AbcText, ChainsAsSieveWritesThem) {
+  EXPECT_EQ(decode_text("ABC $a*2^10-1 & $a*2^11-1 & $a*2^12-1 // Sieved to 99\n153\n").records.at(0),
+            form_record(153, 10, "cc1", 3));
+  EXPECT_EQ(decode_text("ABC $a*2^11+1 & $a*2^10+1\n39\n").records.at(0), form_record(39, 10, "cc2", 2));
+  EXPECT_EQ(decode_text("ABC $a*2^10-1 & $a*2^11-1\n141\n").records.at(0), form_record(141, 10, "sg"));
+  EXPECT_EQ(decode_text("ABCD $a*2^7+1 & $a*2^8+1 & $a*2^9+1 [3]\n2\n").records.at(1), form_record(5, 7, "cc2", 3));
+  for (const char* header : {"ABC $a*2^10-1 & $a*2^12-1", "ABC $a*2^10-1 & $a*2^11+1 & $a*2^12-1",
+                             "ABC $a*2^10-1 & $b*2^11-1", "ABC $a*2^10-1 & $a*2^10-1"})
+    EXPECT_EQ(only_error(std::string(header) + "\n").first, 1u) << header;
+}
+
 TEST(AbcText, OtherCombinationsAreRejected) {
   for (const char* header : {"ABC $a*2^$b+1 | $a*2^$b-1", "ABC $a*2^$b+1 & $a*2^$b+3", "ABC $a*2^$b+1 & $a*3^$b-1",
                              "ABC $a*2^$b+1 & $a*2^$b-1 & $a*2^($b+1)-1", "ABC $a*2^$b+1 & $c*2^$b-1",
