@@ -91,15 +91,16 @@ void GeneralizedSieve::sieve_small_primes(const SieveControl& control) {
   primesieve::generate_primes(3, small_bound_, &wide_primes);
   std::vector<std::uint64_t> roots(wide_primes.size() * members_.size());
   roots_.find(wide_primes.data(), wide_primes.size(), roots.data());
-  const std::vector<std::uint32_t> primes(wide_primes.begin(), wide_primes.end());
+  const std::vector<std::uint32_t> primes(wide_primes.begin(), wide_primes.end());  // below 2^20: halves the cache use
 
   const bool record = static_cast<bool>(control.on_factor);
   const std::uint64_t segments = (count_ + kSegmentBits - 1) / kSegmentBits;
-  std::uint64_t job = 0;
+  std::uint64_t job = 0, done = 0;
   OrderedPool<std::uint64_t, std::vector<SieveFactor>> pool(
       control.threads, [&](std::uint64_t& segment) { return sieve_segment(segment, primes, roots, record); },
       [&](std::vector<SieveFactor>& factors) {
         for (const SieveFactor& factor : factors) control.on_factor(factor);
+        if (control.after_segment) control.after_segment(++done, segments);
       },
       2 * static_cast<std::size_t>(control.threads));
   for (; job < segments; ++job) pool.submit(job);

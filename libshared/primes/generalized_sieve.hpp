@@ -38,6 +38,8 @@ struct SieveControl {
   std::function<bool()> should_stop;
   /// Called on the calling thread after each block's removals are applied.
   std::function<void()> after_block;
+  /// Called on the calling thread as small-prime segments finish (done, total).
+  std::function<void(std::uint64_t, std::uint64_t)> after_segment;
 };
 
 class GeneralizedSieve {

@@ -126,6 +126,10 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
                       fmt::format("p = {}, {} left, {:.0f} removed/s", sieve.sieved_to(), sieve.survivors(), rate));
     }
   };
+  if (options.progress)
+    control.after_segment = [&](std::uint64_t done, std::uint64_t segments) {
+      progress.update(done, static_cast<double>(done) / static_cast<double>(segments), fmt::format("primes up to {}: segment {} of {}", sieve.small_prime_bound(), done, segments));
+    };
   if (!sieve.small_primes_done()) sieve.sieve_small_primes(control);
   outcome.finished = sieve.sieve_large_primes(control);
   progress.finish();
