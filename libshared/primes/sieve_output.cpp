@@ -172,7 +172,6 @@ ShardFile read_shard(const std::string& path) {
         shard.kind = TextKind::json_lines;
       } else if (line.starts_with("ABCD ")) {
         shard.kind = TextKind::abcd;
-        std::string header_key;
         split_sieved_to(line, shard, where);
         const auto open = shard.header_key.rfind(" ["), close = shard.header_key.rfind(']');
         if (open == std::string::npos || close == std::string::npos || close < open)
