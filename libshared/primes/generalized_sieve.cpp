@@ -8,6 +8,7 @@
 #include <bit>
 
 #include "concurrency/ordered_pool.hpp"
+#include "io/error.hpp"
 
 namespace tk::primes {
 
@@ -38,6 +39,8 @@ std::uint64_t GeneralizedSieve::sieved_to() const {
 }
 
 void GeneralizedSieve::restore(std::vector<std::uint64_t> bitmap, std::uint64_t next_block) {
+  if (next_block > block_count_ || bitmap.size() != bits_.size())
+    throw Error("checkpoint does not fit this run (its block of primes or its candidate count is out of range)");
   bits_ = std::move(bitmap);
   next_block_ = next_block;
   small_done_ = true;

@@ -64,6 +64,7 @@ class Reader {
     pos_ = end + 1;
     return text;
   }
+  bool at_end() const { return pos_ == end_; }
   Error damaged() const { return Error("checkpoint is damaged or not a sieve checkpoint", Location{path_, 0}); }
 
  private:
@@ -159,6 +160,7 @@ std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const st
     if (gap > candidate_count || (i > 0 && gap == 0) || (offset += gap) >= candidate_count) throw in.damaged();
     checkpoint.bitmap[offset / 64] |= std::uint64_t(1) << (offset % 64);
   }
+  if (!in.at_end()) throw in.damaged();
   return checkpoint;
 }
 

@@ -138,14 +138,13 @@ struct ShardFile {
   TextKind kind = TextKind::json_lines;
   std::string header_key;               ///< the header without its depth
   std::optional<std::uint64_t> depth;   ///< sieve bound the header records
-  std::string header_tail;              ///< ABC/ABCD text after the depth (normally empty)
   std::vector<std::string> lines;       ///< candidate lines (ABCD: k values in decimal)
 };
 
 std::uint64_t parse_depth(std::string_view text, const Location& where) {
   std::uint64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end == text.data()) throw Error("the sieve depth '" + std::string(text) + "' is not a number", where);
+  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) throw Error("the sieve depth '" + std::string(text) + "' is not a number", where);
   return value;
 }
 
@@ -176,9 +175,9 @@ ShardFile read_shard(const std::string& path) {
         const auto open = shard.header_key.rfind(" ["), close = shard.header_key.rfind(']');
         if (open == std::string::npos || close == std::string::npos || close < open)
           throw Error("abcd header without a [k] start value", where);
-        const std::string k0 = shard.header_key.substr(open + 2, close - open - 2);
-        previous_k = parse_depth(k0, where);
-        shard.lines.push_back(k0);
+        previous_k = parse_depth(std::string_view(shard.header_key).substr(open + 2, close - open - 2), where);
+        if (close + 1 != shard.header_key.size()) throw Error("abcd header has text after its [k] start value", where);
+        shard.lines.push_back(std::to_string(*previous_k));
         shard.header_key.erase(open);
         continue;
       } else if (line.starts_with("ABC ")) {
@@ -215,25 +214,24 @@ void merge_sieve_outputs(const std::vector<std::string>& files, std::FILE* out) 
   if (files.empty()) throw UsageError("merge needs at least one shard output");
   std::vector<ShardFile> shards;
   for (const std::string& path : files) shards.push_back(read_shard(path));
-  const ShardFile& first = shards.front();
-  std::optional<std::uint64_t> depth = first.depth;
+  // An empty file is a shard without survivors, whatever format the run wrote:
+  // the headers of the others must agree with the first that has content.
+  auto has_content = [](const ShardFile& shard) { return !shard.header_key.empty() || !shard.lines.empty(); };
+  const auto model_at = std::find_if(shards.begin(), shards.end(), has_content);
+  const ShardFile* model = model_at == shards.end() ? &shards.front() : &*model_at;
+  const std::string& model_path = files[static_cast<std::size_t>(model - shards.data())];
+  std::optional<std::uint64_t> depth;
   std::unordered_map<std::string_view, std::size_t> seen;
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const ShardFile& shard = shards[i];
-    const bool empty_abcd = shard.kind == TextKind::abcd && shard.lines.empty();
-    if (i > 0 && !empty_abcd && !(first.kind == TextKind::abcd && first.lines.empty()) &&
-        (shard.kind != first.kind || shard.header_key != first.header_key))
-      throw Error("its header does not match " + files.front() + "'s: not a shard of the same run", Location{files[i], 1});
+    if (has_content(shard) && (shard.kind != model->kind || shard.header_key != model->header_key))
+      throw Error("its header does not match " + model_path + "'s: not a shard of the same run", Location{files[i], 1});
     if (shard.depth) depth = depth ? std::min(*depth, *shard.depth) : *shard.depth;
     for (const std::string& line : shard.lines) {
       auto [it, inserted] = seen.try_emplace(line, 0);
       if (it->second == i) ++it->second;  // counts each line once per file
     }
   }
-  // The shard of the lowest index with content names the format.
-  const ShardFile* model = &first;
-  for (const ShardFile& shard : shards)
-    if (!shard.header_key.empty() || !shard.lines.empty()) { model = &shard; break; }
 
   fmt::memory_buffer buffer;
   auto kept = [&](const std::string& line) { return seen[line] == shards.size(); };

@@ -80,7 +80,11 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
   if (options.resume) {
     if (options.checkpoint_path.empty()) throw UsageError("--resume needs --checkpoint FILE");
     if (auto checkpoint = load_checkpoint(options.checkpoint_path, identity, spec.count())) {
-      sieve.restore(std::move(checkpoint->bitmap), checkpoint->next_block);
+      try {
+        sieve.restore(std::move(checkpoint->bitmap), checkpoint->next_block);
+      } catch (const Error& e) {
+        throw Error(e.what(), Location{options.checkpoint_path, 0});
+      }
       factors_bytes = checkpoint->factors_bytes;
       resumed = true;
     } else {

@@ -358,6 +358,15 @@ TEST_F(SieveFiles, MergeOfShardsEqualsOneRun) {
     std::fclose(out);
     EXPECT_EQ(slurp(path("merged")), expected) << static_cast<int>(format);
   }
+  // A shard without survivors writes an empty file in JSON Lines and ABCD.
+  std::ofstream(path("empty")).flush();
+  std::ofstream(path("abcd")) << "ABCD $a*2^5+1 & $a*2^5-1 [6] // Sieved to 1000\n30\n";
+  for (const auto& files : {std::vector<std::string>{path("empty"), path("abcd")}, {path("abcd"), path("empty")}}) {
+    std::FILE* merged = std::fopen(path("merged").c_str(), "wb");
+    merge_sieve_outputs(files, merged);
+    std::fclose(merged);
+    EXPECT_EQ(slurp(path("merged")), "");
+  }
   std::ofstream(path("other")) << "1000:M:1:2:2\n3 5\n";
   std::ofstream(path("mine")) << "1000:T:0:2:3\n3 5\n";
   std::FILE* out = std::fopen(path("merged").c_str(), "wb");
