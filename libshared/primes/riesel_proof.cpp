@@ -1,0 +1,144 @@
+/// @file riesel_proof.cpp
+#include "primes/riesel_proof.hpp"
+
+#include "io/error.hpp"
+#include "primes/modulus.hpp"
+
+namespace tk::primes {
+
+namespace {
+
+constexpr std::uint64_t kMaxParameter = 1000;
+
+mpz_class kbnc(std::uint64_t k, std::uint64_t n, int c) {
+  mpz_class value = k;
+  value <<= static_cast<mp_bitcnt_t>(n);
+  return value + c;
+}
+
+int jacobi(std::int64_t a, const mpz_class& N) {
+  const mpz_class top = a;
+  return mpz_jacobi(top.get_mpz_t(), N.get_mpz_t());
+}
+
+/// Squares `value` (|value| < N) m times modulo N, subtracting `minus` each
+/// time; reports and honours cancellation between rounds.
+bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
+  mpz_class square;
+  for (; state.iteration < last; ++state.iteration) {
+    if (options.report_every && state.iteration % options.report_every == 0 && state.iteration) {
+      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return false;
+      if (options.progress) {
+        N.reduce(state.value.get_mpz_t());
+        if (!options.progress(state)) return false;
+      }
+    }
+    mpz_mul(square.get_mpz_t(), state.value.get_mpz_t(), state.value.get_mpz_t());
+    if (minus) mpz_sub_ui(square.get_mpz_t(), square.get_mpz_t(), static_cast<unsigned long>(minus));
+    N.remainder(state.value.get_mpz_t(), square.get_mpz_t());
+  }
+  N.reduce(state.value.get_mpz_t());
+  return true;
+}
+
+std::uint64_t low_64_bits(const mpz_class& value) {
+  std::uint64_t low = 0;
+  for (std::size_t limb = 0; limb * GMP_NUMB_BITS < 64 && limb < mpz_size(value.get_mpz_t()); ++limb)
+    low |= static_cast<std::uint64_t>(mpz_getlimbn(value.get_mpz_t(), static_cast<mp_size_t>(limb))) << (limb * GMP_NUMB_BITS);
+  return low;
+}
+
+void check_form(std::uint64_t k, std::uint64_t n, std::uint64_t min_n) {
+  if (k % 2 == 0 || k == 0) throw Error("k must be odd and positive");
+  if (n < min_n) throw Error("n must be at least " + std::to_string(min_n));
+  if (n < 64 && k >= (std::uint64_t(1) << n)) throw Error("k must be below 2^n");
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> llr_parameter(std::uint64_t k, std::uint64_t n, LlrStart start) {
+  const mpz_class N = kbnc(k, n, -1);
+  if (start == LlrStart::d13) {
+    if (jacobi(13, N) == -1) return 11;
+    return std::nullopt;
+  }
+  if (k % 3 != 0) return 4;  // (3/N) = -1 whenever 3 does not divide N (n >= 2)
+  for (std::uint64_t p = 3; p <= kMaxParameter; ++p)
+    if (jacobi(static_cast<std::int64_t>(p) - 2, N) == 1 && jacobi(static_cast<std::int64_t>(p) + 2, N) == -1) return p;
+  return std::nullopt;
+}
+
+ProofResult llr_prove(std::uint64_t k, std::uint64_t n, LlrStart start, const ProofOptions& options) {
+  check_form(k, n, 2);
+  const mpz_class value = kbnc(k, n, -1);
+  const Modulus N(value, SpecialForm{k, n, -1});
+  ProofResult result;
+  const auto parameter = llr_parameter(k, n, start);
+  if (!parameter) {
+    if (start == LlrStart::d13) throw Error("(13/N) is not -1, so the seed's D = 13 start does not apply");
+    result.verdict = Verdict::composite;  // no P up to the bound: N is a square or has a small factor
+    return result;
+  }
+  result.parameter = *parameter;
+  ProofState state;
+  if (options.resume_from) {
+    state = *options.resume_from;
+  } else {
+    // u_0 = V_k(P): the ladder keeps (V_m, V_m+1), doubling m bit by bit.
+    mpz_class low = 2, high = *parameter, product;
+    for (int bit = 63 - __builtin_clzll(k); bit >= 0; --bit) {
+      product = low * high - static_cast<long>(*parameter);
+      if ((k >> bit) & 1) {
+        low = product;
+        high = high * high - 2;
+      } else {
+        high = product;
+        low = low * low - 2;
+      }
+      N.reduce(low.get_mpz_t());
+      N.reduce(high.get_mpz_t());
+    }
+    state.value = low;
+  }
+  if (!square_rounds(N, state, n - 2, 2, options)) return result;
+  result.iterations = state.iteration;
+  result.res64 = low_64_bits(state.value);
+  result.verdict = state.value == 0 ? Verdict::prime : Verdict::composite;
+  return result;
+}
+
+std::optional<std::uint64_t> proth_base(std::uint64_t k, std::uint64_t n) {
+  const mpz_class N = kbnc(k, n, +1);
+  for (std::uint64_t a = 3; a <= kMaxParameter; ++a)
+    if (jacobi(static_cast<std::int64_t>(a), N) == -1) return a;
+  return std::nullopt;
+}
+
+ProofResult proth_prove(std::uint64_t k, std::uint64_t n, const ProofOptions& options) {
+  check_form(k, n, 1);
+  const mpz_class value = kbnc(k, n, +1);
+  const Modulus N(value, SpecialForm{k, n, +1});
+  ProofResult result;
+  const auto base = proth_base(k, n);
+  if (!base) {
+    result.verdict = Verdict::composite;
+    return result;
+  }
+  result.parameter = *base;
+  ProofState state;
+  if (options.resume_from) {
+    state = *options.resume_from;
+  } else {
+    mpz_class power;
+    const mpz_class a = *base, exponent = k;
+    mpz_powm(power.get_mpz_t(), a.get_mpz_t(), exponent.get_mpz_t(), value.get_mpz_t());  // a^k: k has 64 bits at most
+    state.value = power;
+  }
+  if (!square_rounds(N, state, n - 1, 0, options)) return result;  // a^(k*2^(n-1))
+  result.iterations = state.iteration;
+  result.res64 = low_64_bits(state.value);
+  result.verdict = state.value == value - 1 ? Verdict::prime : Verdict::composite;
+  return result;
+}
+
+}  // namespace tk::primes

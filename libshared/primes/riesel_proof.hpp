@@ -1,0 +1,63 @@
+/// @file riesel_proof.hpp
+/// @brief Deterministic primality proofs for k*2^n-1 (Lucas-Lehmer-Riesel)
+/// and k*2^n+1 (Proth), with k odd and k < 2^n; every squaring reduces
+/// with the special form's shifts (Modulus), never a general division.
+///
+/// LLR (Riesel's theorem, Rodseth's choice of P): N = k*2^n-1 is prime iff
+/// u_(n-2) = 0 (mod N), u_0 = V_k(P) mod N, u_i = u_(i-1)^2 - 2, for a P
+/// with (P-2 / N) = 1 and (P+2 / N) = -1. LLR's choice: P = 4 when 3 does
+/// not divide k, else the first such P >= 3. The seed's choice ("Prime
+/// Hunting"): D = 13, that is P = 11 (P^2 - 4 = 9*13), when (13/N) = -1.
+/// Proth: N = k*2^n+1 is prime iff a^((N-1)/2) = -1 (mod N) for an a with
+/// (a / N) = -1.
+#pragma once
+
+#include <gmpxx.h>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "primes/primality.hpp"
+
+namespace tk::primes {
+
+enum class LlrStart { llr, d13 };
+
+/// Where a proof stands: the next iteration to run and its value mod N.
+struct ProofState {
+  std::uint64_t iteration = 0;
+  mpz_class value;
+};
+
+struct ProofOptions {
+  /// Called every `report_every` iterations with the state reached (to save
+  /// a checkpoint); return false to stop (the proof then has no verdict).
+  std::function<bool(const ProofState&)> progress;
+  std::uint64_t report_every = 10000;
+  const std::atomic<bool>* cancel = nullptr;
+  std::optional<ProofState> resume_from;
+};
+
+struct ProofResult {
+  Verdict verdict = Verdict::unknown;  ///< unknown when stopped
+  std::uint64_t parameter = 0;         ///< P (LLR) or a (Proth)
+  std::uint64_t res64 = 0;             ///< low 64 bits of the last residue
+  std::uint64_t iterations = 0;
+};
+
+/// P for k*2^n-1 as `start` chooses it; nothing when no P up to a bound
+/// fits (then N is a square or has a small factor).
+std::optional<std::uint64_t> llr_parameter(std::uint64_t k, std::uint64_t n, LlrStart start);
+
+/// k odd, 1 <= k < 2^n, n >= 2.
+ProofResult llr_prove(std::uint64_t k, std::uint64_t n, LlrStart start, const ProofOptions& options = {});
+
+/// a for k*2^n+1: the first a >= 3 with (a / N) = -1; nothing for a square.
+std::optional<std::uint64_t> proth_base(std::uint64_t k, std::uint64_t n);
+
+/// k odd, 1 <= k < 2^n, n >= 1.
+ProofResult proth_prove(std::uint64_t k, std::uint64_t n, const ProofOptions& options = {});
+
+}  // namespace tk::primes
