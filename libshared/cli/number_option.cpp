@@ -27,8 +27,9 @@ std::uint64_t parse_count(std::string_view text, std::string_view option) {
   const std::size_t operator_at = text.find_first_of("eE^");
   std::uint64_t value = 0, exponent = 0;
   if (operator_at == std::string_view::npos) {
-    if (!digits(text, value)) throw not_integer();
-    return value;
+    if (digits(text, value)) return value;
+    const bool only_digits = !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
+    throw only_digits ? overflow() : not_integer();
   }
   if (!digits(text.substr(operator_at + 1), exponent)) throw not_integer();
   std::string_view mantissa = text.substr(0, operator_at);

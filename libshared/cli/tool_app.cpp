@@ -71,7 +71,9 @@ int ToolApp::run(int argc, char** argv, const std::function<void()>& body) {
     return app_.exit(e) == 0 ? 0 : 2;
   } catch (const CLI::ParseError& e) {
     std::string message = e.what();
-    if (!message.empty()) message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
+    // Lowercase a sentence's first word ("The following..."), not a name ("SHARD is required").
+    if (message.size() > 1 && std::islower(static_cast<unsigned char>(message[1])))
+      message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
     return usage_error(message);
   }
 

@@ -15,16 +15,20 @@ namespace {
 
 /// Width of the intervals handed to worker threads when printing.
 constexpr std::uint64_t kChunkWidth = std::uint64_t(1) << 26;
+/// The largest prime below 2^64: primesieve cannot look past it.
+constexpr std::uint64_t kLastPrime = 18446744073709551557ull;
 
 std::string format_lines(std::uint64_t low, std::uint64_t high) {
   std::string text;
+  high = std::min(high, kLastPrime);
+  if (low > high) return text;
   primesieve::iterator it(low, high);
   char digits[24];
   for (std::uint64_t p = it.next_prime(); p <= high && p >= low; p = it.next_prime()) {
     const auto end = std::to_chars(digits, digits + sizeof digits, p).ptr;
     text.append(digits, end);
     text += '\n';
-    if (p == high) break;  // next_prime past 2^64 - 59 would not return
+    if (p == high) break;  // asking for the prime after the last one fails
   }
   return text;
 }

@@ -237,7 +237,10 @@ void merge_sieve_outputs(const std::vector<std::string>& files, std::FILE* out) 
   auto kept = [&](const std::string& line) { return seen[line] == shards.size(); };
   switch (model->kind) {
     case TextKind::json_lines: break;
-    case TextKind::csv: fmt::format_to(std::back_inserter(buffer), "{}\n", model->header_key); break;
+    case TextKind::csv:  // one run writes no header row when nothing survives
+      if (std::any_of(model->lines.begin(), model->lines.end(), kept))
+        fmt::format_to(std::back_inserter(buffer), "{}\n", model->header_key);
+      break;
     case TextKind::newpgen: fmt::format_to(std::back_inserter(buffer), "{}:{}\n", *depth, model->header_key); break;
     case TextKind::abc: fmt::format_to(std::back_inserter(buffer), "{} // Sieved to {}\n", model->header_key, *depth); break;
     case TextKind::abcd: break;

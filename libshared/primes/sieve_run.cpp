@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "cli/progress.hpp"
@@ -90,6 +91,11 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
     } else {
       warn("no checkpoint at " + options.checkpoint_path + ": starting from the beginning");
     }
+  }
+  if (!options.checkpoint_path.empty()) {  // find out now, not after hours of sieving
+    const std::string directory = std::filesystem::path(options.checkpoint_path).parent_path().string();
+    if (::access(directory.empty() ? "." : directory.c_str(), W_OK) != 0)
+      throw Error(fmt::format("cannot write a checkpoint there: {}", std::strerror(errno)), Location{options.checkpoint_path, 0});
   }
   FactorsFile factors(options.factors_path, factors_bytes, resumed);
 
