@@ -27,11 +27,12 @@ bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long
   mpz_class square;
   for (; state.iteration < last; ++state.iteration) {
     if (options.report_every && state.iteration % options.report_every == 0 && state.iteration) {
-      if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return false;
+      const bool cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
       if (options.progress) {
         N.reduce(state.value.get_mpz_t());
         if (!options.progress(state)) return false;
       }
+      if (cancelled) return false;  // after progress has seen (and saved) the state
     }
     mpz_mul(square.get_mpz_t(), state.value.get_mpz_t(), state.value.get_mpz_t());
     if (minus) mpz_sub_ui(square.get_mpz_t(), square.get_mpz_t(), static_cast<unsigned long>(minus));

@@ -34,6 +34,7 @@ struct ProofState {
 struct ProofOptions {
   /// Called every `report_every` iterations with the state reached (to save
   /// a checkpoint); return false to stop (the proof then has no verdict).
+  /// A set `cancel` stops the proof at the next report, after this call.
   std::function<bool(const ProofState&)> progress;
   std::uint64_t report_every = 10000;
   const std::atomic<bool>* cancel = nullptr;

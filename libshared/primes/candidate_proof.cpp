@@ -1,0 +1,110 @@
+/// @file candidate_proof.cpp
+#include "primes/candidate_proof.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace tk::primes {
+
+namespace {
+
+/// Records name the proof's parameter as the theorems do.
+const char* parameter_name(const std::string& test) { return test == "llr" ? "P" : "a"; }
+
+std::uint64_t decimal_digits(const mpz_class& value) {
+  // mpz_sizeinbase may overshoot by one: fix it with a comparison.
+  std::size_t digits = mpz_sizeinbase(value.get_mpz_t(), 10);
+  mpz_class ten;
+  mpz_ui_pow_ui(ten.get_mpz_t(), 10, digits - 1);
+  return value < ten ? digits - 1 : digits;
+}
+
+}  // namespace
+
+MemberProof prove_member(const Member& member, const ProofPlan& plan) {
+  MemberProof proof;
+  const Number& number = member.number;
+  proof.digits = decimal_digits(number.value);
+  const auto& form = number.form;
+  std::uint64_t k = 0, n = 0;
+  bool special = form && form->b == 2 && (form->c == 1 || form->c == -1) && form->k > 0 && form->n > 0 &&
+                 mpz_sizeinbase(form->k.get_mpz_t(), 2) <= 64;
+  if (special) {
+    k = mpz_get_ui(form->k.get_mpz_t());
+    n = form->n;
+    while (k % 2 == 0) {  // k*2^n = (k/2)*2^(n+1)
+      k /= 2;
+      ++n;
+    }
+    special = (n >= 64 || k < (std::uint64_t(1) << n)) && n >= (form->c < 0 ? 2u : 1u);
+  }
+  proof.n = form ? n : 0;
+  proof.text = special ? fmt::format("{}*2^{}{}", k, n, form->c < 0 ? "-1" : "+1")
+               : form  ? kbnc_text(*form)
+                       : number.value.get_str();
+  // A small factor settles it at once (and keeps LLR's choice of P valid: P = 4 needs 3 not dividing N).
+  for (unsigned long p = 3; p < 1000; p += 2) {
+    if (number.value > p && mpz_divisible_ui_p(number.value.get_mpz_t(), p)) {
+      bool prime = true;
+      for (unsigned long d = 3; d * d <= p; d += 2) prime = prime && p % d != 0;
+      if (!prime) continue;
+      proof.verdict = Verdict::composite;
+      proof.test = "trial";
+      proof.witness = fmt::format("factor {}", p);
+      return proof;
+    }
+  }
+  if (!special) {
+    TestPlan bpsw;
+    const TestOutcome outcome = test_number(number, bpsw);
+    proof.verdict = std::min(outcome.verdict, Verdict::probable_prime);
+    proof.test = "bpsw";
+    proof.witness = outcome.witness;
+    return proof;
+  }
+  const ProofOptions options = plan.options_for ? plan.options_for(proof.text) : ProofOptions{};
+  const ProofResult result = form->c < 0 ? llr_prove(k, n, plan.start, options) : proth_prove(k, n, options);
+  proof.verdict = result.verdict;
+  proof.test = form->c < 0 ? "llr" : "proth";
+  proof.parameter = result.parameter;
+  if (result.verdict == Verdict::composite && result.parameter) proof.res64 = result.res64;
+  return proof;
+}
+
+Verdict prove_candidate(const Candidate& candidate, const ProofPlan& plan, Record& record,
+                        const std::function<void(const MemberProof&)>& on_member) {
+  for (const char* owned : {"verdict", "test", "P", "a", "res64", "witness", "members"}) record.erase(owned);
+  Verdict overall = Verdict::prime;
+  Record members = Record::array();
+  for (const Member& member : candidate.members) {
+    const MemberProof proof = prove_member(member, plan);
+    if (on_member) on_member(proof);
+    overall = std::min(overall, proof.verdict);
+    Record entry = Record::object();
+    if (candidate.form) {
+      entry["n"] = member.n;
+      entry["c"] = member.c;
+    }
+    entry["verdict"] = std::string(verdict_name(proof.verdict));
+    entry["test"] = proof.test;
+    if (proof.parameter) entry[parameter_name(proof.test)] = proof.parameter;
+    if (proof.res64) entry["res64"] = fmt::format("{:016X}", *proof.res64);
+    if (!proof.witness.empty()) entry["witness"] = proof.witness;
+    if (!candidate.form) {
+      for (auto& [key, value] : entry.items()) record[key] = value;
+    } else {
+      members.push_back(std::move(entry));
+    }
+    if (proof.verdict == Verdict::composite || proof.verdict == Verdict::unknown) break;
+  }
+  if (candidate.form) {
+    record["verdict"] = std::string(verdict_name(overall));
+    const Record& last = members.back();
+    record["test"] = last["test"];
+    record["members"] = std::move(members);
+  }
+  return overall;
+}
+
+}  // namespace tk::primes

@@ -1,0 +1,223 @@
+/// @file main.cpp
+/// @brief riesel: proves k*2^n-1 (Lucas-Lehmer-Riesel) and k*2^n+1 (Proth)
+/// prime or composite, as a pipeline filter that cron can restart.
+#include <csignal>
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "cli/number_option.hpp"
+#include "cli/progress.hpp"
+#include "cli/tool_app.hpp"
+#include "concurrency/ordered_pool.hpp"
+#include "io/error.hpp"
+#include "io/record_reader.hpp"
+#include "io/record_writer.hpp"
+#include "primes/candidate.hpp"
+#include "primes/candidate_input.hpp"
+#include "primes/candidate_proof.hpp"
+#include "primes/number_expression.hpp"
+#include "primes/proof_journal.hpp"
+
+namespace {
+
+using tk::Record;
+using tk::primes::Verdict;
+
+std::atomic<int> g_stop_signal{0};
+std::atomic<bool> g_cancel{false};
+
+extern "C" void on_stop_signal(int signal) {
+  g_stop_signal.store(signal);
+  g_cancel.store(true);
+}
+
+struct Job {
+  Record record;
+  tk::Location where;
+  std::string key;
+  std::optional<std::string> finished;  ///< the journal's output line for a record proved before
+};
+
+struct Outcome {
+  Record record;
+  tk::Location where;
+  std::string key;
+  bool replayed = false;
+  bool stopped = false;  ///< cut short by a signal: no verdict
+  std::vector<std::string> log_lines;
+  std::optional<tk::Error> error;
+};
+
+/// A results line as LLR writes it to lresults.txt.
+std::string llr_log_line(const tk::primes::MemberProof& proof, double seconds) {
+  const std::string time = fmt::format("Time : {:.3f} sec.", seconds);
+  if (proof.verdict == Verdict::prime)
+    return fmt::format("{} is prime! ({} decimal digits)  {}", proof.text, proof.digits, time);
+  if (proof.verdict == Verdict::probable_prime)
+    return fmt::format("{} is a BPSW probable prime. ({} decimal digits)  {}", proof.text, proof.digits, time);
+  if (proof.res64)
+    return fmt::format("{} is not prime.  {} {:016X}  {}", proof.text, proof.test == "llr" ? "LLR Res64:" : "Proth RES64:",
+                       *proof.res64, time);
+  return fmt::format("{} is not prime.  {}  {}", proof.text, proof.witness.empty() ? "BPSW" : proof.witness, time);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  tk::cli::ToolApp tool("riesel",
+                        "Prove k*2^n-1 (Lucas-Lehmer-Riesel) and k*2^n+1 (Proth) prime or composite: reads "
+                        "sieve or mrtest records, NewPGen/ABC files or expressions, and adds verdict, test, P or a, "
+                        "res64 and seconds.",
+                        "Numbers of other shapes get BPSW and at best probable-prime.\nSee riesel(1).");
+  std::string start = "llr", state_dir, shard = "1/1";
+  double checkpoint_seconds = 300;
+  bool skip_bad = false;
+  std::size_t max_bits = tk::primes::kDefaultMaxBits;
+  CLI::App& app = tool.app();
+  app.add_option("--start", start, "llr (LLR's choice of P) or d13 (the seed's D = 13, P = 11)")
+      ->check(CLI::IsMember({"llr", "d13"}))
+      ->capture_default_str()
+      ->type_name("NAME");
+  app.add_option("--state", state_dir, "keep a lock, a journal, lresults.txt and checkpoints in DIR; a re-run resumes")
+      ->type_name("DIR");
+  app.add_option("--checkpoint-every", checkpoint_seconds, "seconds between checkpoints of a running proof")
+      ->capture_default_str()
+      ->type_name("S");
+  app.add_option("--shard", shard, "prove only candidates K, K+N, K+2N, ... (K/N)")->capture_default_str()->type_name("K/N");
+  app.add_flag("--skip-bad", skip_bad, "report malformed records on stderr and go on");
+  app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits")->type_name("BITS");
+  tool.add_threads_option();
+  tool.add_input_files();
+
+  return tool.run(argc, argv, [&] {
+    const auto slash = shard.find('/');
+    if (slash == std::string::npos) throw tk::Error("--shard '" + shard + "' is not K/N");
+    const std::uint64_t shard_index = tk::cli::parse_count(shard.substr(0, slash), "--shard");
+    const std::uint64_t shard_count = tk::cli::parse_count(shard.substr(slash + 1), "--shard");
+    if (shard_count == 0 || shard_index == 0 || shard_index > shard_count) throw tk::Error("--shard needs 1 <= K <= N");
+    if (!(checkpoint_seconds > 0)) throw tk::Error("--checkpoint-every must be a positive number of seconds");
+
+    std::unique_ptr<tk::primes::ProofJournal> journal;
+    if (!state_dir.empty()) journal = std::make_unique<tk::primes::ProofJournal>(state_dir);
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+
+    tk::primes::ProofPlan plan;
+    plan.start = start == "d13" ? tk::primes::LlrStart::d13 : tk::primes::LlrStart::llr;
+    plan.options_for = [&](const std::string& member) {
+      tk::primes::ProofOptions options;
+      options.cancel = &g_cancel;
+      options.report_every = 1000;
+      if (!journal) return options;
+      const std::string name = member + " start=" + start;
+      options.resume_from = journal->load_checkpoint(name);
+      auto last = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+      options.progress = [&, name, last](const tk::primes::ProofState& state) {
+        const auto now = std::chrono::steady_clock::now();
+        if (g_cancel.load() || std::chrono::duration<double>(now - *last).count() >= checkpoint_seconds) {
+          journal->save_checkpoint(name, state);
+          *last = now;
+        }
+        return true;
+      };
+      return options;
+    };
+
+    tk::io::RecordReader reader(tool.common().inputs, tk::primes::candidate_format_probe(max_bits));
+    tk::io::RecordWriter writer(tool.output_format());
+    writer.declare_fields({"verdict", "test", "P", "a", "res64", "witness", "seconds", "members"});
+    tk::cli::Progress progress("riesel", tool.show_progress());
+    std::uint64_t done = 0;
+
+    auto prove = [&](Job& job) {
+      Outcome out;
+      out.where = job.where;
+      out.key = job.key;
+      if (job.finished) {
+        out.record = Record::parse(*job.finished);
+        out.replayed = true;
+        return out;
+      }
+      try {
+        const auto started = std::chrono::steady_clock::now();
+        const tk::primes::Candidate candidate = tk::primes::candidate_from_record(job.record, max_bits);
+        auto member_started = started;
+        const Verdict verdict = tk::primes::prove_candidate(candidate, plan, job.record, [&](const tk::primes::MemberProof& proof) {
+          const auto now = std::chrono::steady_clock::now();
+          if (proof.verdict != Verdict::unknown)
+            out.log_lines.push_back(llr_log_line(proof, std::chrono::duration<double>(now - member_started).count()));
+          if (journal && proof.verdict != Verdict::unknown) journal->remove_checkpoint(proof.text + " start=" + start);
+          member_started = now;
+        });
+        out.stopped = verdict == Verdict::unknown && g_cancel.load();
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+        Record members;
+        if (job.record.contains("members")) {
+          members = std::move(job.record["members"]);
+          job.record.erase("members");
+        }
+        job.record.erase("seconds");
+        job.record["seconds"] = std::round(seconds * 1e6) / 1e6;
+        if (!members.is_null()) job.record["members"] = std::move(members);
+        out.record = std::move(job.record);
+      } catch (const tk::Error& e) {
+        out.error = tk::Error(e.what(), job.where);
+      }
+      return out;
+    };
+    auto emit = [&](Outcome& out) {
+      ++done;
+      progress.update(done, reader.fraction_done());
+      if (out.error) {
+        if (!skip_bad) throw *out.error;
+        tool.warn(out.error->located_message());
+        return;
+      }
+      if (out.stopped) return;  // a signal cut it short: the checkpoint has it
+      if (journal && !out.replayed) {
+        for (const std::string& line : out.log_lines) journal->log_result(line);
+        journal->record_finished(out.key, out.record.dump());
+      }
+      writer.write(out.record);
+    };
+
+    {
+      tk::OrderedPool<Job, Outcome> pool(tool.common().threads, prove, emit);
+      std::uint64_t index = 0;
+      for (;;) {
+        if (g_cancel.load()) break;
+        Job job;
+        try {
+          if (!reader.next(job.record)) break;
+        } catch (const tk::Error& e) {
+          if (!skip_bad) throw;
+          tool.warn(e.located_message());
+          continue;
+        }
+        if (index++ % shard_count != shard_index - 1) continue;
+        job.where = reader.where();
+        job.key = job.record.dump();
+        if (journal) job.finished = journal->finished(job.key);
+        pool.submit(std::move(job));
+      }
+      pool.finish();
+    }
+    writer.flush();
+    if (const int signal = g_stop_signal.load()) {
+      progress.finish();
+      std::fflush(stdout);
+      std::fprintf(stderr, "riesel: stopped by signal %d%s\n", signal,
+                   journal ? "; state saved, run again with the same --state to continue" : "");
+      std::signal(signal, SIG_DFL);
+      std::raise(signal);
+    }
+  });
+}
