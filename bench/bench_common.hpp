@@ -5,7 +5,10 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
+#include <memory>
+#include <sstream>
 #include <cstdlib>
 #include <ctime>
 #include <initializer_list>
@@ -85,5 +88,25 @@ class Results {
   std::string name_;
   std::vector<double> ours_, peer_, ratio_;
 };
+
+/// PARI's ispseudoprime verdict on a gp expression and the CPU seconds gp
+/// reports for that call alone (getabstime, so gp's start-up is left out).
+inline std::pair<bool, double> pari_ispseudoprime(const std::string& expression) {
+  const char* gp = std::getenv("BENCH_GP");
+  const std::string command = std::string("echo 'N=") + expression +
+                              "; t=getabstime(); r=ispseudoprime(N); print(r, \" \", getabstime()-t)' | " +
+                              (gp ? gp : "gp") + " -q -f 2>&1";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  if (!pipe) fail("cannot run: " + command);
+  std::string output;
+  std::array<char, 256> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe.get())) output += buffer.data();
+  std::istringstream fields(output);
+  int verdict = -1;
+  long milliseconds = -1;
+  if (!(fields >> verdict >> milliseconds) || (verdict != 0 && verdict != 1) || milliseconds < 0)
+    fail("unexpected output from gp: " + output);
+  return {verdict == 1, static_cast<double>(milliseconds) / 1000};
+}
 
 }  // namespace bench

@@ -38,24 +38,7 @@ OurRun ours(const tk::primes::Number& number) {
   return {outcome.verdict >= tk::primes::Verdict::probable_prime, seconds, outcome.witness};
 }
 
-/// PARI's ispseudoprime verdict and the CPU seconds gp reports for it alone.
-std::pair<bool, double> pari(const std::string& expression) {
-  const char* gp = std::getenv("BENCH_GP");
-  const std::string command = std::string("echo 'N=") + expression +
-                              "; t=getabstime(); r=ispseudoprime(N); print(r, \" \", getabstime()-t)' | " +
-                              (gp ? gp : "gp") + " -q -f 2>&1";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  if (!pipe) bench::fail("cannot run: " + command);
-  std::string output;
-  std::array<char, 256> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe.get())) output += buffer.data();
-  std::istringstream fields(output);
-  int verdict = -1;
-  long milliseconds = -1;
-  if (!(fields >> verdict >> milliseconds) || (verdict != 0 && verdict != 1) || milliseconds < 0)
-    bench::fail("unexpected output from gp: " + output);
-  return {verdict == 1, static_cast<double>(milliseconds) / 1000};
-}
+std::pair<bool, double> pari(const std::string& expression) { return bench::pari_ispseudoprime(expression); }
 
 void check_agree(const std::string& text, bool mine, bool theirs, bool expected) {
   if (mine != expected || theirs != expected)
