@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The toolkit's main job, end to end. `make demo` builds and runs this.
-# For now: mrtest on real numbers from the prime-hunting literature.
+# mrtest on real numbers from the prime-hunting literature, then sieve + mrtest.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 
@@ -16,3 +16,10 @@ echo
 echo
 echo "== A pipeline: candidates k*2^n+1 from a NewPGen-style sieve file, survivors kept:"
 bash "$here/mrtest-newpgen.sh"
+
+echo
+echo "== The generalized sieve: twin candidates k*2^500-1, k*2^500+1 for k <= 10^5,"
+echo "   sieved with the primes up to 10^7; mrtest keeps the survivors that are twin primes:"
+survivors="$(sieve twin --n 500 --k 1:1e5 --pmax 1e7 -j 2)"
+echo "   $(wc -l <<< "$survivors") of 100000 candidates survive the sieve"
+mrtest -j 2 --keep prime,probable --csv <<< "$survivors" | cut -d, -f1-4

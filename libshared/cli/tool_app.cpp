@@ -32,7 +32,7 @@ ToolApp::ToolApp(std::string name, std::string description, std::string footer)
 }
 
 void ToolApp::add_threads_option() {
-  app_.add_option("-j,--threads", common_.threads, "work on N records at once (output keeps input order)")
+  app_.add_option("-j,--threads", common_.threads, "use N threads (the output does not depend on N)")
       ->check(CLI::Range(1u, 1024u))
       ->type_name("N");
 }

@@ -106,8 +106,12 @@ void GeneralizedSieve::sieve_small_primes(const SieveControl& control) {
         if (control.after_segment) control.after_segment(++done, segments);
       },
       2 * static_cast<std::size_t>(control.threads));
-  for (; job < segments; ++job) pool.submit(job);
+  for (; job < segments; ++job) {
+    if (control.should_stop && control.should_stop()) break;  // nothing to save: the bitmap is half done
+    pool.submit(job);
+  }
   pool.finish();
+  if (job < segments) return;
   survivors_ = count_survivors();
   small_done_ = true;
 }
@@ -138,6 +142,7 @@ std::vector<SieveFactor> GeneralizedSieve::sieve_block(std::uint64_t block) {
 
 bool GeneralizedSieve::sieve_large_primes(const SieveControl& control) {
   if (!small_done_) sieve_small_primes(control);
+  if (!small_done_) return false;
   struct BlockResult {
     std::uint64_t block;
     std::vector<SieveFactor> factors;

@@ -66,6 +66,8 @@ class GeneralizedSieve {
   /// State from a checkpoint: the bitmap after the small primes and the blocks before next_block.
   void restore(std::vector<std::uint64_t> bitmap, std::uint64_t next_block);
 
+  /// Sieves with the small primes; should_stop may end it early, leaving
+  /// small_primes_done() false (such a state cannot be saved).
   void sieve_small_primes(const SieveControl& control);
   /// Sieves the remaining blocks of this shard; false when should_stop ended it early.
   bool sieve_large_primes(const SieveControl& control);

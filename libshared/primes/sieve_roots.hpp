@@ -4,7 +4,7 @@
 /// x = (k - k_first)/c_step (mod p), as an offset from the first x.
 ///
 /// 2^-n is the same fixed-exponent power for every prime, so primes below
-/// 2^32 go through it eight at a time in 32-bit Montgomery arithmetic
+/// 2^32 go through it sixteen at a time in 32-bit Montgomery arithmetic
 /// (independent chains keep the multiplier busy); a multiplication by 1/2 is
 /// a shift. Larger primes use 64-bit Montgomery arithmetic one at a time.
 #pragma once

@@ -100,7 +100,7 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
   FactorsFile factors(options.factors_path, factors_bytes, resumed);
 
   auto save = [&] {
-    if (!options.checkpoint_path.empty()) save_checkpoint(options.checkpoint_path, sieve, identity, factors.sync());
+    if (!options.checkpoint_path.empty() && sieve.small_primes_done()) save_checkpoint(options.checkpoint_path, sieve, identity, factors.sync());
   };
   SieveControl control;
   control.threads = options.threads;
@@ -111,8 +111,10 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
   SieveRunOutcome outcome;
   cli::Progress progress("sieve", options.progress);
   const auto started = Clock::now();
-  auto last_save = started, window_start = started;
-  std::uint64_t window_survivors = sieve.survivors();
+  auto last_save = started, window_start = started, shown_start = started;
+  std::uint64_t window_survivors = sieve.survivors(), shown_survivors = sieve.survivors();
+  double shown_rate = 0;
+  const double done_at_start = prime_count_estimate(sieve.sieved_to()) / prime_count_estimate(spec.p_max);
   const double total = prime_count_estimate(spec.p_max);
   control.should_stop = [&] {
     return outcome.rate_stopped || (options.stop_signal && options.stop_signal->load() != 0);
@@ -131,9 +133,20 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
       last_save = now;
     }
     if (options.progress) {
+      // The rate shown is over the last ten seconds or so, not since the start.
+      const double shown = std::chrono::duration<double>(now - shown_start).count();
+      if (shown >= 10 || shown_rate == 0) {
+        shown_rate = shown > 0 ? static_cast<double>(shown_survivors - sieve.survivors()) / shown : 0.0;
+        if (shown >= 10) {
+          shown_start = now;
+          shown_survivors = sieve.survivors();
+        }
+      }
       const double done = prime_count_estimate(sieve.sieved_to()) / total;
-      progress.update(sieve.survivors(), done,
-                      fmt::format("p = {}, {} left, {:.0f} removed/s", sieve.sieved_to(), sieve.survivors(), rate));
+      // Progress counts from where this process started (a resume), so the ETA is this run's.
+      const double fraction = done_at_start < 1 ? (done - done_at_start) / (1 - done_at_start) : 1.0;
+      progress.update(sieve.survivors(), fraction,
+                      fmt::format("p = {}, {} left, {:.0f} removed/s", sieve.sieved_to(), sieve.survivors(), shown_rate));
     }
   };
   if (options.progress)

@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "io/error.hpp"
 
 namespace tk::primes {
@@ -80,6 +82,9 @@ void SieveSpec::validate() const {
 }
 
 void SieveSpec::check_riesel_condition() const {
+  const auto all = members();
+  if (std::none_of(all.begin(), all.end(), [](const SieveMember& m) { return m.c == -1; }))
+    throw Error("--riesel-condition is about k*2^e-1 members, and " + form_name() + " has none");
   const bool single = x_min == x_max;
   const std::uint64_t k_first = k_at(x_min), k_last = k_at(x_max);
   for (const SieveMember& member : members()) {

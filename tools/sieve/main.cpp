@@ -85,9 +85,12 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
   tk::primes::GeneralizedSieve sieve(spec);
   const auto outcome = tk::primes::run_sieve(sieve, run, [&](const std::string& text) { tool.warn(text); });
   if (const int signal = g_stop_signal.load()) {
-    std::fprintf(stderr, "sieve: stopped by signal %d after p = %llu%s\n", signal,
-                 static_cast<unsigned long long>(sieve.sieved_to()),
-                 o.checkpoint.empty() ? "; no --checkpoint, so the work is lost" : "; checkpoint saved, continue with --resume");
+    if (!sieve.small_primes_done())
+      std::fprintf(stderr, "sieve: stopped by signal %d while the primes up to 2^20 sieved; nothing to save\n", signal);
+    else
+      std::fprintf(stderr, "sieve: stopped by signal %d after p = %llu%s\n", signal,
+                   static_cast<unsigned long long>(sieve.sieved_to()),
+                   o.checkpoint.empty() ? "; no --checkpoint, so the work is lost" : "; checkpoint saved, continue with --resume");
     std::signal(signal, SIG_DFL);
     std::raise(signal);
   }
@@ -148,7 +151,7 @@ int main(int argc, char** argv) {
                         "candidates with a small factor before twin, Sophie Germain, Cunningham-chain, Riesel or "
                         "Proth searches.",
                         "Examples:\n  sieve primes 1 1e10 --count\n  sieve twin --n 171960 --k 1:1e9 --pmax 1e9 -j 2 --newpgen\n"
-                        "  sieve sg --n 4000 --h0 1 --c 30030 --x 1:2^20 --pmax 1e8\n  sieve merge shard1.npg shard2.npg\n"
+                        "  sieve sg --n 4000 --h0 15 --c 30030 --x 1:2^20 --pmax 1e8\n  sieve merge shard1.npg shard2.npg\n"
                         "See sieve(1).");
   CLI::App& app = tool.app();
   tool.add_threads_option();
