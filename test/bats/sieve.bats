@@ -780,9 +780,9 @@ expect_error() {
   sg_h0=$(gp_lines 'forstep(h = 1, 999, 2, if(kronecker(h*2^20 - 1, 13) == -1 && kronecker(h*2^21 - 1, 13) == -1 && gcd((h*2^20 - 1)*(h*2^21 - 1), 15015) == 1, print(h); break))')
   run sieve sg --n 20 --h0 "$sg_h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
   assert_success
-  # Proth members have no -1 member to check.
-  run sieve proth --n 20 --h0 "$h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
-  assert_success
+  # Proth and cc2 have no k*2^e-1 member for the condition to be about.
+  expect_error 1 "has none" proth --n 20 --h0 "$h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
+  expect_error 1 "has none" cc2 --n 20 --h0 "$h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
   # A residue: the smallest such h0 that is otherwise valid.
   bad_h0=$(gp_lines 'forstep(h = 1, 999, 2, if(kronecker(h*2^20 - 1, 13) == 1 && gcd(h^2*2^40 - 1, 15015) == 1, print(h); break))')
   expect_error 1 "13" twin --n 20 --h0 "$bad_h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
