@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+
 namespace tk::primes {
 
 namespace {
@@ -28,21 +29,28 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
   proof.digits = decimal_digits(number.value);
   const auto& form = number.form;
   std::uint64_t k = 0, n = 0;
-  bool special = form && form->b == 2 && (form->c == 1 || form->c == -1) && form->k > 0 && form->n > 0 &&
-                 mpz_sizeinbase(form->k.get_mpz_t(), 2) <= 64;
+  bool special = form && form->b == 2 && (form->c == 1 || form->c == -1) && form->k > 0;
   if (special) {
-    k = mpz_get_ui(form->k.get_mpz_t());
-    n = form->n;
-    while (k % 2 == 0) {  // k*2^n = (k/2)*2^(n+1)
-      k /= 2;
-      ++n;
-    }
-    special = (n >= 64 || k < (std::uint64_t(1) << n)) && n >= (form->c < 0 ? 2u : 1u);
+    // k*2^n = (k/2)*2^(n+1): take every factor 2 out of k first.
+    mpz_class odd_k = form->k;
+    const mp_bitcnt_t twos = mpz_scan1(odd_k.get_mpz_t(), 0);
+    odd_k >>= twos;
+    n = form->n + twos;
+    special = mpz_sizeinbase(odd_k.get_mpz_t(), 2) <= 64;
+    if (special) k = mpz_get_ui(odd_k.get_mpz_t());
+    special = special && (n >= 64 || k < (std::uint64_t(1) << n)) && n >= (form->c < 0 ? 2u : 1u);
   }
   proof.n = form ? n : 0;
   proof.text = special ? fmt::format("{}*2^{}{}", k, n, form->c < 0 ? "-1" : "+1")
                : form  ? kbnc_text(*form)
                        : number.value.get_str();
+  // 3 = 1*2^2-1 is the one k*2^n-1 that trial division below does not settle
+  // and LLR's P = 4 cannot prove (it needs 3 not to divide N).
+  if (number.value == 3 && special && form->c < 0) {
+    proof.verdict = Verdict::prime;
+    proof.test = "trial";
+    return proof;
+  }
   // A small factor settles it at once (and keeps LLR's choice of P valid: P = 4 needs 3 not dividing N).
   for (unsigned long p = 3; p < 1000; p += 2) {
     if (number.value > p && mpz_divisible_ui_p(number.value.get_mpz_t(), p)) {
@@ -69,6 +77,8 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
   proof.test = form->c < 0 ? "llr" : "proth";
   proof.parameter = result.parameter;
   if (result.verdict == Verdict::composite && result.parameter) proof.res64 = result.res64;
+  if (result.verdict == Verdict::composite && !result.parameter)
+    proof.witness = form->c < 0 ? "no P fits: a square or a small factor" : "no a fits: a square";
   return proof;
 }
 

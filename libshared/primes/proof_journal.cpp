@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "io/error.hpp"
 
@@ -57,17 +58,25 @@ ProofJournal::ProofJournal(std::string directory) : directory_(std::move(directo
     lock_fd_ = -1;
     throw Error("another run holds this state directory's lock", Location{directory_, 0});
   }
-  // Finished records; a torn last line (killed mid-write) has no tab or no newline and is dropped.
+  // Finished records; a torn last line (killed mid-write) has no newline:
+  // it is cut off so that the next record starts on a line of its own.
   const std::string journal = directory_ + "/journal.tsv";
+  std::uint64_t whole_lines = 0;
   {
     std::ifstream in(journal, std::ios::binary);
     std::string line;
     while (std::getline(in, line)) {
       if (in.eof()) break;  // no newline: torn
+      whole_lines += line.size() + 1;
       const auto tab = line.find('\t');
-      if (tab != std::string::npos) finished_[line.substr(0, tab)] = line.substr(tab + 1);
+      if (tab == std::string::npos) continue;
+      if (Record::accept(line.substr(tab + 1)))  // a damaged line is not a finished record
+        finished_[line.substr(0, tab)] = line.substr(tab + 1);
     }
   }
+  std::error_code size_error;
+  if (std::filesystem::exists(journal) && std::filesystem::file_size(journal, size_error) > whole_lines && !size_error)
+    std::filesystem::resize_file(journal, whole_lines, size_error);
   journal_ = open_append(journal);
   log_ = open_append(directory_ + "/lresults.txt");
 }
@@ -118,7 +127,9 @@ void ProofJournal::save_checkpoint(const std::string& member, const ProofState& 
   const std::string body =
       fmt::format("{}\n{}\n{}\n{}\n", kCheckpointMagic, member, state.iteration, state.value.get_str(16));
   const std::string text = body + fmt::format("{:016x}\n", fnv1a(body));
-  const std::string path = checkpoint_path(member), temporary = path + ".tmp";
+  // One temporary name per thread: two proofs of one number may save at once.
+  const std::string path = checkpoint_path(member),
+                    temporary = fmt::format("{}.tmp{}", path, std::hash<std::thread::id>{}(std::this_thread::get_id()));
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail(temporary, "create a checkpoint");
   for (std::size_t done = 0; done < text.size();) {

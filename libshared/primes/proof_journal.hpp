@@ -16,6 +16,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "io/record.hpp"
 #include "primes/riesel_proof.hpp"
 
 namespace tk::primes {

@@ -509,7 +509,8 @@ TABLE
   wait "$pid" || status=$?
   [ "$status" -eq 130 ]
   run cat err.txt
-  assert_output --partial "no --checkpoint, so the work is lost"
+  # A slow (sanitizer) build may still be sieving with the small primes, where there is nothing to save.
+  assert_output --regexp "no --checkpoint, so the work is lost|while the primes up to 2\^20 sieved; nothing to save"
   [ ! -s out.txt ]
 }
 

@@ -184,7 +184,7 @@ int main(int argc, char** argv) {
       if (out.stopped) return;  // a signal cut it short: the checkpoint has it
       if (journal && !out.replayed) {
         for (const std::string& line : out.log_lines) journal->log_result(line);
-        journal->record_finished(out.key, out.record.dump());
+        journal->record_finished(out.key, out.record.dump(-1, ' ', false, tk::Record::error_handler_t::replace));
       }
       writer.write(out.record);
     };
@@ -198,13 +198,15 @@ int main(int argc, char** argv) {
         try {
           if (!reader.next(job.record)) break;
         } catch (const tk::Error& e) {
+          if (g_stop_signal.load()) break;  // the read was interrupted by SIGINT/SIGTERM
           if (!skip_bad) throw;
           tool.warn(e.located_message());
           continue;
         }
         if (index++ % shard_count != shard_index - 1) continue;
         job.where = reader.where();
-        job.key = job.record.dump();
+        // Invalid UTF-8 in a passed-through field must not stop the run: replace it in the key.
+        job.key = "start=" + start + " " + job.record.dump(-1, ' ', false, tk::Record::error_handler_t::replace);
         if (journal) job.finished = journal->finished(job.key);
         pool.submit(std::move(job));
       }
