@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
 # The toolkit's main job, end to end. `make demo` builds and runs this.
-# mrtest on real numbers from the prime-hunting literature, then sieve + mrtest.
+# mrtest and riesel on real numbers from the prime-hunting literature, then
+# sieve + mrtest, and at the end a search from scratch: sieve | mrtest |
+# riesel finding and proving twin primes of 1,000 digits.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 
 echo "== The 'Prime Hunting' paper (Farkas et al.): 778965587811*2^36627-1 is prime,"
 echo "   778965587811*2^36629-1 is not (BPSW with the k*2^n-1 special-form reduction):"
 printf '778965587811*2^36627-1\n778965587811*2^36629-1\n' | mrtest -j 2
+echo "   riesel proves both (Lucas-Lehmer-Riesel with P as LLR chooses it; res64 for a composite):"
+printf '778965587811*2^36627-1\n778965587811*2^36629-1\n' | riesel -j 2
+echo "   and again with the seed's own start, D = 13 (P = 11):"
+printf '778965587811*2^36627-1\n' | riesel --start d13
 
 echo
 echo "== Mersenne exponents below 1300, found by testing every 2^p-1:"
@@ -23,3 +29,8 @@ echo "   sieved with the primes up to 10^7; mrtest keeps the survivors that are 
 survivors="$(sieve twin --n 500 --k 1:1e5 --pmax 1e7 -j 2)"
 echo "   $(wc -l <<< "$survivors") of 100000 candidates survive the sieve"
 mrtest -j 2 --keep prime,probable --csv <<< "$survivors" | cut -d, -f1-4
+
+echo
+echo "== The main job, a search from scratch: sieve | mrtest | riesel finds and proves"
+echo "   twin primes k*2^3300-1, k*2^3300+1 of 1,000 digits (examples/search-twins.sh):"
+bash "$here/search-twins.sh"

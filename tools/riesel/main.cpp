@@ -141,6 +141,10 @@ int main(int argc, char** argv) {
       Outcome out;
       out.where = job.where;
       out.key = job.key;
+      if (g_cancel.load()) {  // stopping: queued records do not start
+        out.stopped = true;
+        return out;
+      }
       if (job.finished) {
         out.record = Record::parse(*job.finished);
         out.replayed = true;
@@ -191,7 +195,7 @@ int main(int argc, char** argv) {
 
     {
       tk::OrderedPool<Job, Outcome> pool(tool.common().threads, prove, emit);
-      std::uint64_t index = 0;
+      std::uint64_t index = 0, unreadable = 0;
       for (;;) {
         if (g_cancel.load()) break;
         Job job;
@@ -200,6 +204,7 @@ int main(int argc, char** argv) {
         } catch (const tk::Error& e) {
           if (g_stop_signal.load()) break;  // the read was interrupted by SIGINT/SIGTERM
           if (!skip_bad) throw;
+          if (e.where().line == 0) ++unreadable;  // a whole file: still fails the run at the end
           tool.warn(e.located_message());
           continue;
         }
@@ -211,6 +216,8 @@ int main(int argc, char** argv) {
         pool.submit(std::move(job));
       }
       pool.finish();
+      if (unreadable && !g_stop_signal.load())
+        throw tk::Error(fmt::format("{} input file{} could not be read", unreadable, unreadable == 1 ? "" : "s"));
     }
     writer.flush();
     if (const int signal = g_stop_signal.load()) {
