@@ -65,4 +65,14 @@ std::pair<std::uint64_t, std::uint64_t> parse_range(std::string_view text, std::
   return {low, high};
 }
 
+std::pair<unsigned, unsigned> parse_shard(std::string_view text, std::string_view option) {
+  const std::size_t slash = text.find('/');
+  const std::string quoted = std::string(option) + " '" + std::string(text.substr(0, 40)) + "'";
+  if (slash == std::string_view::npos) throw Error(quoted + " is not K/N");
+  const std::uint64_t index = parse_count(text.substr(0, slash), option);
+  const std::uint64_t count = parse_count(text.substr(slash + 1), option);
+  if (count == 0 || count > 1000000 || index == 0 || index > count) throw Error(quoted + " needs 1 <= K <= N <= 1000000");
+  return {static_cast<unsigned>(index - 1), static_cast<unsigned>(count)};
+}
+
 }  // namespace tk::cli

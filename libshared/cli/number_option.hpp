@@ -16,4 +16,7 @@ std::uint64_t parse_count(std::string_view text, std::string_view option);
 /// "A:B" with A <= B, each as parse_count reads it.
 std::pair<std::uint64_t, std::uint64_t> parse_range(std::string_view text, std::string_view option);
 
+/// "K/N" with 1 <= K <= N <= 1000000, as --shard takes it: {K - 1, N}.
+std::pair<unsigned, unsigned> parse_shard(std::string_view text, std::string_view option);
+
 }  // namespace tk::cli

@@ -14,6 +14,7 @@
 #include <sstream>
 #include <thread>
 
+#include "io/atomic_file.hpp"
 #include "io/error.hpp"
 
 namespace tk::primes {
@@ -130,17 +131,7 @@ void ProofJournal::save_checkpoint(const std::string& member, const ProofState& 
   // One temporary name per thread: two proofs of one number may save at once.
   const std::string path = checkpoint_path(member),
                     temporary = fmt::format("{}.tmp{}", path, std::hash<std::thread::id>{}(std::this_thread::get_id()));
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail(temporary, "create a checkpoint");
-  for (std::size_t done = 0; done < text.size();) {
-    const ssize_t wrote = ::write(fd, text.data() + done, text.size() - done);
-    if (wrote < 0 && errno == EINTR) continue;
-    if (wrote <= 0) { ::close(fd); fail(temporary, "write a checkpoint"); }
-    done += static_cast<std::size_t>(wrote);
-  }
-  if (::fsync(fd) != 0) { ::close(fd); fail(temporary, "sync a checkpoint"); }
-  ::close(fd);
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail(path, "rename a checkpoint into place");
+  io::write_file_atomically(path, text, temporary);
 }
 
 void ProofJournal::remove_checkpoint(const std::string& member) const { std::remove(checkpoint_path(member).c_str()); }

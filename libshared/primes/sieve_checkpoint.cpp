@@ -1,16 +1,14 @@
 /// @file sieve_checkpoint.cpp
 #include "primes/sieve_checkpoint.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 
+#include "io/atomic_file.hpp"
 #include "io/error.hpp"
 
 namespace tk::primes {
@@ -100,25 +98,7 @@ void save_checkpoint(const std::string& path, const GeneralizedSieve& sieve, con
   });
   put_u64(bytes, fnv1a(bytes));
 
-  const std::string temporary = path + ".tmp";
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail(temporary, "create");
-  for (std::size_t done = 0; done < bytes.size();) {
-    const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (wrote < 0 && errno == EINTR) continue;
-    if (wrote <= 0) { ::close(fd); fail(temporary, "write"); }
-    done += static_cast<std::size_t>(wrote);
-  }
-  if (::fsync(fd) != 0) { ::close(fd); fail(temporary, "sync"); }
-  if (::close(fd) != 0) fail(temporary, "close");
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail(path, "rename into place");
-  // The rename itself is durable once the directory is synced.
-  std::string directory = std::filesystem::path(path).parent_path().string();
-  const int dir = ::open(directory.empty() ? "." : directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
-  }
+  io::write_file_atomically(path, bytes, path + ".tmp");
 }
 
 std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const std::string& identity,

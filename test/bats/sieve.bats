@@ -28,28 +28,6 @@ long_reference() {
   cp "$BATS_FILE_TMPDIR/long.factors" want.factors
 }
 
-# wait_for FILE [SECONDS]: polls until FILE exists; fails after SECONDS (default 60).
-wait_for() {
-  local tries=$(( ${2:-60} * 20 ))
-  while [ ! -e "$1" ]; do
-    tries=$((tries - 1))
-    [ "$tries" -gt 0 ] || { echo "timed out waiting for $1"; return 1; }
-    sleep 0.05
-  done
-}
-
-# wait_for_handler PID: polls until process PID catches SIGINT (bit 2 of
-# SigCgt in /proc/PID/status), so a signal sent next meets the tool's handler.
-wait_for_handler() {
-  local tries=1200 mask
-  while :; do
-    mask=$(awk '/^SigCgt:/ { print $2 }' "/proc/$1/status" 2>/dev/null)
-    [ -n "$mask" ] && (( 0x$mask & 2 )) && return 0
-    tries=$((tries - 1))
-    [ "$tries" -gt 0 ] || { echo "process $1 never caught SIGINT"; return 1; }
-    sleep 0.05
-  done
-}
 
 # gp_lines EXPR: runs a PARI/GP expression and prints its output.
 gp_lines() {

@@ -11,3 +11,26 @@ FIXTURES="$TOOLKIT_ROOT/test/fixtures"
 
 # json-field FIELD < records: one value per line (test/bin, plain python3).
 PATH="$TOOLKIT_ROOT/test/bin:$PATH"
+
+# wait_for FILE [SECONDS]: polls until FILE (a glob is fine) exists; fails after SECONDS (default 60).
+wait_for() {
+  local tries=$(( ${2:-60} * 20 ))
+  until compgen -G "$1" > /dev/null; do
+    tries=$((tries - 1))
+    [ "$tries" -gt 0 ] || { echo "timed out waiting for $1"; return 1; }
+    sleep 0.05
+  done
+}
+
+# wait_for_handler PID: polls until process PID catches SIGINT (bit 2 of
+# SigCgt in /proc/PID/status), so a signal sent next meets the tool's handler.
+wait_for_handler() {
+  local tries=1200 mask
+  while :; do
+    mask=$(awk '/^SigCgt:/ { print $2 }' "/proc/$1/status" 2>/dev/null)
+    [ -n "$mask" ] && (( 0x$mask & 2 )) && return 0
+    tries=$((tries - 1))
+    [ "$tries" -gt 0 ] || { echo "process $1 never caught SIGINT"; return 1; }
+    sleep 0.05
+  done
+}

@@ -95,11 +95,7 @@ int main(int argc, char** argv) {
   tool.add_input_files();
 
   return tool.run(argc, argv, [&] {
-    const auto slash = shard.find('/');
-    if (slash == std::string::npos) throw tk::Error("--shard '" + shard + "' is not K/N");
-    const std::uint64_t shard_index = tk::cli::parse_count(shard.substr(0, slash), "--shard");
-    const std::uint64_t shard_count = tk::cli::parse_count(shard.substr(slash + 1), "--shard");
-    if (shard_count == 0 || shard_index == 0 || shard_index > shard_count) throw tk::Error("--shard needs 1 <= K <= N");
+    const auto [shard_slot, shard_count] = tk::cli::parse_shard(shard, "--shard");
     if (!(checkpoint_seconds > 0)) throw tk::Error("--checkpoint-every must be a positive number of seconds");
 
     std::unique_ptr<tk::primes::ProofJournal> journal;
@@ -208,7 +204,7 @@ int main(int argc, char** argv) {
           tool.warn(e.located_message());
           continue;
         }
-        if (index++ % shard_count != shard_index - 1) continue;
+        if (index++ % shard_count != shard_slot) continue;
         job.where = reader.where();
         // Invalid UTF-8 in a passed-through field must not stop the run: replace it in the key.
         job.key = "start=" + start + " " + job.record.dump(-1, ' ', false, tk::Record::error_handler_t::replace);

@@ -27,17 +27,6 @@ struct FormOptions {
   bool newpgen = false, abc = false, abcd = false, resume = false, riesel_condition = false;
 };
 
-void parse_shard(const std::string& text, tk::primes::SieveRunOptions& run) {
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) throw tk::Error("--shard '" + text + "' is not K/N");
-  const std::uint64_t index = tk::cli::parse_count(text.substr(0, slash), "--shard");
-  const std::uint64_t count = tk::cli::parse_count(text.substr(slash + 1), "--shard");
-  if (count == 0 || count > 1000000 || index == 0 || index > count)
-    throw tk::Error("--shard '" + text + "' needs 1 <= K <= N <= 1000000");
-  run.shard_index = static_cast<unsigned>(index - 1);
-  run.shard_count = static_cast<unsigned>(count);
-}
-
 tk::primes::SieveSpec spec_from(tk::primes::SieveForm form, const FormOptions& o) {
   tk::primes::SieveSpec spec;
   spec.form = form;
@@ -66,7 +55,7 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
   if (!(o.checkpoint_seconds > 0)) throw tk::Error("--checkpoint-every must be a positive number of seconds");
   tk::primes::SieveRunOptions run;
   run.threads = tool.common().threads;
-  parse_shard(o.shard, run);
+  std::tie(run.shard_index, run.shard_count) = tk::cli::parse_shard(o.shard, "--shard");
   run.factors_path = o.factors;
   run.checkpoint_path = o.checkpoint;
   run.checkpoint_seconds = o.checkpoint_seconds;
