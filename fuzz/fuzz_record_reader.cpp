@@ -34,43 +34,10 @@
 
 namespace {
 
+using tk::fuzz::MemoryFile;
+using tk::fuzz::null_output;
+
 constexpr std::size_t kMaxBits = 4096;
-
-/// An in-memory file with a path that fopen() accepts, reused across runs.
-class MemoryFile {
- public:
-  explicit MemoryFile(const char* name) {
-    fd_ = memfd_create(name, 0);
-    if (fd_ < 0) {
-      std::perror("memfd_create");
-      std::abort();
-    }
-    path_ = "/proc/self/fd/" + std::to_string(fd_);
-  }
-  void assign(std::string_view bytes) {
-    if (ftruncate(fd_, 0) != 0) std::abort();
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-      const ssize_t n = pwrite(fd_, bytes.data() + done, bytes.size() - done, static_cast<off_t>(done));
-      if (n <= 0) std::abort();
-      done += static_cast<std::size_t>(n);
-    }
-  }
-  const std::string& path() const { return path_; }
-
- private:
-  int fd_ = -1;
-  std::string path_;
-};
-
-std::FILE* null_output() {
-  static std::FILE* out = [] {
-    std::FILE* f = std::fopen("/dev/null", "w");
-    if (!f) std::abort();
-    return f;
-  }();
-  return out;
-}
 
 std::size_t lines_in(std::string_view bytes) {
   std::size_t lines = 0;

@@ -42,37 +42,12 @@
 
 namespace {
 
+using tk::fuzz::MemoryFile;
+
 constexpr std::string_view kMagic = "toolkit-sieve-checkpoint 1\n";
 /// `sed -n 2p` of the seeds made by `sieve twin --n 1000 --k 1:5000 --pmax 1e4 --checkpoint F`.
 const std::string kIdentity = "form=twin length=1 n=1000 k=1:5000 pmax=10000 shard=1/1";
 constexpr std::uint64_t kCandidates = 5000;
-
-/// An in-memory file with a path that fopen() accepts, reused across runs.
-class MemoryFile {
- public:
-  explicit MemoryFile(const char* name) {
-    fd_ = memfd_create(name, 0);
-    if (fd_ < 0) {
-      std::perror("memfd_create");
-      std::abort();
-    }
-    path_ = "/proc/self/fd/" + std::to_string(fd_);
-  }
-  void assign(std::string_view bytes) {
-    if (ftruncate(fd_, 0) != 0) std::abort();
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-      const ssize_t n = pwrite(fd_, bytes.data() + done, bytes.size() - done, static_cast<off_t>(done));
-      if (n <= 0) std::abort();
-      done += static_cast<std::size_t>(n);
-    }
-  }
-  const std::string& path() const { return path_; }
-
- private:
-  int fd_ = -1;
-  std::string path_;
-};
 
 /// FNV-1a 64, as the checkpoint's trailer (reimplemented, not shared, so a
 /// change of the library's checksum shows as a seed that no longer loads).

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "primes/trial_division.hpp"
+
 
 namespace tk::primes {
 
@@ -52,16 +54,11 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
     return proof;
   }
   // A small factor settles it at once (and keeps LLR's choice of P valid: P = 4 needs 3 not dividing N).
-  for (unsigned long p = 3; p < 1000; p += 2) {
-    if (number.value > p && mpz_divisible_ui_p(number.value.get_mpz_t(), p)) {
-      bool prime = true;
-      for (unsigned long d = 3; d * d <= p; d += 2) prime = prime && p % d != 0;
-      if (!prime) continue;
-      proof.verdict = Verdict::composite;
-      proof.test = "trial";
-      proof.witness = fmt::format("factor {}", p);
-      return proof;
-    }
+  if (const std::uint64_t p = trial_factor(number, 1000)) {
+    proof.verdict = Verdict::composite;
+    proof.test = "trial";
+    proof.witness = fmt::format("factor {}", p);
+    return proof;
   }
   if (!special) {
     TestPlan bpsw;

@@ -92,7 +92,9 @@ __attribute__((target("avx2"))) void half_power_avx2(u32* x, const u32* p, const
 // GCC 12's AVX-512 headers trip -Wuninitialized on their own masked builtins (GCC bug 105593).
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
+#if !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 __attribute__((target("avx512f"))) void half_power_avx512(u32* x, const u32* p, const u32* p_inverse, std::uint64_t n,
                                                           int top_bit) {
   constexpr std::size_t kVectors = kLanes / 8;

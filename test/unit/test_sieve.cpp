@@ -226,12 +226,14 @@ TEST(SieveSpec, RieselConditionOfTheSeed) {
   spec.parametrised = true;
   spec.c = 30030;  // 2*3*5*7*11*13
   // N = h0*2^40 - 1 mod 13 for odd h0: find one non-residue and one residue.
-  std::uint64_t good = 0, bad = 0;
+  std::uint64_t good = 0, bad = 0;  // the first odd h0 of each kind
   for (std::uint64_t h0 = 1; h0 < 100 && (!good || !bad); h0 += 2) {
     const std::uint64_t residue = (h0 % 13 * pow_mod(2, 40, 13) + 12) % 13;
     const bool non_residue = pow_mod(residue, 6, 13) == 12;  // Euler's criterion
-    (non_residue ? good : bad) = good && non_residue ? good : (bad && !non_residue ? bad : h0);
+    std::uint64_t& slot = non_residue ? good : bad;
+    if (!slot) slot = h0;
   }
+  ASSERT_TRUE(good && bad);
   spec.h0 = good;
   EXPECT_NO_THROW(spec.check_riesel_condition());
   spec.h0 = bad;
