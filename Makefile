@@ -1,7 +1,7 @@
 # Wraps CMake. `make demo` and `make test` install what is missing first.
 include Makefile.inc
 
-.PHONY: all deps test-deps bench-deps build demo test test-fast test-sanitize \
+.PHONY: all deps test-deps bench-deps build demo test test-fast test-sanitize test-slow \
         bench fuzz man install clean
 
 all: build
@@ -36,6 +36,10 @@ test-sanitize: deps test-deps
 	$(CMAKE) --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && TOOLKIT_SANITIZED=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  $(CTEST) --output-on-failure -j $(JOBS)
+
+# Slow tests outside the default suite: the seed's record primes (minutes).
+test-slow: build
+	TOOLKIT_BIN="$(CURDIR)/$(BUILD_DIR)" bats --jobs $(JOBS) test/slow
 
 bench: bench-deps
 	$(CMAKE) -S . -B $(BUILD_DIR) -DTOOLKIT_BENCH=ON

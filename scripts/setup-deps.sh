@@ -6,7 +6,7 @@ set -euo pipefail
 
 # Build and runtime: compiler, CMake, the libraries every tool links.
 build_pkgs=(g++ cmake make pkg-config libcli11-dev libgmp-dev libeigen3-dev
-            libfmt-dev nlohmann-json3-dev libprimesieve-dev scdoc)
+            libfmt-dev nlohmann-json3-dev libprimesieve-dev libfftw3-dev scdoc)
 # Tests: unit tests, CLI tests, the PARI/GP oracle, sanitizer runtime.
 test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp python3 parallel)
 # Benchmarks: peers timed in the same run (never runtime dependencies).

@@ -23,13 +23,32 @@ std::uint64_t decimal_digits(const mpz_class& value) {
   return value < ten ? digits - 1 : digits;
 }
 
+/// k*2^n-1 or k*2^n+1 with k odd and below 2^n (2^n-1 before 2^n+1), if
+/// `value` is one of them.
+std::optional<KbncForm> riesel_or_proth_form(const mpz_class& value) {
+  if (value < 3) return std::nullopt;
+  for (const int c : {-1, 1}) {
+    mpz_class rest = value - c;
+    const mp_bitcnt_t n = mpz_scan1(rest.get_mpz_t(), 0);
+    rest >>= n;
+    if (mpz_sizeinbase(rest.get_mpz_t(), 2) <= n) return KbncForm{rest, 2, n, c};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 MemberProof prove_member(const Member& member, const ProofPlan& plan) {
   MemberProof proof;
   const Number& number = member.number;
   proof.digits = decimal_digits(number.value);
-  const auto& form = number.form;
+  // A number written out in digits or in another shape may still be
+  // k*2^n+-1 (6143 = 3*2^11-1, 4^2+1 = 1*2^4+1): find that form, so it
+  // gets a proof rather than BPSW.
+  std::optional<KbncForm> found_form = number.form;
+  if (!found_form || found_form->b != 2 || (found_form->c != 1 && found_form->c != -1))
+    if (auto riesel_or_proth = riesel_or_proth_form(number.value)) found_form = riesel_or_proth;
+  const auto& form = found_form;
   std::uint64_t k = 0, n = 0;
   bool special = form && form->b == 2 && (form->c == 1 || form->c == -1) && form->k > 0;
   if (special) {

@@ -105,21 +105,29 @@ std::string ProofJournal::checkpoint_path(const std::string& member) const {
   return fmt::format("{}/checkpoint-{:016x}", directory_, fnv1a(member));
 }
 
-std::optional<ProofState> ProofJournal::load_checkpoint(const std::string& member) const {
-  std::ifstream in(checkpoint_path(member), std::ios::binary);
+std::optional<ProofState> ProofJournal::load_checkpoint(const std::string& member,
+                                                      const std::function<void(const std::string&)>& warn) const {
+  const std::string path = checkpoint_path(member);
+  std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
+  auto damaged = [&](const std::string& why) -> std::optional<ProofState> {
+    if (warn) warn(fmt::format("{}: checkpoint {}", path, why));
+    return std::nullopt;
+  };
   std::string magic, name, iteration, value, checksum;
   if (!std::getline(in, magic) || !std::getline(in, name) || !std::getline(in, iteration) || !std::getline(in, value) ||
       !std::getline(in, checksum))
-    return std::nullopt;
+    return damaged("is truncated");
   const std::string body = magic + "\n" + name + "\n" + iteration + "\n" + value + "\n";
-  if (magic != kCheckpointMagic || name != member || checksum != fmt::format("{:016x}", fnv1a(body))) return std::nullopt;
+  if (magic != kCheckpointMagic) return damaged("is not a riesel checkpoint");
+  if (checksum != fmt::format("{:016x}", fnv1a(body))) return damaged("fails its checksum");
+  if (name != member) return damaged("belongs to " + name);
   ProofState state;
   try {
     state.iteration = std::stoull(iteration);
-    if (state.value.set_str(value, 16) != 0) return std::nullopt;
+    if (state.value.set_str(value, 16) != 0 || state.value < 0) return damaged("holds no valid residue");
   } catch (const std::exception&) {
-    return std::nullopt;
+    return damaged("holds no valid iteration");
   }
   return state;
 }

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -36,7 +37,12 @@ class ProofJournal {
   /// Appends a line to lresults.txt and syncs.
   void log_result(const std::string& line);
 
-  std::optional<ProofState> load_checkpoint(const std::string& member) const;
+  /// The saved state of a proof of `member`; nothing when there is none,
+  /// or when the file is damaged or not this member's (then `warn` hears
+  /// "FILE: checkpoint <why>", and the proof starts over: a bad checkpoint
+  /// never gives a verdict).
+  std::optional<ProofState> load_checkpoint(const std::string& member,
+                                            const std::function<void(const std::string&)>& warn = {}) const;
   void save_checkpoint(const std::string& member, const ProofState& state) const;
   void remove_checkpoint(const std::string& member) const;
 

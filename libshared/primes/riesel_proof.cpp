@@ -2,6 +2,7 @@
 #include "primes/riesel_proof.hpp"
 
 #include "io/error.hpp"
+#include "primes/fft_squaring.hpp"
 #include "primes/modulus.hpp"
 
 namespace tk::primes {
@@ -21,12 +22,16 @@ int jacobi(std::int64_t a, const mpz_class& N) {
   return mpz_jacobi(top.get_mpz_t(), N.get_mpz_t());
 }
 
+bool reports_now(const ProofState& state, const ProofOptions& options) {
+  return options.report_every && state.iteration % options.report_every == 0 && state.iteration;
+}
+
 /// Squares `value` (|value| < N) m times modulo N, subtracting `minus` each
 /// time; reports and honours cancellation between rounds.
-bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
+bool square_rounds_gmp(const Modulus& N, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
   mpz_class square;
   for (; state.iteration < last; ++state.iteration) {
-    if (options.report_every && state.iteration % options.report_every == 0 && state.iteration) {
+    if (reports_now(state, options)) {
       const bool cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
       if (options.progress) {
         N.reduce(state.value.get_mpz_t());
@@ -40,6 +45,39 @@ bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long
   }
   N.reduce(state.value.get_mpz_t());
   return true;
+}
+
+bool square_rounds_fft(FftSquaring& fft, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
+  fft.load(state.value);
+  for (; state.iteration < last; ++state.iteration) {
+    if (reports_now(state, options)) {
+      const bool cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
+      if (options.progress) {
+        fft.store(state.value);
+        if (!options.progress(state)) return false;
+      }
+      if (cancelled) return false;
+    }
+    fft.square_minus(static_cast<unsigned long>(minus));
+  }
+  fft.store(state.value);
+  return true;
+}
+
+/// Runs the rounds in the arithmetic the options ask for; the value enters
+/// and leaves reduced to [0, N).
+bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options,
+                   ProofResult& result) {
+  N.reduce(state.value.get_mpz_t());
+  std::unique_ptr<FftSquaring> fft;
+  if (options.arithmetic == Arithmetic::fft || (options.arithmetic == Arithmetic::automatic && N.bits() >= kFftMinBits)) {
+    fft = FftSquaring::create(*N.form());  // nothing for n < 64: GMP squares those
+  }
+  if (!fft) return square_rounds_gmp(N, state, last, minus, options);
+  const bool finished = square_rounds_fft(*fft, state, last, minus, options);
+  result.fft_length = fft->transform_length();
+  result.fft_fallbacks = fft->fallbacks();
+  return finished;
 }
 
 std::uint64_t low_64_bits(const mpz_class& value) {
@@ -101,7 +139,7 @@ ProofResult llr_prove(std::uint64_t k, std::uint64_t n, LlrStart start, const Pr
     }
     state.value = low;
   }
-  if (!square_rounds(N, state, n - 2, 2, options)) return result;
+  if (!square_rounds(N, state, n - 2, 2, options, result)) return result;
   result.iterations = state.iteration;
   result.res64 = low_64_bits(state.value);
   result.verdict = state.value == 0 ? Verdict::prime : Verdict::composite;
@@ -135,7 +173,7 @@ ProofResult proth_prove(std::uint64_t k, std::uint64_t n, const ProofOptions& op
     mpz_powm(power.get_mpz_t(), a.get_mpz_t(), exponent.get_mpz_t(), value.get_mpz_t());  // a^k: k has 64 bits at most
     state.value = power;
   }
-  if (!square_rounds(N, state, n - 1, 0, options)) return result;  // a^(k*2^(n-1))
+  if (!square_rounds(N, state, n - 1, 0, options, result)) return result;  // a^(k*2^(n-1))
   result.iterations = state.iteration;
   result.res64 = low_64_bits(state.value);
   result.verdict = state.value == value - 1 ? Verdict::prime : Verdict::composite;

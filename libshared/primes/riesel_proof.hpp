@@ -25,6 +25,12 @@ namespace tk::primes {
 
 enum class LlrStart { llr, d13 };
 
+/// How the squarings run: GMP's multiplication, the verified FFT
+/// (FftSquaring), or automatic (the FFT from kFftMinBits on, where it is
+/// faster here).
+enum class Arithmetic { automatic, gmp, fft };
+constexpr std::size_t kFftMinBits = 24000;
+
 /// Where a proof stands: the next iteration to run and its value mod N.
 struct ProofState {
   std::uint64_t iteration = 0;
@@ -39,6 +45,7 @@ struct ProofOptions {
   std::uint64_t report_every = 10000;
   const std::atomic<bool>* cancel = nullptr;
   std::optional<ProofState> resume_from;
+  Arithmetic arithmetic = Arithmetic::automatic;
 };
 
 struct ProofResult {
@@ -46,6 +53,8 @@ struct ProofResult {
   std::uint64_t parameter = 0;         ///< P (LLR) or a (Proth)
   std::uint64_t res64 = 0;             ///< low 64 bits of the last residue
   std::uint64_t iterations = 0;
+  std::size_t fft_length = 0;     ///< 0 when GMP squared
+  std::uint64_t fft_fallbacks = 0;  ///< squares the FFT failed to verify, redone by GMP
 };
 
 /// P for k*2^n-1 as `start` chooses it; nothing when no P up to a bound

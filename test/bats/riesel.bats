@@ -137,20 +137,35 @@ for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"], r.get(\"
   assert_output --regexp ' [0-9A-F]{16}$'
 }
 
-@test "expressions, {\"number\"} and {\"expr\"} records: plain numbers never get more than probable-prime" {
-  # 100003 is prime, 2^127-1 too (a Mersenne prime), written out in decimal;
+@test "expressions, {\"number\"} and {\"expr\"} records: numbers of no k*2^n+-1 shape never get more than probable-prime" {
+  # 100003 is prime and neither k*2^n-1 nor k*2^n+1 with k < 2^n;
   # 3^40*2^90-1 has the factor 11 (3^40 = 1 mod 11 and 2^90 = 1 mod 11).
-  printf '{"number":"100003"}\n{"number":"170141183460469231731687303715884105727"}\n{"expr":"3^40*2^90-1"}\n' > in.jsonl
+  printf '{"number":"100003"}\n{"expr":"3^40*2^90-1"}\n' > in.jsonl
   run bash -c "riesel in.jsonl | python3 -c '
 import json, sys
 for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"], r.get(\"witness\", \"-\"))'"
   assert_success
   assert_output "probable-prime bpsw -
-probable-prime bpsw -
 composite trial factor 11"
-  # The same Mersenne prime as an expression has the k*2^n-1 shape: a proof.
-  run bash -c "echo '2^127-1' | riesel | json-field verdict"
-  assert_output "prime"
+}
+
+@test "a number written out in digits that is k*2^n+-1 gets LLR or Proth, like its expression" {
+  # 2^127-1 (a Mersenne prime) in decimal; 6143 = 3*2^11-1 and 12289 =
+  # 3*2^12+1 (both prime: A002235 and A002253 have n = 11 and 12);
+  # 6151 = 3*2^11+7 is not of the shape (prime: BPSW).
+  printf '{"number":"170141183460469231731687303715884105727"}\n' > in.jsonl
+  printf '6143\n12289\n6151\n' > in.txt
+  run bash -c "riesel in.jsonl in.txt | python3 -c '
+import json, sys
+for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"])'"
+  assert_success
+  assert_output "prime llr
+prime llr
+prime proth
+probable-prime bpsw"
+  run bash -c "printf '6143\n12289\n' | riesel --state st > /dev/null && cut -d' ' -f1-3 st/lresults.txt"
+  assert_output "3*2^11-1 is prime!
+3*2^12+1 is prime!"
 }
 
 @test "CSV in and out: a header row with the tool's columns" {
@@ -318,16 +333,17 @@ for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"], \"a\" in
 }
 
 # 2*3^5+1 = 487 is prime; 4^2+1 = 17 is prime (and is 2^4+1, but written in base 4).
-@test "other bases and other c get BPSW and at best probable-prime" {
+@test "other bases and other c get BPSW and at best probable-prime, unless the value is k*2^n+-1" {
+  # 2*3^5+1 = 487 (prime) is no k*2^n+-1 with k < 2^n; 1*4^2+1 = 17 is
+  # 1*2^4+1 and 1*2^3+3 = 11 is 3*2^2-1, both proved.
   printf '{"k":2,"b":3,"n":5,"c":1}\n{"k":1,"b":4,"n":2,"c":1}\n{"k":1,"b":2,"n":3,"c":3}\n' > other.jsonl
   run bash -c "riesel other.jsonl | python3 -c '
 import json, sys
 for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"])'"
   assert_success
-  # 1*2^3+3 = 11 is prime.
   assert_output "probable-prime bpsw
-probable-prime bpsw
-probable-prime bpsw"
+prime proth
+prime llr"
 }
 
 # {"k":1,"n":1,"form":"riesel"} is 1*2^1-1 = 1: not prime, and n < 2 means no LLR.
@@ -643,7 +659,7 @@ prime"
 # 3*2^25690-1 (about 0.5 and 1 s here), each with a checkpoint when riesel is
 # killed: one gets a hex digit of its saved residue changed (trusted, it would
 # turn the prime into a composite), the other random bytes over all of it.
-@test "damaged checkpoints are ignored: the proofs start again and give the right verdicts" {
+@test "damaged checkpoints are reported and ignored: the proofs start again and give the right verdicts" {
   printf '3*2^18819-1\n3*2^25690-1\n' > two.txt
   riesel -j 2 --state st --checkpoint-every 0.1 two.txt > /dev/null 2>&1 3>&- &
   pid=$!
@@ -670,6 +686,9 @@ PY
   run --separate-stderr riesel -j 2 --state st two.txt
   assert_success
   echo "$output" > got.out
+  # One warning per damaged file, naming it and the member started over.
+  [ "$(grep -c '^riesel: st/checkpoint-[0-9a-f]*: checkpoint .*: proving 3\*2^[0-9]*-1 from the start$' <<< "$stderr")" -eq 2 ]
+  [[ "$stderr" == *"fails its checksum"* ]]
   run json-field verdict < got.out
   assert_output "prime
 prime"
@@ -714,7 +733,7 @@ prime"
 @test "invalid UTF-8 in a record (CSV field, random bytes) is no internal error" {
   run bash -c "printf 'id,number\n\xff,7\n' | riesel | json-field verdict"
   assert_success
-  assert_output "probable-prime"
+  assert_output "prime"  # 7 = 1*2^3-1: LLR
   for seed in 3 15 21 30; do
     python3 -c "
 import random, sys

@@ -74,13 +74,19 @@ int main(int argc, char** argv) {
                         "sieve or mrtest records, NewPGen/ABC files or expressions, and adds verdict, test, P or a, "
                         "res64 and seconds.",
                         "Numbers of other shapes get BPSW and at best probable-prime.\nSee riesel(1).");
-  std::string start = "llr", state_dir, shard = "1/1";
+  std::string start = "llr", state_dir, shard = "1/1", arithmetic = "auto";
   double checkpoint_seconds = 300;
   bool skip_bad = false;
   std::size_t max_bits = tk::primes::kDefaultMaxBits;
   CLI::App& app = tool.app();
   app.add_option("--start", start, "llr (LLR's choice of P) or d13 (the seed's D = 13, P = 11)")
       ->check(CLI::IsMember({"llr", "d13"}))
+      ->capture_default_str()
+      ->type_name("NAME");
+  app.add_option("--arithmetic", arithmetic,
+                 "auto, gmp (GMP's multiplication) or fft (FFTW, every square verified); auto takes the FFT from " +
+                     std::to_string(tk::primes::kFftMinBits) + " bits on")
+      ->check(CLI::IsMember({"auto", "gmp", "fft"}))
       ->capture_default_str()
       ->type_name("NAME");
   app.add_option("--state", state_dir, "keep a lock, a journal, lresults.txt and checkpoints in DIR; a re-run resumes")
@@ -112,9 +118,13 @@ int main(int argc, char** argv) {
       tk::primes::ProofOptions options;
       options.cancel = &g_cancel;
       options.report_every = 1000;
+      options.arithmetic = arithmetic == "gmp"   ? tk::primes::Arithmetic::gmp
+                           : arithmetic == "fft" ? tk::primes::Arithmetic::fft
+                                                 : tk::primes::Arithmetic::automatic;
       if (!journal) return options;
       const std::string name = member + " start=" + start;
-      options.resume_from = journal->load_checkpoint(name);
+      options.resume_from = journal->load_checkpoint(
+          name, [&](const std::string& problem) { tool.warn(problem + ": proving " + member + " from the start"); });
       auto last = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
       options.progress = [&, name, last](const tk::primes::ProofState& state) {
         const auto now = std::chrono::steady_clock::now();
