@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "io/error.hpp"
 #include "primes/trial_division.hpp"
 
 
@@ -34,6 +35,19 @@ std::optional<KbncForm> riesel_or_proth_form(const mpz_class& value) {
     if (mpz_sizeinbase(rest.get_mpz_t(), 2) <= n) return KbncForm{rest, 2, n, c};
   }
   return std::nullopt;
+}
+
+/// Why a number (of the form given, if any) has no LLR or Proth proof.
+std::string why_unprovable(const std::optional<KbncForm>& form) {
+  if (!form || form->b != 2 || (form->c != 1 && form->c != -1) || form->k <= 0)
+    return "it is not k*2^n-1 or k*2^n+1 with k below 2^n";
+  mpz_class odd_k = form->k;
+  const mp_bitcnt_t twos = mpz_scan1(odd_k.get_mpz_t(), 0);
+  odd_k >>= twos;
+  const std::uint64_t n = form->n + twos;
+  if (n < (form->c < 0 ? 2u : 1u)) return form->c < 0 ? "LLR needs n >= 2" : "Proth needs n >= 1";
+  if (mpz_sizeinbase(odd_k.get_mpz_t(), 2) > n) return "k (made odd) is not below 2^n";
+  return "k (made odd) has more than 64 bits";
 }
 
 }  // namespace
@@ -79,6 +93,7 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
     proof.witness = fmt::format("factor {}", p);
     return proof;
   }
+  if (!special && plan.require_proof) throw Error(fmt::format("{} cannot be proved: {}", proof.text, why_unprovable(form)));
   if (!special) {
     TestPlan bpsw;
     const TestOutcome outcome = test_number(number, bpsw);

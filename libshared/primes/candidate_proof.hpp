@@ -15,6 +15,10 @@ namespace tk::primes {
 
 struct ProofPlan {
   LlrStart start = LlrStart::llr;
+  /// A member with no LLR or Proth proof (k >= 2^n, n too small, another
+  /// shape) is an Error instead of a BPSW probable-prime, unless trial
+  /// division finds a factor.
+  bool require_proof = false;
   /// Options for the proof of one member, named by its text "k*2^n-1"
   /// (checkpoint hooks, cancellation); may be empty.
   std::function<ProofOptions(const std::string& member)> options_for;

@@ -79,7 +79,7 @@ oracle_gp() {
   run --separate-stderr riesel --help
   assert_success
   assert_output --partial "Usage: riesel"
-  for option in --start --state --checkpoint-every --shard --skip-bad --max-bits --csv --threads; do
+  for option in --start --arithmetic --require-proof --state --checkpoint-every --shard --skip-bad --max-bits --csv --threads; do
     assert_output --partial -- "$option"
   done
   [ -z "$stderr" ]
@@ -333,6 +333,23 @@ for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"], \"a\" in
 }
 
 # 2*3^5+1 = 487 is prime; 4^2+1 = 17 is prime (and is 2^4+1, but written in base 4).
+@test "--require-proof: a number with no LLR or Proth proof is an error with file:line, after the records before it" {
+  # 5*2^2-1 = 19: k >= 2^n; 3*2^1-1 = 5: LLR needs n >= 2; 100003: no
+  # k*2^n+-1 shape. 9*2^2-1 = 35 has the factor 5: composite is a proof.
+  printf '3*2^11-1\n9*2^2-1\n5*2^2-1\n3*2^11+1\n' > in.txt
+  run --separate-stderr riesel --require-proof in.txt
+  assert_failure 1
+  assert_line --index 0 --partial '"verdict":"prime","test":"llr"'
+  assert_line --index 1 --partial '"verdict":"composite","test":"trial"'
+  [ "${#lines[@]}" -eq 2 ]
+  [ "$stderr" = "riesel: in.txt:3: 5*2^2-1 cannot be proved: k (made odd) is not below 2^n" ]
+  run --separate-stderr bash -c "printf '{\"k\":3,\"n\":1,\"form\":\"riesel\"}\n{\"number\":\"100003\"}\n' | riesel --require-proof --skip-bad"
+  assert_success
+  [ -z "$output" ]
+  assert_equal "$stderr" "riesel: <stdin>:1: 3*2^1-1 cannot be proved: LLR needs n >= 2
+riesel: <stdin>:2: 100003 cannot be proved: it is not k*2^n-1 or k*2^n+1 with k below 2^n"
+}
+
 @test "other bases and other c get BPSW and at best probable-prime, unless the value is k*2^n+-1" {
   # 2*3^5+1 = 487 (prime) is no k*2^n+-1 with k < 2^n; 1*4^2+1 = 17 is
   # 1*2^4+1 and 1*2^3+3 = 11 is 3*2^2-1, both proved.

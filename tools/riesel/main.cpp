@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
                         "Numbers of other shapes get BPSW and at best probable-prime.\nSee riesel(1).");
   std::string start = "llr", state_dir, shard = "1/1", arithmetic = "auto";
   double checkpoint_seconds = 300;
-  bool skip_bad = false;
+  bool skip_bad = false, require_proof = false;
   std::size_t max_bits = tk::primes::kDefaultMaxBits;
   CLI::App& app = tool.app();
   app.add_option("--start", start, "llr (LLR's choice of P) or d13 (the seed's D = 13, P = 11)")
@@ -95,6 +95,8 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->type_name("S");
   app.add_option("--shard", shard, "prove only candidates K, K+N, K+2N, ... (K/N)")->capture_default_str()->type_name("K/N");
+  app.add_flag("--require-proof", require_proof,
+               "a number with no LLR or Proth proof (k >= 2^n, n too small, another shape) is an error, not BPSW");
   app.add_flag("--skip-bad", skip_bad, "report malformed records on stderr and go on");
   app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits")->type_name("BITS");
   tool.add_threads_option();
@@ -114,6 +116,7 @@ int main(int argc, char** argv) {
 
     tk::primes::ProofPlan plan;
     plan.start = start == "d13" ? tk::primes::LlrStart::d13 : tk::primes::LlrStart::llr;
+    plan.require_proof = require_proof;
     plan.options_for = [&](const std::string& member) {
       tk::primes::ProofOptions options;
       options.cancel = &g_cancel;
