@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include <fmt/format.h>
+
 #include "io/csv.hpp"
 #include "io/error.hpp"
 
@@ -70,6 +72,42 @@ void RecordWriter::write_csv(const Record& record) {
     if (i) line_ += ',';
     auto found = record.find(columns_[i]);
     if (found != record.end()) append_csv_field(line_, cell_text(*found));
+  }
+  line_ += '\n';
+  emit(line_);
+}
+
+void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t integers) {
+  line_.clear();
+  auto append = [&](std::size_t i) {
+    if (integers >> i & 1)
+      fmt::format_to(std::back_inserter(line_), "{}", static_cast<long long>(values[i]));
+    else
+      fmt::format_to(std::back_inserter(line_), "{}", values[i]);
+  };
+  if (format_ == OutputFormat::csv) {
+    if (!numbers_header_done_) {
+      for (std::size_t i = 0; i < declared_.size(); ++i) {
+        if (i) line_ += ',';
+        append_csv_field(line_, declared_[i]);
+      }
+      line_ += '\n';
+      numbers_header_done_ = true;
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (i) line_ += ',';
+      append(i);
+    }
+  } else {
+    line_ += '{';
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (i) line_ += ',';
+      line_ += '"';
+      line_ += declared_[i];
+      line_ += "\":";
+      append(i);
+    }
+    line_ += '}';
   }
   line_ += '\n';
   emit(line_);

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,11 @@ class RecordWriter {
 
   /// Throws Error on a write failure, or (CSV) for a field that is not a column.
   void write(const Record& record);
+  /// Fast path for long numeric streams (pulses, time series): one number
+  /// per declared field, in order; bit i of `integers` marks value i as an
+  /// integer. The same output as write() of the equivalent record, without
+  /// building one.
+  void write_numbers(std::span<const double> values, std::uint64_t integers);
   /// Flushes and reports a write error as Error.
   void flush();
 
@@ -40,6 +47,7 @@ class RecordWriter {
   std::vector<std::string> declared_;
   std::vector<std::string> columns_;
   std::string line_;
+  bool numbers_header_done_ = false;
   std::chrono::steady_clock::time_point last_flush_;
 };
 

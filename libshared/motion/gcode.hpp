@@ -1,0 +1,170 @@
+/// @file gcode.hpp
+/// @brief RS274/NGC (LinuxCNC/grbl dialect) subset: one source line is
+/// lexed into words, and the interpreter keeps the modal state as LinuxCNC
+/// does and turns each block into motions in millimetres, absolute
+/// machine coordinates (no work offsets are applied: G54.. are reported,
+/// not executed).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tk::motion {
+
+struct Vec3 {
+  double x = 0, y = 0, z = 0;
+  double& operator[](int axis) { return axis == 0 ? x : axis == 1 ? y : z; }
+  double operator[](int axis) const { return axis == 0 ? x : axis == 1 ? y : z; }
+};
+
+/// One word: a letter (upper case) and its number as written.
+struct GcodeWord {
+  char letter = 0;
+  double value = 0;
+};
+
+/// A lexed line. Comments are dropped (the text of "(MSG, ...)" is kept
+/// in `message`); `block_delete` is set for a leading '/'; `percent` for
+/// a '%' tape marker line. N (line number) words are checked and dropped.
+struct GcodeLine {
+  std::vector<GcodeWord> words;
+  bool block_delete = false;
+  bool percent = false;
+  std::string message;
+};
+
+/// Lexes one line (a trailing CR of a CRLF file is blank space). Letters
+/// are case-insensitive, words may be packed ("G00G21") and blanks may sit
+/// anywhere inside a word, as LinuxCNC ignores them. Throws tk::Error (no
+/// location: the caller adds file and line) for an unclosed or nested
+/// comment, a letter without a number, a bad number ("1.2.3", "--1", a
+/// number longer than 64 characters, inf, nan), a character that is no
+/// G-code, control bytes (bytes 0x80 and above only inside comments, for
+/// UTF-8 text), '#' parameters, '[' expressions and 'O' words (subroutines
+/// and macros are not supported).
+GcodeLine lex_gcode_line(std::string_view text);
+
+enum class MotionKind : std::uint8_t { rapid, linear, arc, dwell };
+
+/// One motion in mm and seconds. For arcs: `center` (the third axis
+/// component equals start's), the plane's axes (`axis0`, `axis1`, normal
+/// `axis2`: G17 = 0,1,2; G18 = 2,0,1; G19 = 1,2,0), `clockwise` seen from
+/// the positive normal axis, `turns` extra full turns (P word, 0 for one
+/// arc); the normal axis moves linearly from start to end (helix). An arc
+/// whose end equals its start in the plane is a full circle. The end
+/// radius may differ slightly from the start radius (LinuxCNC's tolerance):
+/// the radius then changes linearly along the arc.
+struct Motion {
+  MotionKind kind = MotionKind::linear;
+  Vec3 start, end;
+  double feed = 0;  ///< mm/s along the path; 0 for rapid (the machine's maximum)
+  /// G93: `duration` is the block's time in s (`feed` is then the path
+  /// length over that time, for information).
+  bool inverse_time = false;
+  double duration = 0;  ///< G93 blocks, and G4 dwells (s)
+  Vec3 center;
+  int axis0 = 0, axis1 = 1, axis2 = 2;
+  bool clockwise = false;
+  std::uint64_t turns = 0;
+  std::size_t source_line = 0;  ///< 1-based line of the block
+};
+
+/// The angle an arc sweeps, in radians: (0, 2π] from start to end in its
+/// direction (2π when the end equals the start in the plane), plus 2π per
+/// extra turn.
+double arc_sweep(const Motion& arc);
+
+struct InterpreterOptions {
+  bool lenient = false;  ///< skip unsupported motion words with a warning instead of failing
+  /// Largest |coordinate| in mm accepted (beyond it the step counters could overflow).
+  double max_coordinate_mm = 1e6;
+};
+
+struct GcodeBlock;  // one line's words sorted out (gcode_block.hpp)
+
+/// Modal state as LinuxCNC keeps it, and what it did not execute.
+///
+/// Choices where the dialects differ or LinuxCNC leaves it to the operator:
+/// - lines starting with '/' are skipped (the block delete switch is on);
+/// - lines after M2/M30 are ignored (LinuxCNC stops reading there);
+/// - F is read in the units in effect after the line's own G20/G21, and a
+///   feed rate keeps its speed across later unit changes; leaving G93 for
+///   G94 clears it (a G93 F is a time, not a speed);
+/// - G70/G71 (Mach3, older Fanuc) are inch/mm like G20/G21;
+/// - G80 on a line with G0-G3 ("G00 G90 G80", Mach3/Fanuc, where G80 only
+///   cancels canned cycles) is ignored; alone it cancels the motion mode;
+/// - the startup motion mode is G0 (grbl, Mach3), not LinuxCNC's G80;
+/// - an M code that takes P (M62-M66...) owns the line's P, so an arc on
+///   that line makes one turn;
+/// - unknown G codes are errors even when lenient (their effect is unknown).
+class GcodeInterpreter {
+ public:
+  explicit GcodeInterpreter(InterpreterOptions options = {});
+
+  /// Executes one lexed line (source line `line_number`, 1-based),
+  /// appending its motions to `out` in order. Throws tk::Error (no
+  /// location; the interpreter's state is then unspecified) on: two words
+  /// of one modal group, a letter twice, an unknown G code, a word nothing
+  /// on the line uses (R with G1), G1/G2/G3 without a feed rate (F0 or
+  /// none yet in G94; no F on the line in G93), a negative F, an arc with
+  /// centre words of the wrong plane, with neither or both of R and centre
+  /// words, with a zero radius or with a centre whose end radius differs
+  /// from the start radius by more than 0.5 mm, or by more than 0.005 mm
+  /// and 0.1% (LinuxCNC's rule; inches: 0.05 in, 0.0005 in), an R arc
+  /// whose chord exceeds 2R, axis words with no motion mode (after G80),
+  /// and a coordinate beyond max_coordinate_mm. Words it cannot honour
+  /// (G41/G42 cutter compensation, G33 and G76 threading, canned cycles
+  /// G73 G81-G89, G38.x probing, G28/G30 homing, G92 offsets, G10, G5
+  /// splines, G95, A B C U V W axes...) are errors too unless
+  /// options.lenient, which skips the word with a warning through `warn`,
+  /// and the line's motion with it when the word owns the axis words (a
+  /// motion mode such as G81, which also skips later lines in that mode,
+  /// or G28, G92...).
+  void execute(const GcodeLine& line, std::size_t line_number, std::vector<Motion>& out);
+
+  /// Warnings (lenient skips) go here; default: dropped.
+  void on_warning(std::function<void(const std::string&)> warn) { warn_ = std::move(warn); }
+
+  const Vec3& position() const { return position_; }
+  /// Words accepted and not acted on, with how many times they came: M
+  /// codes other than M2/M30 ("M3", "M6", "M62": M03 counts as "M3"), S, T,
+  /// H, D, and G40 G43 G49 G53 G54-G59.3 G61 G61.1 G64 G96 G97 G98 G99 (and
+  /// G80 when ignored). Argument words of these (M62 P, G64 P Q) are not
+  /// counted. Modal codes that act (G17, G20, G90...) are not here.
+  const std::map<std::string, std::uint64_t>& unused_words() const { return unused_; }
+  /// Lines executed that hold a word other than N (blank, comment-only,
+  /// '%' and block-deleted lines do not count).
+  std::uint64_t blocks() const { return blocks_; }
+  bool program_ended() const { return ended_; }  ///< M2 or M30 seen
+
+ private:
+  bool skip_unsupported(GcodeBlock& block);
+  void record_unused(GcodeBlock& block);
+  void set_modes(GcodeBlock& block);
+  void move(GcodeBlock& block, bool skip_motion, std::size_t line_number, std::vector<Motion>& out);
+  void arc(GcodeBlock& block, Motion& motion) const;
+  void warn(const std::string& message) const;
+  double unit() const { return inches_ ? 25.4 : 1.0; }  ///< mm per program unit
+
+  InterpreterOptions options_;
+  std::function<void(const std::string&)> warn_;
+  Vec3 position_;
+  /// 0 G0, 1 G1, 2 G2, 3 G3, -1 none (G80), -2 an unsupported mode that
+  /// lenient skipped (`skipped_mode_` names it).
+  int motion_mode_ = 0;
+  std::string skipped_mode_;
+  int plane_ = 17;
+  bool inches_ = false, incremental_ = false, arc_incremental_ = true, inverse_time_ = false;
+  double feed_ = 0;  ///< mm/min (converted from in/min)
+  std::map<std::string, std::uint64_t> unused_;
+  std::uint64_t blocks_ = 0;
+  bool ended_ = false;
+};
+
+}  // namespace tk::motion

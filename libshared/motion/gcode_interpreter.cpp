@@ -1,0 +1,283 @@
+/// @file gcode_interpreter.cpp
+/// @brief The modal RS274/NGC interpreter: modal state, units and distance
+/// modes, straight moves, dwells, and arcs in centre (I/J/K) and radius (R)
+/// format.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "io/error.hpp"
+#include "motion/gcode.hpp"
+#include "motion/gcode_block.hpp"
+
+namespace tk::motion {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+double arc_sweep(const Motion& arc) {
+  const auto angle = [&arc](const Vec3& point) {
+    return std::atan2(point[arc.axis1] - arc.center[arc.axis1], point[arc.axis0] - arc.center[arc.axis0]);
+  };
+  const double start = angle(arc.start), end = angle(arc.end);
+  double sweep = arc.clockwise ? start - end : end - start;
+  if (sweep <= 0) sweep += 2 * kPi;
+  return sweep + 2 * kPi * static_cast<double>(arc.turns);
+}
+
+GcodeInterpreter::GcodeInterpreter(InterpreterOptions options) : options_(options) {}
+
+void GcodeInterpreter::warn(const std::string& message) const {
+  if (warn_) warn_(message);
+}
+
+void GcodeInterpreter::execute(const GcodeLine& line, std::size_t line_number, std::vector<Motion>& out) {
+  // LinuxCNC stops reading at M2/M30, so whatever follows is ignored; '/'
+  // lines are skipped as with the block delete switch on.
+  if (ended_ || line.block_delete) return;
+  GcodeBlock block;
+  for (const GcodeWord& word : line.words) block.add(word);
+  if (block.empty()) return;
+  ++blocks_;
+
+  const bool skip_motion = skip_unsupported(block);
+  record_unused(block);
+  // The rest in LinuxCNC's order of execution (feed mode, F, dwell, plane,
+  // units, distance modes, motion, program end), except that units come
+  // before F so that "G20 F10" means 10 in/min.
+  set_modes(block);
+  if (block.has_g(40)) {
+    if (!block.has('P')) throw Error("G4 (dwell) without a P word");
+    const double seconds = block.take('P');
+    if (seconds < 0) throw Error(fmt::format("negative dwell time P{:g}", seconds));
+    if (seconds > 0) {
+      Motion dwell;
+      dwell.kind = MotionKind::dwell;
+      dwell.start = dwell.end = position_;
+      dwell.duration = seconds;
+      dwell.source_line = line_number;
+      out.push_back(dwell);
+    }
+  }
+  move(block, skip_motion, line_number, out);
+  for (char letter = 'A'; letter <= 'Z'; ++letter)
+    if (block.has(letter) && !block.used[GcodeBlock::index(letter)])
+      throw Error(fmt::format("{}{:g}: nothing on the line uses a {} word", letter,
+                              block.value[GcodeBlock::index(letter)], letter));
+  if (block.has_m(2) || block.has_m(30)) ended_ = true;
+}
+
+/// Fails on the codes and axes this interpreter cannot honour or, when
+/// lenient, drops them with a warning. True when a dropped code owned the
+/// line's axis words, so that the line must not move.
+bool GcodeInterpreter::skip_unsupported(GcodeBlock& block) {
+  bool skip_motion = false;
+  for (auto it = block.gcodes.begin(); it != block.gcodes.end();) {
+    const GcodeInfo& info = **it;
+    if (info.use != GcodeUse::unsupported) {
+      ++it;
+      continue;
+    }
+    const std::string name = fmt::format("{} ({})", gcode_name(info.code), info.what);
+    if (!options_.lenient) throw Error(name + " is not supported");
+    warn("skipped " + name);
+    if (info.group == GcodeGroup::motion) {
+      motion_mode_ = -2;
+      skipped_mode_ = name;
+    }
+    skip_motion = skip_motion || info.group == GcodeGroup::motion || info.takes_axis_words;
+    block.used.set();  // its argument words (R, Q, L, P...) go with it
+    it = block.gcodes.erase(it);
+  }
+  for (const char letter : {'A', 'B', 'C', 'U', 'V', 'W'}) {
+    if (!block.has(letter)) continue;
+    const std::string word = fmt::format("{}{:g}", letter, block.take(letter));
+    if (!options_.lenient) throw Error(fmt::format("axis word {} is not supported (3 axes only: X, Y, Z)", word));
+    warn(fmt::format("skipped {} (3 axes only: X, Y, Z)", word));
+  }
+  return skip_motion;
+}
+
+void GcodeInterpreter::record_unused(GcodeBlock& block) {
+  for (const GcodeInfo* info : block.gcodes)
+    if (info->use == GcodeUse::record) ++unused_[gcode_name(info->code)];
+  if (block.ignored_g80) ++unused_["G80"];
+  if (block.has_g(640)) {  // G64 P (tolerance) Q (naive CAM tolerance)
+    block.consume('P');
+    block.consume('Q');
+  }
+  for (const int m : block.mcodes) {
+    if (m == 2 || m == 30) continue;  // they end the program
+    ++unused_[fmt::format("M{}", m)];
+    for (const char letter : mcode_arguments(m)) block.consume(letter);
+  }
+  for (const char letter : {'S', 'T', 'H', 'D'}) {
+    if (!block.has(letter)) continue;
+    block.take(letter);
+    ++unused_[std::string(1, letter)];
+  }
+}
+
+void GcodeInterpreter::set_modes(GcodeBlock& block) {
+  if (const GcodeInfo* mode = block.in_group(GcodeGroup::feed_mode)) {
+    const bool inverse = mode->code == 930;
+    if (inverse_time_ && !inverse) feed_ = 0;  // a G93 F is a time: G94 needs a new F
+    inverse_time_ = inverse;
+  }
+  // Units before F, so that "G20 F10" is 10 in/min.
+  if (const GcodeInfo* units = block.in_group(GcodeGroup::units)) inches_ = units->code == 200 || units->code == 700;
+  if (block.has('F')) {
+    const double feed = block.take('F');
+    if (feed < 0) throw Error(fmt::format("negative feed rate F{:g}", feed));
+    if (!inverse_time_) feed_ = feed * unit();  // in G93 each move reads its own F
+  }
+  if (const GcodeInfo* plane = block.in_group(GcodeGroup::plane)) plane_ = plane->code / 10;
+  if (const GcodeInfo* distance = block.in_group(GcodeGroup::distance)) incremental_ = distance->code == 910;
+  if (const GcodeInfo* distance = block.in_group(GcodeGroup::arc_distance)) arc_incremental_ = distance->code == 911;
+}
+
+void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t line_number, std::vector<Motion>& out) {
+  if (const GcodeInfo* mode = block.in_group(GcodeGroup::motion)) {  // unsupported ones are gone
+    motion_mode_ = mode->code == 800 ? -1 : mode->code / 10;
+    skipped_mode_.clear();
+  }
+  const bool axis_words = block.has('X') || block.has('Y') || block.has('Z');
+  const bool arc_mode = motion_mode_ == 2 || motion_mode_ == 3;
+  const bool arc_words = block.has('I') || block.has('J') || block.has('K') || block.has('R');
+  // G2/G3 with only centre words and no end point: a full circle.
+  if (skip_motion || !(axis_words || (arc_mode && arc_words))) return;
+  if (motion_mode_ == -2) {
+    warn(fmt::format("skipped the motion of line {}: {} mode", line_number, skipped_mode_));
+    block.used.set();
+    return;
+  }
+  if (motion_mode_ == -1) throw Error("axis words with no motion mode (after G80)");
+
+  Vec3 target = position_;
+  for (int axis = 0; axis < 3; ++axis) {
+    const char letter = "XYZ"[axis];
+    if (!block.has(letter)) continue;
+    const double value = block.take(letter) * unit();
+    target[axis] = incremental_ ? position_[axis] + value : value;
+    if (!(std::abs(target[axis]) <= options_.max_coordinate_mm))
+      throw Error(fmt::format("coordinate {}{:g} beyond ±{} mm", letter, target[axis], options_.max_coordinate_mm));
+  }
+  const bool moves = target.x != position_.x || target.y != position_.y || target.z != position_.z;
+  Motion motion;
+  motion.kind = MotionKind::rapid;
+  motion.start = position_;
+  motion.end = target;
+  motion.source_line = line_number;
+  if (motion_mode_ == 0) {
+    if (!moves) return;
+  } else {
+    const std::string g = fmt::format("G{}", motion_mode_);
+    if (inverse_time_ && !block.has('F')) throw Error(g + " in inverse time mode (G93) without an F word");
+    const double feed = inverse_time_ ? block.value[GcodeBlock::index('F')] : feed_;
+    if (arc_mode) {
+      motion.kind = MotionKind::arc;
+      motion.clockwise = motion_mode_ == 2;
+      arc(block, motion);
+    } else if (!moves) {
+      return;
+    } else {
+      motion.kind = MotionKind::linear;
+    }
+    if (feed <= 0) throw Error(fmt::format("feed rate is zero (cannot do {} with zero feed rate)", g));
+    double length = std::hypot(target.x - position_.x, target.y - position_.y, target.z - position_.z);
+    if (arc_mode) {
+      const auto radius = [&motion](const Vec3& point) {
+        return std::hypot(point[motion.axis0] - motion.center[motion.axis0],
+                          point[motion.axis1] - motion.center[motion.axis1]);
+      };
+      const double mean_radius = (radius(motion.start) + radius(motion.end)) / 2;
+      length = std::hypot(mean_radius * arc_sweep(motion), target[motion.axis2] - position_[motion.axis2]);
+    }
+    if (inverse_time_) {
+      motion.inverse_time = true;
+      motion.duration = 60 / feed;
+      motion.feed = length / motion.duration;
+    } else {
+      motion.feed = feed / 60;
+    }
+  }
+  position_ = target;
+  out.push_back(motion);
+}
+
+/// Fills in an arc's plane, centre and turns; start, end and direction are set.
+void GcodeInterpreter::arc(GcodeBlock& block, Motion& motion) const {
+  // The plane's axes in the order that makes G2 clockwise seen from the
+  // positive normal: XY; ZX for G18 (K is the first centre word); YZ.
+  static constexpr int kPlaneAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
+  const int* axes = kPlaneAxes[plane_ - 17];
+  motion.axis0 = axes[0];
+  motion.axis1 = axes[1];
+  motion.axis2 = axes[2];
+  const std::string g = fmt::format("G{}", motion_mode_);
+  const char first = "IJK"[axes[0]], second = "IJK"[axes[1]], normal = "IJK"[axes[2]];
+  const std::string centre_words = fmt::format("{}/{}", std::min(first, second), std::max(first, second));
+  if (block.has(normal))
+    throw Error(fmt::format("{} word with {} in the G{} plane: its centre words are {}", normal, g, plane_, centre_words));
+  const bool radius_format = block.has('R');
+  if (radius_format && (block.has(first) || block.has(second)))
+    throw Error(fmt::format("{} with both R and {} words", g, centre_words));
+  if (!radius_format && !block.has(first) && !block.has(second))
+    throw Error(fmt::format("{} without R or {} words", g, centre_words));
+  if (block.has('P') && !block.m_takes_p) {
+    const double p = block.take('P');
+    if (p < 1 || p != std::floor(p) || p > 1e6)
+      throw Error(fmt::format("{} P{:g}: the number of turns must be a positive whole number", g, p));
+    motion.turns = static_cast<std::uint64_t>(p) - 1;
+  }
+
+  // LinuxCNC's tolerances, in the program's units.
+  const double tolerance = inches_ ? 0.0005 * kMmPerInch : 0.005;
+  const double start0 = motion.start[axes[0]], start1 = motion.start[axes[1]];
+  const double end0 = motion.end[axes[0]], end1 = motion.end[axes[1]];
+  double centre0 = 0, centre1 = 0;
+  if (radius_format) {
+    const double radius = block.take('R') * unit();
+    const double half_chord = std::hypot(end0 - start0, end1 - start1) / 2;
+    if (half_chord == 0)
+      throw Error(fmt::format("{} with R: the end point equals the start point (a full circle needs {} words)", g,
+                              centre_words));
+    if (std::abs(radius) < tolerance) throw Error(fmt::format("zero-radius arc (R{:g})", radius / unit()));
+    if (half_chord - std::abs(radius) > tolerance)
+      throw Error(fmt::format("arc radius too small to reach the end point (radius {:g} mm, half the chord {:g} mm)",
+                              std::abs(radius), half_chord));
+    const double half = std::min(half_chord, std::abs(radius));  // a chord within tolerance of 2R: a half circle
+    // The centre lies right of the chord (from start to end) for G2 with
+    // R > 0 and G3 with R < 0, which makes the arc 180 degrees or less.
+    const double side = motion.clockwise == (radius > 0) ? -kPi / 2 : kPi / 2;
+    const double direction = std::atan2(end1 - start1, end0 - start0) + side;
+    const double distance = std::sqrt(radius * radius - half * half);
+    centre0 = (start0 + end0) / 2 + distance * std::cos(direction);
+    centre1 = (start1 + end1) / 2 + distance * std::sin(direction);
+  } else {
+    const double offset0 = block.has(first) ? block.take(first) * unit() : 0;
+    const double offset1 = block.has(second) ? block.take(second) * unit() : 0;
+    centre0 = arc_incremental_ ? start0 + offset0 : offset0;
+    centre1 = arc_incremental_ ? start1 + offset1 : offset1;
+    const double start_radius = std::hypot(start0 - centre0, start1 - centre1);
+    const double end_radius = std::hypot(end0 - centre0, end1 - centre1);
+    if (std::min(start_radius, end_radius) < tolerance)
+      throw Error(fmt::format("zero-radius arc (radius {:g} mm at the start, {:g} mm at the end)", start_radius,
+                              end_radius));
+    const double difference = std::abs(end_radius - start_radius);
+    const double limit = inches_ ? 0.05 * kMmPerInch : 0.5;
+    if (difference > limit || (difference > tolerance && difference > 0.001 * std::max(start_radius, end_radius)))
+      throw Error(fmt::format("radius to end of arc differs from radius to start: {:.4f} mm and {:.4f} mm", end_radius,
+                              start_radius));
+  }
+  motion.center = motion.start;
+  motion.center[axes[0]] = centre0;
+  motion.center[axes[1]] = centre1;
+}
+
+}  // namespace tk::motion

@@ -1,0 +1,164 @@
+/// @file planner.cpp
+#include "motion/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "io/error.hpp"
+#include "motion/arc_geometry.hpp"
+
+namespace tk::motion {
+
+namespace {
+
+constexpr double kUnlimited = std::numeric_limits<double>::infinity();
+
+double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+/// Path length and unit directions at both ends; 0 length for a motion
+/// that goes nowhere. `radius` is the smallest radius of an arc (else 0).
+void shape_of(const Motion& m, double& length, Vec3& entry, Vec3& exit, double& radius) {
+  radius = 0;
+  if (m.kind == MotionKind::arc) {
+    const ArcGeometry g = arc_geometry(m);
+    length = g.length;
+    entry = g.tangent(0);
+    exit = g.tangent(g.sweep);
+    radius = std::min(g.r_start, g.r_end);
+    return;
+  }
+  Vec3 d{m.end.x - m.start.x, m.end.y - m.start.y, m.end.z - m.start.z};
+  length = std::sqrt(dot(d, d));
+  if (length > 0) d = Vec3{d.x / length, d.y / length, d.z / length};
+  entry = exit = d;
+}
+
+}  // namespace
+
+double PlannedBlock::time_at(double along) const {
+  const double s = std::clamp(along, 0.0, length);
+  const double v0 = entry_speed, v1 = exit_speed, vc = cruise_speed, a = acceleration;
+  if (!(vc > 0)) return 0;
+  const double s_accel = (vc * vc - v0 * v0) / (2 * a), s_decel = (vc * vc - v1 * v1) / (2 * a);
+  const double s_cruise = std::max(0.0, length - s_accel - s_decel);
+  const double t_accel = (vc - v0) / a, t_cruise = s_cruise / vc;
+  if (s <= s_accel) return (std::sqrt(std::max(0.0, v0 * v0 + 2 * a * s)) - v0) / a;
+  if (s <= s_accel + s_cruise) return t_accel + (s - s_accel) / vc;
+  const double into = s - s_accel - s_cruise;
+  return t_accel + t_cruise + (vc - std::sqrt(std::max(0.0, vc * vc - 2 * a * into))) / a;
+}
+
+void complete_profile(PlannedBlock& block, double nominal) {
+  const double a = block.acceleration, v0 = block.entry_speed, v1 = block.exit_speed, length = block.length;
+  // The highest speed reachable between the two ends, capped by the feed.
+  const double peak = std::sqrt((2 * a * length + v0 * v0 + v1 * v1) / 2);
+  const double vc = std::max({std::min(nominal, peak), v0, v1});
+  block.cruise_speed = vc;
+  if (!(vc > 0)) {
+    block.duration = 0;
+    return;
+  }
+  const double s_accel = (vc * vc - v0 * v0) / (2 * a), s_decel = (vc * vc - v1 * v1) / (2 * a);
+  const double s_cruise = std::max(0.0, length - s_accel - s_decel);
+  block.duration = (vc - v0) / a + s_cruise / vc + (vc - v1) / a;
+}
+
+Planner::Planner(MachineLimits limits) : limits_(limits) {
+  if (!(limits_.acceleration > 0) || !std::isfinite(limits_.acceleration)) throw Error("acceleration must be positive");
+  if (!(limits_.rapid_speed > 0) || !(limits_.max_speed > 0)) throw Error("speeds must be positive");
+  if (!(limits_.junction_deviation >= 0)) throw Error("junction deviation must not be negative");
+  limits_.lookahead = std::max<std::size_t>(limits_.lookahead, 1);
+}
+
+void Planner::add(const Motion& motion, const Sink& ready) {
+  if (motion.kind == MotionKind::dwell) {
+    finish(ready);
+    PlannedBlock dwell;
+    dwell.motion = motion;
+    dwell.duration = motion.duration;
+    ready(dwell);
+    return;
+  }
+  Pending next;
+  double radius = 0;
+  shape_of(motion, next.block.length, next.entry_direction, next.exit_direction, radius);
+  if (!(next.block.length > 0)) return;
+  next.block.motion = motion;
+  next.block.acceleration = limits_.acceleration;
+  double nominal = motion.kind == MotionKind::rapid ? limits_.rapid_speed
+                   : motion.inverse_time           ? next.block.length / motion.duration
+                                                   : motion.feed;
+  if (motion.kind != MotionKind::rapid && nominal > limits_.max_speed) {
+    nominal = limits_.max_speed;
+    next.block.feed_capped = true;
+  }
+  if (radius > 0) nominal = std::min(nominal, std::sqrt(limits_.acceleration * radius));  // centripetal limit
+  next.nominal = nominal;
+
+  // The corner with the previous block, by junction deviation (grbl).
+  double junction = 0;
+  if (have_previous_) {
+    const double cos_turn = dot(previous_exit_direction_, next.entry_direction);  // 1: straight on
+    if (cos_turn > 0.999999) {
+      junction = kUnlimited;
+    } else if (cos_turn > -0.999999) {
+      const double sin_half = std::sqrt(0.5 * (1 - cos_turn));
+      junction = std::sqrt(limits_.acceleration * limits_.junction_deviation * sin_half / (1 - sin_half));
+    }
+    junction = std::min({junction, nominal, previous_nominal_});
+  }
+  next.max_entry = junction;
+  have_previous_ = true;
+  previous_exit_direction_ = next.exit_direction;
+  previous_nominal_ = nominal;
+  if (pending_.empty()) locked_entry_ = junction;
+  pending_.push_back(next);
+  if (pending_.size() > limits_.lookahead) {
+    plan();
+    emit_front(ready);
+  }
+}
+
+void Planner::finish(const Sink& ready) {
+  plan();
+  while (!pending_.empty()) emit_front(ready);
+  have_previous_ = false;
+  locked_entry_ = 0;
+}
+
+// Backward from a stop at the window's end, then forward from the front
+// block's fixed entry: every entry speed is the highest that both its
+// junction allows and the accelerations on either side can reach.
+void Planner::plan() {
+  if (pending_.empty()) return;
+  const double a = limits_.acceleration;
+  double exit = 0;
+  for (std::size_t i = pending_.size(); i-- > 0;) {
+    PlannedBlock& b = pending_[i].block;
+    b.exit_speed = exit;
+    b.entry_speed = std::min(pending_[i].max_entry, std::sqrt(exit * exit + 2 * a * b.length));
+    exit = b.entry_speed;
+  }
+  pending_.front().block.entry_speed = std::min(pending_.front().block.entry_speed, locked_entry_);
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    PlannedBlock& b = pending_[i].block;
+    if (i > 0) {
+      const PlannedBlock& before = pending_[i - 1].block;
+      b.entry_speed = std::min(b.entry_speed, std::sqrt(before.entry_speed * before.entry_speed + 2 * a * before.length));
+      pending_[i - 1].block.exit_speed = b.entry_speed;
+    }
+  }
+  pending_.back().block.exit_speed = 0;
+}
+
+void Planner::emit_front(const Sink& ready) {
+  Pending front = pending_.front();
+  pending_.pop_front();
+  complete_profile(front.block, front.nominal);
+  locked_entry_ = front.block.exit_speed;
+  if (!pending_.empty()) pending_.front().block.entry_speed = locked_entry_;
+  ready(front.block);
+}
+
+}  // namespace tk::motion

@@ -1,0 +1,102 @@
+/// @file pulse_run.cpp
+#include "motion/pulse_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/error.hpp"
+#include "io/input_file.hpp"
+
+namespace tk::motion {
+
+double PulseSummary::rms_deviation_mm() const {
+  return events ? std::sqrt(deviation_sq_sum / static_cast<double>(events)) : 0.0;
+}
+
+PulseRun::PulseRun(const PulseOptions& options, PulseSink on_pulses, std::function<void(const std::string&)> warn)
+    : options_(options),
+      on_pulses_(std::move(on_pulses)),
+      interpreter_(options.interpreter),
+      planner_(options.limits),
+      stepper_(options.method, options.steps_per_mm) {
+  interpreter_.on_warning(std::move(warn));
+  ready_ = [this](const PlannedBlock& block) { on_block(block); };
+  shortest_interval_.fill(INFINITY);
+}
+
+void PulseRun::run_file(const std::string& path) {
+  io::InputFile input(path);
+  std::string_view text;
+  bool started = false;  // a block or an opening '%' seen
+  while (input.next(text)) {
+    if (interpreter_.program_ended()) break;  // M2/M30: the rest is not executed
+    motions_.clear();
+    try {
+      const GcodeLine line = lex_gcode_line(text);
+      // '%' opens a tape; the next '%' (or one after any block) ends it.
+      if (line.percent) {
+        if (started) break;
+        started = true;
+        continue;
+      }
+      if (!line.words.empty()) started = true;
+      interpreter_.execute(line, input.line_number(), motions_);
+    } catch (const Error& e) {
+      // Every block before the bad one runs (and stops) first.
+      finish();
+      throw Error(e.what(), input.where());
+    }
+    for (const Motion& motion : motions_) {
+      ++summary_.motions;
+      planner_.add(motion, ready_);
+    }
+  }
+}
+
+void PulseRun::finish() { planner_.finish(ready_); }
+
+void PulseRun::on_block(const PlannedBlock& block) {
+  if (block.motion.kind == MotionKind::dwell) {
+    clock_ += block.duration;
+    summary_.dwell_s += block.duration;
+    return;
+  }
+  if (block.feed_capped) ++summary_.feed_capped;
+  const double start = clock_;
+  const bool want_pulses = static_cast<bool>(on_pulses_);
+  summary_.path_mm += stepper_.run(block.motion, [&](std::span<const StepEvent> events) {
+    if (want_pulses) pulses_.clear();
+    for (const StepEvent& event : events) {
+      const double t = start + block.time_at(event.along_mm);
+      for (int axis = 0; axis < 3; ++axis) {
+        if (event.delta[axis] == 0) continue;
+        ++summary_.pulses[axis];
+        if (last_step_time_[axis] >= 0) shortest_interval_[axis] = std::min(shortest_interval_[axis], t - last_step_time_[axis]);
+        last_step_time_[axis] = t;
+      }
+      summary_.max_deviation_mm = std::max(summary_.max_deviation_mm, event.deviation_sq);  // squared until summary()
+      summary_.deviation_sq_sum += event.deviation_sq;
+      if (want_pulses) pulses_.push_back(Pulse{t, event.delta});
+    }
+    summary_.events += events.size();
+    if (want_pulses) on_pulses_(std::span<const Pulse>(pulses_.data(), pulses_.size()));
+  });
+  clock_ = start + block.duration;
+}
+
+PulseSummary PulseRun::summary() const {
+  PulseSummary out = summary_;
+  out.max_deviation_mm = std::sqrt(summary_.max_deviation_mm);
+  out.duration_s = clock_;
+  for (int axis = 0; axis < 3; ++axis) {
+    out.final_mm[axis] = static_cast<double>(stepper_.position()[axis]) / options_.steps_per_mm[axis];
+    // Steps at the same instant (an interval of 0) would mean an infinite
+    // rate; they cannot happen on one axis, as each event moves it once.
+    out.peak_rate[axis] = std::isfinite(shortest_interval_[axis]) && shortest_interval_[axis] > 0 ? 1.0 / shortest_interval_[axis] : 0.0;
+  }
+  out.blocks = interpreter_.blocks();
+  out.unused_words = interpreter_.unused_words();
+  return out;
+}
+
+}  // namespace tk::motion

@@ -1,0 +1,82 @@
+/// @file pulse_run.hpp
+/// @brief gcode-pulse's pipeline: G-code lines -> interpreter -> planner
+/// (speeds) -> stepper (lattice moves) -> timed pulses and a summary.
+/// Streams: memory does not grow with the program's length.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <span>
+#include <string>
+
+#include "motion/gcode.hpp"
+#include "motion/planner.hpp"
+#include "motion/stepper.hpp"
+
+namespace tk::motion {
+
+struct PulseOptions {
+  StepMethod method = StepMethod::direct;
+  std::array<double, 3> steps_per_mm{200, 200, 400};
+  MachineLimits limits;
+  InterpreterOptions interpreter;
+};
+
+/// What a run did, for --summary.
+struct PulseSummary {
+  std::array<std::uint64_t, 3> pulses{};
+  std::array<double, 3> final_mm{};
+  double duration_s = 0;
+  double dwell_s = 0;
+  double path_mm = 0;
+  double max_deviation_mm = 0;
+  double deviation_sq_sum = 0;
+  std::uint64_t events = 0;
+  std::array<double, 3> peak_rate{};  ///< steps/s: 1 / the shortest interval between two steps of an axis
+  std::uint64_t blocks = 0, motions = 0, feed_capped = 0;
+  std::map<std::string, std::uint64_t> unused_words;
+
+  double rms_deviation_mm() const;
+};
+
+/// One timed event: seconds from the program's start and the unit moves.
+struct Pulse {
+  double t = 0;
+  std::array<std::int8_t, 3> delta{};
+};
+
+class PulseRun {
+ public:
+  using PulseSink = std::function<void(std::span<const Pulse>)>;
+
+  /// `on_pulses` may be empty (summary only); warnings (lenient skips) go to `warn`.
+  PulseRun(const PulseOptions& options, PulseSink on_pulses, std::function<void(const std::string&)> warn);
+
+  /// Runs one program file ("-" is stdin). Throws tk::Error with the file
+  /// and line of the first bad block, after every pulse before it.
+  void run_file(const std::string& path);
+  /// Stops the machine after the last block and emits what is pending.
+  void finish();
+
+  PulseSummary summary() const;
+
+ private:
+  void on_block(const PlannedBlock& block);
+
+  PulseOptions options_;
+  PulseSink on_pulses_;
+  GcodeInterpreter interpreter_;
+  Planner planner_;
+  Stepper stepper_;
+  Planner::Sink ready_;
+  PulseSummary summary_;
+  double clock_ = 0;  ///< start time of the next planned block
+  std::array<double, 3> last_step_time_{-1, -1, -1};
+  std::array<double, 3> shortest_interval_{};
+  std::vector<Pulse> pulses_;
+  std::vector<Motion> motions_;
+};
+
+}  // namespace tk::motion

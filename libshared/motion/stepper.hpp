@@ -1,0 +1,88 @@
+/// @file stepper.hpp
+/// @brief Turns lines and arcs into unit moves on the step lattice (every
+/// axis -1, 0 or +1 per event: one of the 26 neighbours), by three methods:
+///
+/// - direct (Panayotov & Goranov's single-impulse calculation): from the
+///   current lattice point, of the neighbours that make progress toward
+///   the target, take the one whose new position lies closest to the
+///   ideal path; re-origin there and repeat.
+/// - bresenham: the classic integer line algorithm (the major axis steps
+///   every event, minor axes when their error term crosses) and its
+///   midpoint generalisation for arcs.
+/// - dda: the digital differential analyser, sampling the ideal path at a
+///   fixed rate fine enough that no axis moves more than one step per
+///   sample, and stepping when a quantised coordinate changes.
+///
+/// Counters are integers, so a block always ends exactly on its commanded
+/// end quantised to steps, and a million blocks accumulate no drift.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "motion/gcode.hpp"
+
+namespace tk::motion {
+
+enum class StepMethod : std::uint8_t { direct, bresenham, dda };
+
+/// One event: the unit move of each axis, how far along the block's ideal
+/// path (mm from its start) the new lattice point lies, and the square of
+/// its distance from the ideal path (mm^2).
+struct StepEvent {
+  std::array<std::int8_t, 3> delta{};
+  double along_mm = 0;
+  double deviation_sq = 0;
+};
+
+class Stepper {
+ public:
+  /// Steps per mm of each axis, each positive and finite.
+  Stepper(StepMethod method, std::array<double, 3> steps_per_mm);
+
+  /// Steps one line, rapid or arc from the current lattice point to the
+  /// motion's end, handing the events to `sink` in chunks (at most a few
+  /// thousand at a time). Dwells do nothing. Returns the ideal path length
+  /// in mm (the helix length for arcs).
+  double run(const Motion& motion, const std::function<void(std::span<const StepEvent>)>& sink);
+
+  const std::array<std::int64_t, 3>& position() const { return position_; }
+  /// The lattice point nearest to `mm` (rounding half away from zero).
+  std::array<std::int64_t, 3> quantise(const Vec3& mm) const;
+  double step_mm(int axis) const { return step_mm_[axis]; }
+
+ private:
+  /// Collects events and hands them to the sink a chunk at a time.
+  class Chunk {
+   public:
+    static constexpr std::size_t kEvents = 4096;
+    Chunk(std::vector<StepEvent>& buffer, const std::function<void(std::span<const StepEvent>)>& sink)
+        : buffer_(buffer), sink_(sink) {
+      buffer_.clear();
+    }
+    void push(const StepEvent& event) {
+      buffer_.push_back(event);
+      if (buffer_.size() == kEvents) flush();
+    }
+    void flush() {
+      if (!buffer_.empty()) sink_(std::span<const StepEvent>(buffer_.data(), buffer_.size()));
+      buffer_.clear();
+    }
+
+   private:
+    std::vector<StepEvent>& buffer_;
+    const std::function<void(std::span<const StepEvent>)>& sink_;  ///< outlives the chunk
+  };
+
+  double run_line(const Motion& motion, Chunk& out);
+  double run_arc(const Motion& motion, Chunk& out);
+
+  StepMethod method_;
+  std::array<double, 3> steps_per_mm_, step_mm_;
+  std::array<std::int64_t, 3> position_{};
+};
+
+}  // namespace tk::motion

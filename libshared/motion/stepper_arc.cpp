@@ -1,0 +1,198 @@
+/// @file stepper_arc.cpp
+/// @brief Arcs and helices on the step lattice, along the path that
+/// ArcGeometry parametrises by the swept angle phi. Every method tracks
+/// phi of the current lattice point
+/// exactly (atan2 of the turn since the last point), and hands the last
+/// couple of steps to the line stepper, aimed at the end quantised.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "io/error.hpp"
+#include "motion/arc_geometry.hpp"
+#include "motion/stepper.hpp"
+
+namespace tk::motion {
+
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+}  // namespace
+
+double Stepper::run_arc(const Motion& motion, Chunk& out) {
+  const ArcGeometry g = arc_geometry(motion);
+  if (!(g.r_start > 0) || !(g.r_end > 0)) throw Error("arc of zero radius");
+  const int a0 = g.a0, a1 = g.a1, a2 = g.a2;
+  const double h0 = step_mm_[a0], h1 = step_mm_[a1], h2 = step_mm_[a2];
+  const auto target = quantise(motion.end);
+  const int rise_sign = target[a2] > position_[a2] ? 1 : target[a2] < position_[a2] ? -1 : 0;
+
+  // The current point relative to the centre, and its angle phi so far.
+  auto offset0 = [&] { return static_cast<double>(position_[a0]) * h0 - g.c0; };
+  auto offset1 = [&] { return static_cast<double>(position_[a1]) * h1 - g.c1; };
+  double phi = 0;
+  {
+    const double angle = std::atan2(offset1(), offset0());
+    double d = g.turn * (angle - g.start_angle);
+    d = std::remainder(d, kTwoPi);  // the start point rounds to a lattice point next to it
+    phi = d;
+  }
+  // The last steps go straight to the end: within about two steps of it.
+  const double end_zone = 2.5 * std::max(h0, h1) / std::max(std::min(g.r_start, g.r_end), 1e-300);
+
+  // How far along the helix a lattice point lies: unrolled, the helix is
+  // a straight line in (arc length, height); project the point's (R phi,
+  // height) onto it, so a step of the normal axis alone advances too.
+  const double mean_radius = 0.5 * (g.r_start + g.r_end);
+  const double unrolled = mean_radius * g.sweep;
+  auto along_of = [&](double phi_now) {
+    const double rise_done = static_cast<double>(position_[a2]) * h2 - g.z_start;
+    const double along = (mean_radius * phi_now * unrolled + rise_done * g.z_rise) / g.length;
+    return std::clamp(along, 0.0, g.length);
+  };
+  auto deviation_sq = [&](double phi_now) {
+    const double radial = std::hypot(offset0(), offset1()) - g.radius(phi_now);
+    const double axial = static_cast<double>(position_[a2]) * h2 - g.height(phi_now);
+    return radial * radial + axial * axial;
+  };
+  auto emit = [&](int d0, int d1, int d2) {
+    const double before0 = offset0(), before1 = offset1();
+    position_[a0] += d0;
+    position_[a1] += d1;
+    position_[a2] += d2;
+    const double after0 = offset0(), after1 = offset1();
+    phi += std::atan2(g.turn * (before0 * after1 - before1 * after0), before0 * after0 + before1 * after1);
+    StepEvent event;
+    event.delta[a0] = static_cast<std::int8_t>(d0);
+    event.delta[a1] = static_cast<std::int8_t>(d1);
+    event.delta[a2] = static_cast<std::int8_t>(d2);
+    event.along_mm = along_of(phi);
+    event.deviation_sq = deviation_sq(phi);
+    out.push(event);
+  };
+  // Cost of a candidate point: its squared distance from the ideal helix,
+  // with phi advanced by the small-angle estimate of its turn. Bresenham's
+  // midpoint decision is in the plane alone (the normal axis follows on
+  // its own), so it weighs the radial error only.
+  const bool weigh_axial = method_ == StepMethod::direct;
+  auto cost_of = [&](int d0, int d1, int d2, double& turn_out) {
+    const double b0 = offset0(), b1 = offset1();
+    const double w0 = b0 + d0 * h0, w1 = b1 + d1 * h1;
+    const double rho_sq = w0 * w0 + w1 * w1;
+    const double turn = g.turn * (b0 * w1 - b1 * w0) / std::sqrt((b0 * b0 + b1 * b1) * rho_sq);
+    turn_out = turn;
+    const double phi_new = phi + turn;
+    const double r = g.radius(phi_new);
+    const double radial = (rho_sq - r * r) / (std::sqrt(rho_sq) + r);
+    const double axial = weigh_axial ? static_cast<double>(position_[a2] + d2) * h2 - g.height(phi_new) : 0.0;
+    return radial * radial + axial * axial;
+  };
+
+  if (method_ == StepMethod::dda) {
+    // Sample the ideal path finely enough that no axis moves more than half
+    // a step between samples; step wherever a rounded coordinate changes.
+    const double planar_steps = std::max(g.r_start, g.r_end) * g.sweep / std::min(h0, h1);
+    const double rise_steps = std::fabs(g.z_rise) / h2;
+    const auto samples = static_cast<std::uint64_t>(std::ceil(2.0 * std::max(planar_steps, rise_steps))) + 1;
+    for (std::uint64_t i = 1; i <= samples; ++i) {
+      const double phi_i = g.sweep * static_cast<double>(i) / static_cast<double>(samples);
+      if (g.sweep - phi_i < end_zone) break;
+      const double angle = g.start_angle + g.turn * phi_i, r = g.radius(phi_i);
+      const auto q0 = static_cast<std::int64_t>(std::llround((g.c0 + r * std::cos(angle)) / h0));
+      const auto q1 = static_cast<std::int64_t>(std::llround((g.c1 + r * std::sin(angle)) / h1));
+      const auto q2 = static_cast<std::int64_t>(std::llround(g.height(phi_i) / h2));
+      const auto d0 = std::clamp<std::int64_t>(q0 - position_[a0], -1, 1);
+      const auto d1 = std::clamp<std::int64_t>(q1 - position_[a1], -1, 1);
+      const auto d2 = std::clamp<std::int64_t>(q2 - position_[a2], -1, 1);
+      if (d0 || d1 || d2) emit(static_cast<int>(d0), static_cast<int>(d1), static_cast<int>(d2));
+    }
+  } else {
+    // A safety bound: the walk advances phi at every in-plane step and
+    // rises at most |rise| times, so it never needs this many events.
+    const double planar_steps = std::max(g.r_start, g.r_end) * g.sweep / std::min(h0, h1);
+    const double bound = 4.0 * (planar_steps + std::fabs(g.z_rise) / h2) + 16.0;
+    // An in-plane axis may reverse only once the path has turned on it
+    // (its tangent component changed sign since that axis last stepped):
+    // near an extreme of a steep helix the nearest point would otherwise
+    // dither back and forth, a burst of pulses microseconds apart.
+    int last_sign0 = 0, last_sign1 = 0, tangent_sign0 = 0, tangent_sign1 = 0;
+    for (double events = 0; g.sweep - phi > end_zone && events < bound; ++events) {
+      const double b0 = offset0(), b1 = offset1();
+      // Tangent: which in-plane moves advance along the arc.
+      const double t0 = -g.turn * b1, t1 = g.turn * b0;
+      const int now_sign0 = t0 > 0 ? 1 : -1, now_sign1 = t1 > 0 ? 1 : -1;
+      auto reverses = [&](int d0, int d1) {
+        return (d0 != 0 && d0 == -last_sign0 && now_sign0 == tangent_sign0) ||
+               (d1 != 0 && d1 == -last_sign1 && now_sign1 == tangent_sign1);
+      };
+      const int rise = position_[a2] != target[a2] ? rise_sign : 0;
+      int best0 = 0, best1 = 0, best2 = 0;
+      double best_cost = INFINITY, turn = 0;
+      auto consider = [&](int d0, int d1, int d2) {
+        double candidate_turn = 0;
+        const double cost = cost_of(d0, d1, d2, candidate_turn);
+        if (cost < best_cost) {
+          best_cost = cost;
+          best0 = d0;
+          best1 = d1;
+          best2 = d2;
+          turn = candidate_turn;
+        }
+      };
+      if (method_ == StepMethod::direct) {
+        for (int d0 = -1; d0 <= 1; ++d0)
+          for (int d1 = -1; d1 <= 1; ++d1) {
+            if (d0 * h0 * t0 + d1 * h1 * t1 <= 0) continue;  // must move forward along the arc
+            if (reverses(d0, d1)) continue;
+            consider(d0, d1, 0);
+            if (rise) consider(d0, d1, rise);
+          }
+        if (rise) consider(0, 0, rise);  // a steep helix may need a rise alone
+      } else {
+        // Bresenham (midpoint): the in-plane axis with the larger tangent
+        // component steps; the other joins when that lands nearer the arc.
+        const int s0 = t0 > 0 ? 1 : -1, s1 = t1 > 0 ? 1 : -1;
+        const bool major0 = std::fabs(t0) / h0 >= std::fabs(t1) / h1;
+        consider(major0 ? s0 : 0, major0 ? 0 : s1, 0);
+        consider(s0, s1, 0);
+        // The normal axis joins when it lags half a step or more.
+        const double lag = (g.height(phi + turn) - static_cast<double>(position_[a2]) * h2) * rise;
+        if (rise && lag >= 0.5 * h2) best2 = rise;
+      }
+      if ((best0 || best1) && turn <= 0) break;  // radius below a step: finish straight
+      if (!best0 && !best1 && !best2) break;
+      emit(best0, best1, best2);
+      if (best0) {
+        last_sign0 = best0;
+        tangent_sign0 = now_sign0;
+      }
+      if (best1) {
+        last_sign1 = best1;
+        tangent_sign1 = now_sign1;
+      }
+      // Bresenham on a steep helix: the rise alone while it lags a step.
+      if (method_ == StepMethod::bresenham && rise)
+        while ((g.height(phi) - static_cast<double>(position_[a2]) * h2) * rise >= 1.5 * h2 && position_[a2] != target[a2])
+          emit(0, 0, rise);
+    }
+  }
+  // The last steps: straight to the end quantised, as a short line.
+  Motion rest = motion;
+  rest.kind = MotionKind::linear;
+  for (int axis = 0; axis < 3; ++axis) rest.start[axis] = static_cast<double>(position_[axis]) * step_mm_[axis];
+  const double done = along_of(phi);
+  thread_local std::vector<StepEvent> tail;
+  const std::function<void(std::span<const StepEvent>)> shift_along = [&](std::span<const StepEvent> events) {
+    for (StepEvent event : events) {
+      event.along_mm = std::min(done + event.along_mm, g.length);
+      out.push(event);
+    }
+  };
+  Chunk tail_out(tail, shift_along);
+  run_line(rest, tail_out);
+  tail_out.flush();
+  return g.length;
+}
+
+}  // namespace tk::motion
