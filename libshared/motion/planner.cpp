@@ -38,15 +38,11 @@ void shape_of(const Motion& m, double& length, Vec3& entry, Vec3& exit, double& 
 
 double PlannedBlock::time_at(double along) const {
   const double s = std::clamp(along, 0.0, length);
-  const double v0 = entry_speed, v1 = exit_speed, vc = cruise_speed, a = acceleration;
-  if (!(vc > 0)) return 0;
-  const double s_accel = (vc * vc - v0 * v0) / (2 * a), s_decel = (vc * vc - v1 * v1) / (2 * a);
-  const double s_cruise = std::max(0.0, length - s_accel - s_decel);
-  const double t_accel = (vc - v0) / a, t_cruise = s_cruise / vc;
-  if (s <= s_accel) return (std::sqrt(std::max(0.0, v0 * v0 + 2 * a * s)) - v0) / a;
-  if (s <= s_accel + s_cruise) return t_accel + (s - s_accel) / vc;
-  const double into = s - s_accel - s_cruise;
-  return t_accel + t_cruise + (vc - std::sqrt(std::max(0.0, vc * vc - 2 * a * into))) / a;
+  const double a = acceleration;
+  if (s < cruise_from) return (std::sqrt(entry_speed * entry_speed + 2 * a * s) - entry_speed) / a;
+  if (s <= cruise_to) return cruise_starts + (s - cruise_from) / cruise_speed;
+  const double into = s - cruise_to;
+  return cruise_ends + (cruise_speed - std::sqrt(std::max(0.0, cruise_speed * cruise_speed - 2 * a * into))) / a;
 }
 
 void complete_profile(PlannedBlock& block, double nominal) {
@@ -61,7 +57,11 @@ void complete_profile(PlannedBlock& block, double nominal) {
   }
   const double s_accel = (vc * vc - v0 * v0) / (2 * a), s_decel = (vc * vc - v1 * v1) / (2 * a);
   const double s_cruise = std::max(0.0, length - s_accel - s_decel);
-  block.duration = (vc - v0) / a + s_cruise / vc + (vc - v1) / a;
+  block.cruise_from = std::min(s_accel, length);
+  block.cruise_to = std::min(s_accel + s_cruise, length);
+  block.cruise_starts = (vc - v0) / a;
+  block.cruise_ends = block.cruise_starts + s_cruise / vc;
+  block.duration = block.cruise_ends + (vc - v1) / a;
 }
 
 Planner::Planner(MachineLimits limits) : limits_(limits) {

@@ -36,6 +36,8 @@ struct PlannedBlock {
   double acceleration = 0;
   double duration = 0;  ///< s
   bool feed_capped = false;  ///< the programmed feed exceeded max_speed
+  /// Where the cruise starts and ends (mm) and when (s): set with the profile.
+  double cruise_from = 0, cruise_to = 0, cruise_starts = 0, cruise_ends = 0;
 
   /// Seconds from the block's start until the tool is `along` mm into it.
   double time_at(double along) const;

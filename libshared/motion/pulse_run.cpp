@@ -71,7 +71,13 @@ void PulseRun::on_block(const PlannedBlock& block) {
       for (int axis = 0; axis < 3; ++axis) {
         if (event.delta[axis] == 0) continue;
         ++summary_.pulses[axis];
-        if (last_step_time_[axis] >= 0) shortest_interval_[axis] = std::min(shortest_interval_[axis], t - last_step_time_[axis]);
+        if (last_step_time_[axis] >= 0) {
+          const double interval = t - last_step_time_[axis];
+          if (interval > 0)
+            shortest_interval_[axis] = std::min(shortest_interval_[axis], interval);
+          else
+            ++summary_.coincident_steps;
+        }
         last_step_time_[axis] = t;
       }
       summary_.max_deviation_mm = std::max(summary_.max_deviation_mm, event.deviation_sq);  // squared until summary()
@@ -90,8 +96,8 @@ PulseSummary PulseRun::summary() const {
   out.duration_s = clock_;
   for (int axis = 0; axis < 3; ++axis) {
     out.final_mm[axis] = static_cast<double>(stepper_.position()[axis]) / options_.steps_per_mm[axis];
-    // Steps at the same instant (an interval of 0) would mean an infinite
-    // rate; they cannot happen on one axis, as each event moves it once.
+    // Over positive intervals; two steps of one axis at one instant are
+    // counted in coincident_steps instead.
     out.peak_rate[axis] = std::isfinite(shortest_interval_[axis]) && shortest_interval_[axis] > 0 ? 1.0 / shortest_interval_[axis] : 0.0;
   }
   out.blocks = interpreter_.blocks();

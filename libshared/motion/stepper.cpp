@@ -77,6 +77,17 @@ double Stepper::run_line(const Motion& motion, Chunk& out) {
                          : static_cast<double>(remaining[axis]) * step_mm_[axis] / lattice_length;
   double along = 0;
   for (int axis = 0; axis < 3; ++axis) along += (position_[axis] * step_mm_[axis] - motion.start[axis]) * u[axis];
+  // When an event comes: a step generator steps an axis as its ideal
+  // coordinate crosses the midpoint between two lattice values. The axis
+  // that steps most often per mm paces the events: an event that moves it
+  // comes at its crossing, so its steps are evenly spaced whatever the
+  // method picked; any other event comes at its point's projection on the
+  // line (never before the event before it).
+  int pacing = 0;
+  for (int axis = 1; axis < 3; ++axis)
+    if (std::fabs(u[axis]) * steps_per_mm_[axis] > std::fabs(u[pacing]) * steps_per_mm_[pacing]) pacing = axis;
+  const double pacing_per_mm = 1.0 / u[pacing];
+  double last_along = 0;
   for (int axis = 0; axis < 3; ++axis) e[axis] = position_[axis] * step_mm_[axis] - motion.start[axis] - along * u[axis];
 
   // Per move (bit i = axis i steps): its component along u, its
@@ -98,6 +109,11 @@ double Stepper::run_line(const Motion& motion, Chunk& out) {
 
   auto apply = [&](int mask) {
     StepEvent event;
+    double crossing = -INFINITY;
+    if (mask >> pacing & 1) {
+      const double midpoint = (static_cast<double>(position_[pacing]) + 0.5 * sign[pacing]) * step_mm_[pacing];
+      crossing = (midpoint - motion.start[pacing]) * pacing_per_mm;
+    }
     for (int axis = 0; axis < 3; ++axis) {
       if (mask >> axis & 1) {
         position_[axis] += sign[axis];
@@ -107,7 +123,9 @@ double Stepper::run_line(const Motion& motion, Chunk& out) {
       e[axis] += move_perp[mask][axis];
     }
     along += move_along[mask];
-    event.along_mm = along;
+    if (crossing == -INFINITY) crossing = along;
+    last_along = std::clamp(std::max(last_along, crossing), 0.0, length);
+    event.along_mm = last_along;
     event.deviation_sq = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
     out.push(event);
   };

@@ -46,45 +46,67 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   // height) onto it, so a step of the normal axis alone advances too.
   const double mean_radius = 0.5 * (g.r_start + g.r_end);
   const double unrolled = mean_radius * g.sweep;
-  auto along_of = [&](double phi_now) {
+  auto projection = [&](double phi_now) {
     const double rise_done = static_cast<double>(position_[a2]) * h2 - g.z_start;
-    const double along = (mean_radius * phi_now * unrolled + rise_done * g.z_rise) / g.length;
-    return std::clamp(along, 0.0, g.length);
+    return (mean_radius * phi_now * unrolled + rise_done * g.z_rise) / g.length;
   };
-  auto deviation_sq = [&](double phi_now) {
-    const double radial = std::hypot(offset0(), offset1()) - g.radius(phi_now);
-    const double axial = static_cast<double>(position_[a2]) * h2 - g.height(phi_now);
-    return radial * radial + axial * axial;
+  // The start's lattice point projects a little before or after 0: map
+  // [that, length] onto [0, length] (the last steps are mapped below).
+  const double projection_start = projection(phi);
+  const double along_scale = projection_start < g.length ? g.length / (g.length - projection_start) : 1.0;
+  auto along_of = [&](double phi_now) {
+    return std::clamp((projection(phi_now) - projection_start) * along_scale, 0.0, g.length);
   };
+  // phi advances by the turn between successive points, taken as
+  // cross / (|b| |w|) (the sine of the turn: off by turn^3 / 6, a
+  // millionth of a step for radii of 100 steps); an exact atan2 every 256
+  // events keeps that from adding up.
+  std::uint32_t since_exact = 0;
+  double rho_now = std::hypot(offset0(), offset1());  // distance of the current point from the centre
   auto emit = [&](int d0, int d1, int d2) {
-    const double before0 = offset0(), before1 = offset1();
+    const double v0 = offset0(), v1 = offset1();
     position_[a0] += d0;
     position_[a1] += d1;
     position_[a2] += d2;
-    const double after0 = offset0(), after1 = offset1();
-    phi += std::atan2(g.turn * (before0 * after1 - before1 * after0), before0 * after0 + before1 * after1);
+    const double w0 = offset0(), w1 = offset1();
+    const double rho = std::sqrt(w0 * w0 + w1 * w1);
+    if (++since_exact == 256) {
+      since_exact = 0;
+      phi += std::atan2(g.turn * (v0 * w1 - v1 * w0), v0 * w0 + v1 * w1);
+    } else {
+      phi += g.turn * (v0 * w1 - v1 * w0) / (rho_now * rho);
+    }
+    rho_now = rho;
     StepEvent event;
     event.delta[a0] = static_cast<std::int8_t>(d0);
     event.delta[a1] = static_cast<std::int8_t>(d1);
     event.delta[a2] = static_cast<std::int8_t>(d2);
     event.along_mm = along_of(phi);
-    event.deviation_sq = deviation_sq(phi);
+    const double radial = rho - g.radius(phi);
+    const double axial = static_cast<double>(position_[a2]) * h2 - g.height(phi);
+    event.deviation_sq = radial * radial + axial * axial;
     out.push(event);
   };
   // Cost of a candidate point: its squared distance from the ideal helix,
-  // with phi advanced by the small-angle estimate of its turn. Bresenham's
-  // midpoint decision is in the plane alone (the normal axis follows on
-  // its own), so it weighs the radial error only.
+  // to first order (no square roots: only the ranking matters), with phi
+  // advanced by the small-angle estimate of its turn. Bresenham's midpoint
+  // decision is in the plane alone (the normal axis follows on its own),
+  // so it weighs the radial error only.
   const bool weigh_axial = method_ == StepMethod::direct;
+  double b0 = 0, b1 = 0, inv_b_sq = 0;  // the current point, set per event by `prepare`
+  auto prepare = [&] {
+    b0 = offset0();
+    b1 = offset1();
+    inv_b_sq = 1.0 / (b0 * b0 + b1 * b1);
+  };
   auto cost_of = [&](int d0, int d1, int d2, double& turn_out) {
-    const double b0 = offset0(), b1 = offset1();
     const double w0 = b0 + d0 * h0, w1 = b1 + d1 * h1;
     const double rho_sq = w0 * w0 + w1 * w1;
-    const double turn = g.turn * (b0 * w1 - b1 * w0) / std::sqrt((b0 * b0 + b1 * b1) * rho_sq);
+    const double turn = g.turn * (b0 * w1 - b1 * w0) * inv_b_sq;
     turn_out = turn;
     const double phi_new = phi + turn;
     const double r = g.radius(phi_new);
-    const double radial = (rho_sq - r * r) / (std::sqrt(rho_sq) + r);
+    const double radial = (rho_sq - r * r) / (2 * r);
     const double axial = weigh_axial ? static_cast<double>(position_[a2] + d2) * h2 - g.height(phi_new) : 0.0;
     return radial * radial + axial * axial;
   };
@@ -118,7 +140,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
     // dither back and forth, a burst of pulses microseconds apart.
     int last_sign0 = 0, last_sign1 = 0, tangent_sign0 = 0, tangent_sign1 = 0;
     for (double events = 0; g.sweep - phi > end_zone && events < bound; ++events) {
-      const double b0 = offset0(), b1 = offset1();
+      prepare();
       // Tangent: which in-plane moves advance along the arc.
       const double t0 = -g.turn * b1, t1 = g.turn * b0;
       const int now_sign0 = t0 > 0 ? 1 : -1, now_sign1 = t1 > 0 ? 1 : -1;
@@ -141,9 +163,12 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
         }
       };
       if (method_ == StepMethod::direct) {
-        for (int d0 = -1; d0 <= 1; ++d0)
-          for (int d1 = -1; d1 <= 1; ++d1) {
-            if (d0 * h0 * t0 + d1 * h1 * t1 <= 0) continue;  // must move forward along the arc
+        // The neighbours around the tangent: each in-plane axis still or one
+        // step the tangent's way (a move against the tangent on an axis never
+        // lies nearer an arc that turns less than 90 degrees in one step).
+        for (int d0 = 0; d0 != 2 * now_sign0; d0 += now_sign0)
+          for (int d1 = 0; d1 != 2 * now_sign1; d1 += now_sign1) {
+            if (!d0 && !d1) continue;
             if (reverses(d0, d1)) continue;
             consider(d0, d1, 0);
             if (rise) consider(d0, d1, rise);
@@ -181,11 +206,19 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   Motion rest = motion;
   rest.kind = MotionKind::linear;
   for (int axis = 0; axis < 3; ++axis) rest.start[axis] = static_cast<double>(position_[axis]) * step_mm_[axis];
-  const double done = along_of(phi);
+  // The last steps share out what is left of the path in proportion to
+  // their own progress, ending exactly at its end.
+  double straight = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double d = motion.end[axis] - rest.start[axis];
+    straight += d * d;
+  }
+  straight = std::sqrt(straight);
+  const double done = along_of(phi), left = g.length - done;
   thread_local std::vector<StepEvent> tail;
   const std::function<void(std::span<const StepEvent>)> shift_along = [&](std::span<const StepEvent> events) {
     for (StepEvent event : events) {
-      event.along_mm = std::min(done + event.along_mm, g.length);
+      event.along_mm = straight > 0 ? std::min(done + left * event.along_mm / straight, g.length) : g.length;
       out.push(event);
     }
   };

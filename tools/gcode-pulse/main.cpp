@@ -107,6 +107,7 @@ int main(int argc, char** argv) {
       record["max_deviation_mm"] = s.max_deviation_mm;
       record["rms_deviation_mm"] = s.rms_deviation_mm();
       for (int axis = 0; axis < 3; ++axis) record[std::string("peak_rate_") + kAxes[axis]] = s.peak_rate[axis];
+      record["coincident_steps"] = s.coincident_steps;
       record["events"] = s.events;
       record["blocks"] = s.blocks;
       record["motions"] = s.motions;
