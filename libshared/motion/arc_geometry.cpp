@@ -32,6 +32,8 @@ ArcGeometry arc_geometry(const Motion& m) {
   g.z_start = m.start[g.a2];
   g.z_rise = m.end[g.a2] - m.start[g.a2];
   g.length = std::hypot(0.5 * (g.r_start + g.r_end) * g.sweep, g.z_rise);
+  g.radius_per_radian = (g.r_end - g.r_start) / g.sweep;
+  g.rise_per_radian = g.z_rise / g.sweep;
   return g;
 }
 
@@ -40,7 +42,7 @@ Vec3 ArcGeometry::tangent(double phi) const {
   Vec3 t;
   t[a0] = -turn * r * std::sin(angle);
   t[a1] = turn * r * std::cos(angle);
-  t[a2] = z_rise / sweep;
+  t[a2] = rise_per_radian;
   const double norm = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
   if (norm > 0) {
     t.x /= norm;

@@ -19,8 +19,10 @@ struct ArcGeometry {
   double z_start = 0, z_rise = 0;
   double length = 0;            ///< mm along the helix
 
-  double radius(double phi) const { return r_start + (r_end - r_start) * phi / sweep; }
-  double height(double phi) const { return z_start + z_rise * phi / sweep; }
+  double radius_per_radian = 0, rise_per_radian = 0;  ///< (r_end - r_start) / sweep, z_rise / sweep
+
+  double radius(double phi) const { return r_start + radius_per_radian * phi; }
+  double height(double phi) const { return z_start + rise_per_radian * phi; }
   /// Unit tangent (in the motion's direction) at angle phi.
   Vec3 tangent(double phi) const;
 };

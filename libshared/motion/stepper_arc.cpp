@@ -57,6 +57,11 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   auto along_of = [&](double phi_now) {
     return std::clamp((projection(phi_now) - projection_start) * along_scale, 0.0, g.length);
   };
+  // Distance from the helix, to first order: the radial error, and the
+  // height error at the point's own angle times the cosine of the helix's
+  // slope (unrolled, the helix is a line; a point above it by dz lies
+  // dz * cos(slope) from it). On a flat arc the factor is 1.
+  const double axial_to_normal = unrolled / g.length;
   // phi advances by the turn between successive points, taken as
   // cross / (|b| |w|) (the sine of the turn: off by turn^3 / 6, a
   // millionth of a step for radii of 100 steps); an exact atan2 every 256
@@ -83,7 +88,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
     event.delta[a2] = static_cast<std::int8_t>(d2);
     event.along_mm = along_of(phi);
     const double radial = rho - g.radius(phi);
-    const double axial = static_cast<double>(position_[a2]) * h2 - g.height(phi);
+    const double axial = (static_cast<double>(position_[a2]) * h2 - g.height(phi)) * axial_to_normal;
     event.deviation_sq = radial * radial + axial * axial;
     out.push(event);
   };
@@ -93,11 +98,16 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   // decision is in the plane alone (the normal axis follows on its own),
   // so it weighs the radial error only.
   const bool weigh_axial = method_ == StepMethod::direct;
-  double b0 = 0, b1 = 0, inv_b_sq = 0;  // the current point, set per event by `prepare`
+  // Per event (`prepare`): the current point, and the ideal radius there
+  // (its change over one step is far below the errors being ranked).
+  double b0 = 0, b1 = 0, inv_b_sq = 0, r_sq = 0, inv_2r = 0;
   auto prepare = [&] {
     b0 = offset0();
     b1 = offset1();
     inv_b_sq = 1.0 / (b0 * b0 + b1 * b1);
+    const double r = g.radius(phi);
+    r_sq = r * r;
+    inv_2r = 0.5 / r;
   };
   auto cost_of = [&](int d0, int d1, int d2, double& turn_out) {
     const double w0 = b0 + d0 * h0, w1 = b1 + d1 * h1;
@@ -105,9 +115,9 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
     const double turn = g.turn * (b0 * w1 - b1 * w0) * inv_b_sq;
     turn_out = turn;
     const double phi_new = phi + turn;
-    const double r = g.radius(phi_new);
-    const double radial = (rho_sq - r * r) / (2 * r);
-    const double axial = weigh_axial ? static_cast<double>(position_[a2] + d2) * h2 - g.height(phi_new) : 0.0;
+    const double radial = (rho_sq - r_sq) * inv_2r;
+    const double axial =
+        weigh_axial ? (static_cast<double>(position_[a2] + d2) * h2 - g.height(phi_new)) * axial_to_normal : 0.0;
     return radial * radial + axial * axial;
   };
 
