@@ -188,6 +188,51 @@ TEST(Stepper, AMillionStepLineEndsExactlyAndAManyBlockProgramDoesNotDrift) {
   EXPECT_EQ(stepper.position(), stepper.quantise(motion.end));
 }
 
+// The seed's claim, on random lines and arcs (flat and helical): the
+// direct method stays at least as close to the ideal path as Bresenham,
+// in the worst event and on average. (Measured on 10,000 moves by
+// bench_gcode_pulse: max 0.0036 mm against 0.0073, RMS 0.00153 against
+// 0.00167, with 200/200/400 steps per mm.)
+TEST(Stepper, DirectFollowsThePathAtLeastAsCloselyAsBresenham) {
+  auto study = [](StepMethod method) {
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    Stepper stepper(method, kStepsPerMm);
+    double worst = 0, sum_sq = 0, events = 0;
+    Vec3 at{};
+    for (int i = 0; i < 2000; ++i) {
+      Motion m;
+      m.start = at;
+      if (i % 2 == 0) {
+        m.end = {at.x + 20 * unit(random) - 10, at.y + 20 * unit(random) - 10, at.z + 2 * unit(random) - 1};
+      } else {
+        m.kind = MotionKind::arc;
+        const double r = 0.2 + 10 * unit(random), a = 6.283 * unit(random), sweep = 0.1 + 6 * unit(random);
+        m.clockwise = unit(random) < 0.5;
+        m.center = {at.x - r * std::cos(a), at.y - r * std::sin(a), at.z};
+        const double e = a + (m.clockwise ? -sweep : sweep);
+        m.end = {m.center.x + r * std::cos(e), m.center.y + r * std::sin(e), at.z + (i % 4 == 1 ? unit(random) - 0.5 : 0)};
+      }
+      stepper.run(m, [&](std::span<const StepEvent> chunk) {
+        for (const StepEvent& e : chunk) {
+          worst = std::max(worst, e.deviation_sq);
+          sum_sq += e.deviation_sq;
+        }
+        events += static_cast<double>(chunk.size());
+      });
+      at = m.end;
+    }
+    return std::pair{std::sqrt(worst), std::sqrt(sum_sq / events)};
+  };
+  const auto [direct_max, direct_rms] = study(StepMethod::direct);
+  const auto [bresenham_max, bresenham_rms] = study(StepMethod::bresenham);
+  EXPECT_LE(direct_max, bresenham_max);
+  EXPECT_LE(direct_rms, bresenham_rms);
+  // Both within a step of the path: 1/200 mm.
+  EXPECT_LT(direct_max, 0.005);
+  EXPECT_LT(bresenham_max, 0.01);
+}
+
 TEST(Stepper, RefusesBadStepsPerMm) {
   EXPECT_THROW(Stepper(StepMethod::direct, {0, 200, 400}), tk::Error);
   EXPECT_THROW(Stepper(StepMethod::direct, {200, -1, 400}), tk::Error);
