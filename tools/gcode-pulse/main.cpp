@@ -1,12 +1,15 @@
 /// @file main.cpp
 /// @brief gcode-pulse: G-code to timed step pulses (direct single-impulse
 /// calculation, Bresenham or DDA), or a summary of them.
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdlib>
 
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
 #include "io/record_writer.hpp"
+#include "motion/pulse_binary.hpp"
 #include "motion/pulse_run.hpp"
 
 namespace {
@@ -40,7 +43,7 @@ int main(int argc, char** argv) {
                         "per lattice move (t, dx, dy, dz), or a summary of them.",
                         "See gcode-pulse(1).");
   std::string steps = "200,200,400", method = "direct";
-  bool summary_only = false, lenient = false;
+  bool summary_only = false, lenient = false, binary = false;
   tk::motion::MachineLimits limits;
   double rapid_mm_min = 5000, max_feed_mm_min = 0;
   CLI::App& app = tool.app();
@@ -50,6 +53,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->type_name("NAME");
   app.add_flag("--summary", summary_only, "write one summary record instead of the pulses");
+  app.add_flag("--binary", binary, "write the pulses in the compact binary form (see gcode-pulse(1))");
   app.add_flag("--lenient", lenient, "skip words that change motion but cannot be honoured (G41, canned cycles...) with a warning");
   app.add_option("--accel", limits.acceleration, "acceleration, mm/s^2")->capture_default_str()->type_name("A");
   app.add_option("--rapid", rapid_mm_min, "G0 speed, mm/min")->capture_default_str()->type_name("F");
@@ -77,9 +81,16 @@ int main(int argc, char** argv) {
     options.limits = limits;
     options.interpreter.lenient = lenient;
 
+    if (binary && summary_only) throw tk::UsageError("--binary and --summary exclude each other");
+    if (binary && tool.common().csv) throw tk::UsageError("--binary and --csv exclude each other");
+    if (binary && isatty(STDOUT_FILENO)) throw tk::UsageError("--binary will not write to a terminal: redirect standard output");
     tk::io::RecordWriter writer(tool.output_format());
+    std::unique_ptr<tk::motion::PulseBinaryWriter> binary_writer;
     tk::motion::PulseRun::PulseSink on_pulses;
-    if (!summary_only) {
+    if (binary) {
+      binary_writer = std::make_unique<tk::motion::PulseBinaryWriter>(stdout, options.steps_per_mm);
+      on_pulses = [&](std::span<const tk::motion::Pulse> pulses) { binary_writer->write(pulses); };
+    } else if (!summary_only) {
       writer.declare_fields({"t", "dx", "dy", "dz"});
       on_pulses = [&](std::span<const tk::motion::Pulse> pulses) {
         for (const tk::motion::Pulse& pulse : pulses) {
@@ -92,8 +103,13 @@ int main(int argc, char** argv) {
     tk::motion::PulseRun run(options, on_pulses, [&](const std::string& message) { tool.warn(message); });
     std::vector<std::string> inputs = tool.common().inputs;
     if (inputs.empty()) inputs.push_back("-");
-    for (const std::string& path : inputs) run.run_file(path);
-    run.finish();
+    try {
+      for (const std::string& path : inputs) run.run_file(path);
+      run.finish();
+    } catch (const tk::Error&) {
+      if (binary_writer) binary_writer->flush();  // the pulses before the error stay written
+      throw;
+    }
     if (summary_only) {
       const tk::motion::PulseSummary s = run.summary();
       tk::Record record;
@@ -117,6 +133,7 @@ int main(int argc, char** argv) {
       record["unused_words"] = tool.output_format() == tk::io::OutputFormat::csv ? tk::Record(unused.dump()) : unused;
       writer.write(record);
     }
+    if (binary_writer) binary_writer->flush();
     writer.flush();
   });
 }
