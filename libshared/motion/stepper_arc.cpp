@@ -46,9 +46,10 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   // height) onto it, so a step of the normal axis alone advances too.
   const double mean_radius = 0.5 * (g.r_start + g.r_end);
   const double unrolled = mean_radius * g.sweep;
+  const double inv_length = 1.0 / g.length;
   auto projection = [&](double phi_now) {
     const double rise_done = static_cast<double>(position_[a2]) * h2 - g.z_start;
-    return (mean_radius * phi_now * unrolled + rise_done * g.z_rise) / g.length;
+    return (mean_radius * phi_now * unrolled + rise_done * g.z_rise) * inv_length;
   };
   // The start's lattice point projects a little before or after 0: map
   // [that, length] onto [0, length] (the last steps are mapped below).
@@ -63,30 +64,34 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   // dz * cos(slope) from it). On a flat arc the factor is 1.
   const double axial_to_normal = unrolled / g.length;
   // phi advances by the turn between successive points, taken as
-  // cross / (|b| |w|) (the sine of the turn: off by turn^3 / 6, a
-  // millionth of a step for radii of 100 steps); an exact atan2 every 256
-  // events keeps that from adding up.
+  // cross / R^2 with R the ideal radius (the sine of the turn, with the
+  // points' radii, which stay within a step of R, put to R: no square root
+  // or division on the chain from one event to the next); every 256
+  // events phi is set to the point's exact angle, so the small errors
+  // never add up.
   std::uint32_t since_exact = 0;
-  double rho_now = std::hypot(offset0(), offset1());  // distance of the current point from the centre
+  double last_along = 0;
+  const double inv_r_sq = 1.0 / (g.r_start * g.r_end);
   auto emit = [&](int d0, int d1, int d2) {
     const double v0 = offset0(), v1 = offset1();
     position_[a0] += d0;
     position_[a1] += d1;
     position_[a2] += d2;
     const double w0 = offset0(), w1 = offset1();
-    const double rho = std::sqrt(w0 * w0 + w1 * w1);
+    phi += g.turn * (v0 * w1 - v1 * w0) * inv_r_sq;
     if (++since_exact == 256) {
+      // The exact angle of the point, unwrapped next to the running value.
       since_exact = 0;
-      phi += std::atan2(g.turn * (v0 * w1 - v1 * w0), v0 * w0 + v1 * w1);
-    } else {
-      phi += g.turn * (v0 * w1 - v1 * w0) / (rho_now * rho);
+      const double exact = g.turn * (std::atan2(w1, w0) - g.start_angle);
+      phi += std::remainder(exact - phi, kTwoPi);
     }
-    rho_now = rho;
+    const double rho = std::sqrt(w0 * w0 + w1 * w1);
     StepEvent event;
     event.delta[a0] = static_cast<std::int8_t>(d0);
     event.delta[a1] = static_cast<std::int8_t>(d1);
     event.delta[a2] = static_cast<std::int8_t>(d2);
-    event.along_mm = along_of(phi);
+    last_along = std::max(last_along, along_of(phi));  // a resync of phi may step back a hair
+    event.along_mm = last_along;
     const double radial = rho - g.radius(phi);
     const double axial = (static_cast<double>(position_[a2]) * h2 - g.height(phi)) * axial_to_normal;
     event.deviation_sq = radial * radial + axial * axial;
@@ -100,14 +105,13 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   const bool weigh_axial = method_ == StepMethod::direct;
   // Per event (`prepare`): the current point, and the ideal radius there
   // (its change over one step is far below the errors being ranked).
-  double b0 = 0, b1 = 0, inv_b_sq = 0, r_sq = 0, inv_2r = 0;
+  double b0 = 0, b1 = 0, r_sq = 0;
+  const double inv_2r = 1.0 / (g.r_start + g.r_end), inv_b_sq = inv_r_sq;
   auto prepare = [&] {
     b0 = offset0();
     b1 = offset1();
-    inv_b_sq = 1.0 / (b0 * b0 + b1 * b1);
     const double r = g.radius(phi);
     r_sq = r * r;
-    inv_2r = 0.5 / r;
   };
   auto cost_of = [&](int d0, int d1, int d2, double& turn_out) {
     const double w0 = b0 + d0 * h0, w1 = b1 + d1 * h1;
