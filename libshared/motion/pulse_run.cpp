@@ -62,6 +62,7 @@ void PulseRun::on_block(const PlannedBlock& block) {
     return;
   }
   if (block.feed_capped) ++summary_.feed_capped;
+  if (svg_) svg_->add_motion(block.motion);
   const double start = clock_;
   const bool want_pulses = static_cast<bool>(on_pulses_);
   summary_.path_mm += stepper_.run(block.motion, [&](std::span<const StepEvent> events) {
@@ -85,6 +86,12 @@ void PulseRun::on_block(const PlannedBlock& block) {
       if (want_pulses) pulses_.push_back(Pulse{t, event.delta});
     }
     summary_.events += events.size();
+    if (svg_)
+      for (const StepEvent& event : events) {
+        for (int axis = 0; axis < 3; ++axis) lattice_[axis] += event.delta[axis];
+        svg_->add_point(static_cast<double>(lattice_[0]) / options_.steps_per_mm[0],
+                        static_cast<double>(lattice_[1]) / options_.steps_per_mm[1]);
+      }
     if (want_pulses) on_pulses_(std::span<const Pulse>(pulses_.data(), pulses_.size()));
   });
   clock_ = start + block.duration;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "motion/gcode.hpp"
+#include "motion/path_svg.hpp"
 #include "motion/planner.hpp"
 #include "motion/stepper.hpp"
 
@@ -58,6 +59,8 @@ class PulseRun {
   /// Runs one program file ("-" is stdin). Throws tk::Error with the file
   /// and line of the first bad block, after every pulse before it.
   void run_file(const std::string& path);
+  /// Draws the ideal and the stepped path over a window (see PathSvg).
+  void draw(PathSvg* svg) { svg_ = svg; }
   /// Stops the machine after the last block and emits what is pending.
   void finish();
 
@@ -77,6 +80,8 @@ class PulseRun {
   std::array<double, 3> last_step_time_{-1, -1, -1};
   std::array<double, 3> shortest_interval_{};
   std::vector<Pulse> pulses_;
+  PathSvg* svg_ = nullptr;
+  std::array<std::int64_t, 3> lattice_{};  ///< followed only when drawing
   std::vector<Motion> motions_;
 };
 

@@ -228,7 +228,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
     straight += d * d;
   }
   straight = std::sqrt(straight);
-  const double done = along_of(phi), left = g.length - done;
+  const double done = std::max(last_along, along_of(phi)), left = g.length - done;
   thread_local std::vector<StepEvent> tail;
   const std::function<void(std::span<const StepEvent>)> shift_along = [&](std::span<const StepEvent> events) {
     for (StepEvent event : events) {

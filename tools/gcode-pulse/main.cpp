@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
                         "Turn G-code (RS274/NGC as LinuxCNC and grbl run it) into timed step pulses, one event "
                         "per lattice move (t, dx, dy, dz), or a summary of them.",
                         "See gcode-pulse(1).");
-  std::string steps = "200,200,400", method = "direct";
+  std::string steps = "200,200,400", method = "direct", svg_path, window_text;
   bool summary_only = false, lenient = false, binary = false;
   tk::motion::MachineLimits limits;
   double rapid_mm_min = 5000, max_feed_mm_min = 0;
@@ -55,6 +55,9 @@ int main(int argc, char** argv) {
   app.add_flag("--summary", summary_only, "write one summary record instead of the pulses");
   app.add_flag("--binary", binary, "write the pulses in the compact binary form (see gcode-pulse(1))");
   app.add_flag("--lenient", lenient, "skip words that change motion but cannot be honoured (G41, canned cycles...) with a warning");
+  app.add_option("--svg", svg_path, "draw the ideal and the stepped path in the XY plane (needs --window)")
+      ->type_name("FILE");
+  app.add_option("--window", window_text, "the part of the XY plane to draw, mm")->type_name("X0,Y0,X1,Y1");
   app.add_option("--accel", limits.acceleration, "acceleration, mm/s^2")->capture_default_str()->type_name("A");
   app.add_option("--rapid", rapid_mm_min, "G0 speed, mm/min")->capture_default_str()->type_name("F");
   app.add_option("--max-feed", max_feed_mm_min, "cap on programmed feeds, mm/min (default: --rapid)")->type_name("F");
@@ -101,6 +104,12 @@ int main(int argc, char** argv) {
       };
     }
     tk::motion::PulseRun run(options, on_pulses, [&](const std::string& message) { tool.warn(message); });
+    if (svg_path.empty() != window_text.empty()) throw tk::UsageError("--svg and --window go together");
+    std::unique_ptr<tk::motion::PathSvg> svg;
+    if (!svg_path.empty()) {
+      svg = std::make_unique<tk::motion::PathSvg>(tk::motion::parse_svg_window(window_text));
+      run.draw(svg.get());
+    }
     std::vector<std::string> inputs = tool.common().inputs;
     if (inputs.empty()) inputs.push_back("-");
     try {
@@ -109,6 +118,10 @@ int main(int argc, char** argv) {
     } catch (const tk::Error&) {
       if (binary_writer) binary_writer->flush();  // the pulses before the error stay written
       throw;
+    }
+    if (svg) {
+      svg->write(svg_path);
+      if (svg->truncated()) tool.warn(svg_path + ": more than 500,000 points in the window: the drawing stops there");
     }
     if (summary_only) {
       const tk::motion::PulseSummary s = run.summary();
