@@ -114,9 +114,12 @@ void Planner::add(const Motion& motion, const Sink& ready) {
   previous_nominal_ = nominal;
   if (pending_.empty()) locked_entry_ = junction;
   pending_.push_back(next);
+  // Planning costs the window's length: plan once it is full, then hand
+  // out its first half, so each block costs a constant on average and
+  // every block went out with at least half a window planned behind it.
   if (pending_.size() > limits_.lookahead) {
     plan();
-    emit_front(ready);
+    while (pending_.size() > limits_.lookahead / 2) emit_front(ready);
   }
 }
 

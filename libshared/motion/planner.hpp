@@ -9,7 +9,9 @@
 /// acceleration equals the machine's. Arcs are also limited to the speed
 /// whose centripetal acceleration v^2/R equals it. Look-ahead runs over a
 /// window of blocks: the last block in the window must be able to stop, so
-/// a longer window only ever raises speeds. A dwell stops the machine.
+/// a longer window only ever raises speeds. A full window is planned once
+/// and its first half goes out, so every block is planned with at least
+/// half a window after it. A dwell stops the machine.
 #pragma once
 
 #include <cstddef>
