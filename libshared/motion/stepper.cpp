@@ -107,16 +107,19 @@ double Stepper::run_line(const Motion& motion, Chunk& out) {
     move_perp_sq[mask] = sq;
   }
 
+  // The lattice point in a local (nothing the event buffer writes can
+  // alias it), handed back at the end.
+  std::array<std::int64_t, 3> at = position_;
   auto apply = [&](int mask) {
     StepEvent event;
     double crossing = -INFINITY;
     if (mask >> pacing & 1) {
-      const double midpoint = (static_cast<double>(position_[pacing]) + 0.5 * sign[pacing]) * step_mm_[pacing];
+      const double midpoint = (static_cast<double>(at[pacing]) + 0.5 * sign[pacing]) * step_mm_[pacing];
       crossing = (midpoint - motion.start[pacing]) * pacing_per_mm;
     }
     for (int axis = 0; axis < 3; ++axis) {
       if (mask >> axis & 1) {
-        position_[axis] += sign[axis];
+        at[axis] += sign[axis];
         remaining[axis] -= sign[axis];
         event.delta[axis] = static_cast<std::int8_t>(sign[axis]);
       }
@@ -211,6 +214,7 @@ double Stepper::run_line(const Motion& motion, Chunk& out) {
       if (mask) apply(mask);
     }
   }
+  position_ = at;
   if (position_ != target) throw Error("internal error: a line did not end on its target");
   return length;
 }

@@ -27,10 +27,13 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   const double h0 = step_mm_[a0], h1 = step_mm_[a1], h2 = step_mm_[a2];
   const auto target = quantise(motion.end);
   const int rise_sign = target[a2] > position_[a2] ? 1 : target[a2] < position_[a2] ? -1 : 0;
+  // The walk keeps the lattice point in locals (nothing the event buffer
+  // writes can alias them), and hands it back before the last steps.
+  std::int64_t at0 = position_[a0], at1 = position_[a1], at2 = position_[a2];
 
   // The current point relative to the centre, and its angle phi so far.
-  auto offset0 = [&] { return static_cast<double>(position_[a0]) * h0 - g.c0; };
-  auto offset1 = [&] { return static_cast<double>(position_[a1]) * h1 - g.c1; };
+  auto offset0 = [&] { return static_cast<double>(at0) * h0 - g.c0; };
+  auto offset1 = [&] { return static_cast<double>(at1) * h1 - g.c1; };
   double phi = 0;
   {
     const double angle = std::atan2(offset1(), offset0());
@@ -48,7 +51,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   const double unrolled = mean_radius * g.sweep;
   const double inv_length = 1.0 / g.length;
   auto projection = [&](double phi_now) {
-    const double rise_done = static_cast<double>(position_[a2]) * h2 - g.z_start;
+    const double rise_done = static_cast<double>(at2) * h2 - g.z_start;
     return (mean_radius * phi_now * unrolled + rise_done * g.z_rise) * inv_length;
   };
   // The start's lattice point projects a little before or after 0: map
@@ -74,9 +77,9 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   const double inv_r_sq = 1.0 / (g.r_start * g.r_end);
   auto emit = [&](int d0, int d1, int d2) {
     const double v0 = offset0(), v1 = offset1();
-    position_[a0] += d0;
-    position_[a1] += d1;
-    position_[a2] += d2;
+    at0 += d0;
+    at1 += d1;
+    at2 += d2;
     const double w0 = offset0(), w1 = offset1();
     phi += g.turn * (v0 * w1 - v1 * w0) * inv_r_sq;
     if (++since_exact == 256) {
@@ -93,7 +96,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
     last_along = std::max(last_along, along_of(phi));  // a resync of phi may step back a hair
     event.along_mm = last_along;
     const double radial = rho - g.radius(phi);
-    const double axial = (static_cast<double>(position_[a2]) * h2 - g.height(phi)) * axial_to_normal;
+    const double axial = (static_cast<double>(at2) * h2 - g.height(phi)) * axial_to_normal;
     event.deviation_sq = radial * radial + axial * axial;
     out.push(event);
   };
@@ -121,7 +124,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
     const double phi_new = phi + turn;
     const double radial = (rho_sq - r_sq) * inv_2r;
     const double axial =
-        weigh_axial ? (static_cast<double>(position_[a2] + d2) * h2 - g.height(phi_new)) * axial_to_normal : 0.0;
+        weigh_axial ? (static_cast<double>(at2 + d2) * h2 - g.height(phi_new)) * axial_to_normal : 0.0;
     return radial * radial + axial * axial;
   };
 
@@ -135,12 +138,12 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
       const double phi_i = g.sweep * static_cast<double>(i) / static_cast<double>(samples);
       if (g.sweep - phi_i < end_zone) break;
       const double angle = g.start_angle + g.turn * phi_i, r = g.radius(phi_i);
-      const auto q0 = static_cast<std::int64_t>(std::llround((g.c0 + r * std::cos(angle)) / h0));
-      const auto q1 = static_cast<std::int64_t>(std::llround((g.c1 + r * std::sin(angle)) / h1));
-      const auto q2 = static_cast<std::int64_t>(std::llround(g.height(phi_i) / h2));
-      const auto d0 = std::clamp<std::int64_t>(q0 - position_[a0], -1, 1);
-      const auto d1 = std::clamp<std::int64_t>(q1 - position_[a1], -1, 1);
-      const auto d2 = std::clamp<std::int64_t>(q2 - position_[a2], -1, 1);
+      const auto sample0 = static_cast<std::int64_t>(std::llround((g.c0 + r * std::cos(angle)) / h0));
+      const auto sample1 = static_cast<std::int64_t>(std::llround((g.c1 + r * std::sin(angle)) / h1));
+      const auto sample2 = static_cast<std::int64_t>(std::llround(g.height(phi_i) / h2));
+      const auto d0 = std::clamp<std::int64_t>(sample0 - at0, -1, 1);
+      const auto d1 = std::clamp<std::int64_t>(sample1 - at1, -1, 1);
+      const auto d2 = std::clamp<std::int64_t>(sample2 - at2, -1, 1);
       if (d0 || d1 || d2) emit(static_cast<int>(d0), static_cast<int>(d1), static_cast<int>(d2));
     }
   } else {
@@ -162,7 +165,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
         return (d0 != 0 && d0 == -last_sign0 && now_sign0 == tangent_sign0) ||
                (d1 != 0 && d1 == -last_sign1 && now_sign1 == tangent_sign1);
       };
-      const int rise = position_[a2] != target[a2] ? rise_sign : 0;
+      const int rise = at2 != target[a2] ? rise_sign : 0;
       int best0 = 0, best1 = 0, best2 = 0;
       double best_cost = INFINITY, turn = 0;
       auto consider = [&](int d0, int d1, int d2) {
@@ -196,7 +199,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
         consider(major0 ? s0 : 0, major0 ? 0 : s1, 0);
         consider(s0, s1, 0);
         // The normal axis joins when it lags half a step or more.
-        const double lag = (g.height(phi + turn) - static_cast<double>(position_[a2]) * h2) * rise;
+        const double lag = (g.height(phi + turn) - static_cast<double>(at2) * h2) * rise;
         if (rise && lag >= 0.5 * h2) best2 = rise;
       }
       if ((best0 || best1) && turn <= 0) break;  // radius below a step: finish straight
@@ -212,10 +215,13 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
       }
       // Bresenham on a steep helix: the rise alone while it lags a step.
       if (method_ == StepMethod::bresenham && rise)
-        while ((g.height(phi) - static_cast<double>(position_[a2]) * h2) * rise >= 1.5 * h2 && position_[a2] != target[a2])
+        while ((g.height(phi) - static_cast<double>(at2) * h2) * rise >= 1.5 * h2 && at2 != target[a2])
           emit(0, 0, rise);
     }
   }
+  position_[a0] = at0;
+  position_[a1] = at1;
+  position_[a2] = at2;
   // The last steps: straight to the end quantised, as a short line.
   Motion rest = motion;
   rest.kind = MotionKind::linear;
