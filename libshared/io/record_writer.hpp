@@ -2,7 +2,6 @@
 /// @brief Writes records as JSON Lines (default) or CSV with a header row.
 #pragma once
 
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <span>
@@ -48,7 +47,7 @@ class RecordWriter {
   std::vector<std::string> columns_;
   std::string line_;
   bool numbers_header_done_ = false;
-  std::chrono::steady_clock::time_point last_flush_;
+  double last_flush_ = 0;  ///< seconds, CLOCK_MONOTONIC_COARSE
 };
 
 /// A record field as CSV cell text: strings raw, numbers and booleans as in
