@@ -67,7 +67,7 @@ void GcodeInterpreter::execute(const GcodeLine& line, std::size_t line_number, s
   move(block, skip_motion, line_number, out);
   for (char letter = 'A'; letter <= 'Z'; ++letter)
     if (block.has(letter) && !block.used[GcodeBlock::index(letter)])
-      throw Error(fmt::format("{}{:g}: nothing on the line uses a {} word", letter,
+      throw Error(fmt::format("{}{:g}: nothing on the line uses the {} word", letter,
                               block.value[GcodeBlock::index(letter)], letter));
   if (block.has_m(2) || block.has_m(30)) ended_ = true;
 }

@@ -145,9 +145,9 @@ TEST(GcodeInterpreter, ModalGroupConflictsAndRepeatedWords) {
   EXPECT_ERROR("G12 X1", "unknown G code G12");
   EXPECT_ERROR("G1.25 X1", "bad G code G1.25");
   EXPECT_ERROR("M3.5", "bad M code M3.5");
-  EXPECT_ERROR("G1 X1 F100 R5", "R5: nothing on the line uses a R word");
-  EXPECT_ERROR("G0 X1 I1", "nothing on the line uses a I word");
-  EXPECT_ERROR("G0 X1 P1", "nothing on the line uses a P word");
+  EXPECT_ERROR("G1 X1 F100 R5", "R5: nothing on the line uses the R word");
+  EXPECT_ERROR("G0 X1 I1", "nothing on the line uses the I word");
+  EXPECT_ERROR("G0 X1 P1", "nothing on the line uses the P word");
 }
 
 TEST(GcodeInterpreter, UnitsAndFeed) {
