@@ -52,4 +52,6 @@ Vec3 ArcGeometry::tangent(double phi) const {
   return t;
 }
 
+double arc_sweep(const Motion& arc) { return arc_geometry(arc).sweep; }
+
 }  // namespace tk::motion

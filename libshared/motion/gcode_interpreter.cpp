@@ -20,16 +20,6 @@ constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
-double arc_sweep(const Motion& arc) {
-  const auto angle = [&arc](const Vec3& point) {
-    return std::atan2(point[arc.axis1] - arc.center[arc.axis1], point[arc.axis0] - arc.center[arc.axis0]);
-  };
-  const double start = angle(arc.start), end = angle(arc.end);
-  double sweep = arc.clockwise ? start - end : end - start;
-  if (sweep <= 0) sweep += 2 * kPi;
-  return sweep + 2 * kPi * static_cast<double>(arc.turns);
-}
-
 GcodeInterpreter::GcodeInterpreter(InterpreterOptions options) : options_(options) {}
 
 void GcodeInterpreter::warn(const std::string& message) const {
@@ -152,7 +142,7 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
   // G2/G3 with only centre words and no end point: a full circle.
   if (skip_motion || !(axis_words || (arc_mode && arc_words))) return;
   if (motion_mode_ == -2) {
-    warn(fmt::format("skipped the motion of line {}: {} mode", line_number, skipped_mode_));
+    warn(fmt::format("skipped this line's motion: {} mode", skipped_mode_));
     block.used.set();
     return;
   }
@@ -165,7 +155,7 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
     const double value = block.take(letter) * unit();
     target[axis] = incremental_ ? position_[axis] + value : value;
     if (!(std::abs(target[axis]) <= options_.max_coordinate_mm))
-      throw Error(fmt::format("coordinate {}{:g} beyond ±{} mm", letter, target[axis], options_.max_coordinate_mm));
+      throw Error(fmt::format("coordinate {}{:.10g} beyond ±{:.10g} mm", letter, target[axis], options_.max_coordinate_mm));
   }
   const bool moves = target.x != position_.x || target.y != position_.y || target.z != position_.z;
   Motion motion;

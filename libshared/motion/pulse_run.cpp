@@ -6,6 +6,7 @@
 
 #include "io/error.hpp"
 #include "io/input_file.hpp"
+#include "motion/arc_geometry.hpp"
 
 namespace tk::motion {
 
@@ -19,18 +20,32 @@ PulseRun::PulseRun(const PulseOptions& options, PulseSink on_pulses, std::functi
       interpreter_(options.interpreter),
       planner_(options.limits),
       stepper_(options.method, options.steps_per_mm) {
-  interpreter_.on_warning(std::move(warn));
+  interpreter_.on_warning([this, warn = std::move(warn)](const std::string& message) {
+    if (warn) warn(Error(message, where_).located_message());
+  });
   ready_ = [this](const PlannedBlock& block) { on_block(block); };
   shortest_interval_.fill(INFINITY);
 }
 
 void PulseRun::run_file(const std::string& path) {
+  // Whatever stops the run (bad G-code, a NUL byte, a file that cannot be
+  // read), every block before it runs and the machine stops there first.
+  try {
+    run_lines(path);
+  } catch (...) {
+    finish();
+    throw;
+  }
+}
+
+void PulseRun::run_lines(const std::string& path) {
   io::InputFile input(path);
   std::string_view text;
   bool started = false;  // a block or an opening '%' seen
-  while (input.next(text)) {
-    if (interpreter_.program_ended()) break;  // M2/M30: the rest is not executed
+  // M2/M30 end the program: the lines after it are not read at all.
+  while (!interpreter_.program_ended() && input.next(text)) {
     motions_.clear();
+    where_ = input.where();
     try {
       const GcodeLine line = lex_gcode_line(text);
       // '%' opens a tape; the next '%' (or one after any block) ends it.
@@ -41,15 +56,29 @@ void PulseRun::run_file(const std::string& path) {
       }
       if (!line.words.empty()) started = true;
       interpreter_.execute(line, input.line_number(), motions_);
+      for (const Motion& motion : motions_) check_counter_range(motion);
     } catch (const Error& e) {
-      // Every block before the bad one runs (and stops) first.
-      finish();
       throw Error(e.what(), input.where());
     }
     for (const Motion& motion : motions_) {
       ++summary_.motions;
       planner_.add(motion, ready_);
     }
+  }
+}
+
+// The stepper's counters hold any point of the path: the end, and for an
+// arc the whole circle's box. Checked here, where the line is known.
+void PulseRun::check_counter_range(const Motion& motion) const {
+  if (motion.kind == MotionKind::dwell) return;
+  stepper_.quantise(motion.end);
+  if (motion.kind == MotionKind::arc) {
+    const ArcGeometry g = arc_geometry(motion);
+    const double r = std::max(g.r_start, g.r_end);
+    Vec3 corner = motion.center;
+    corner[g.a0] = std::fabs(g.c0) + r;
+    corner[g.a1] = std::fabs(g.c1) + r;
+    stepper_.quantise(corner);
   }
 }
 

@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 
+#include "io/error.hpp"
 #include "motion/gcode.hpp"
 #include "motion/path_svg.hpp"
 #include "motion/planner.hpp"
@@ -67,9 +68,12 @@ class PulseRun {
   PulseSummary summary() const;
 
  private:
+  void run_lines(const std::string& path);
+  void check_counter_range(const Motion& motion) const;
   void on_block(const PlannedBlock& block);
 
   PulseOptions options_;
+  Location where_;  ///< the line being read, for warnings
   PulseSink on_pulses_;
   GcodeInterpreter interpreter_;
   Planner planner_;
