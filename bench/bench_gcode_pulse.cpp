@@ -14,6 +14,7 @@
 #include <string>
 
 #include "bench_common.hpp"
+#include "deviation_study.hpp"
 #include "io/record_writer.hpp"
 #include "motion/pulse_run.hpp"
 
@@ -62,37 +63,9 @@ std::uint64_t pulses(const PulseSummary& s) { return s.pulses[0] + s.pulses[1] +
 
 /// Max and RMS deviation of one method over random lines and arcs (mm).
 void deviation_study(StepMethod method, const char* name) {
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> unit(0, 1);
-  Stepper stepper(method, {200, 200, 400});
-  double worst = 0, sum_sq = 0;
-  std::uint64_t events = 0;
-  Vec3 at{};
-  for (int i = 0; i < 10000; ++i) {
-    Motion m;
-    m.start = at;
-    if (i % 2 == 0) {
-      m.end = {at.x + 20 * unit(random) - 10, at.y + 20 * unit(random) - 10, at.z + 2 * unit(random) - 1};
-    } else {
-      m.kind = MotionKind::arc;
-      const double r = 0.2 + 10 * unit(random), a = 6.283 * unit(random), sweep = 0.1 + 6 * unit(random);
-      m.clockwise = unit(random) < 0.5;
-      m.center = {at.x - r * std::cos(a), at.y - r * std::sin(a), at.z};
-      const double e = a + (m.clockwise ? -sweep : sweep);
-      m.end = {m.center.x + r * std::cos(e), m.center.y + r * std::sin(e), at.z + (i % 4 == 1 ? unit(random) - 0.5 : 0)};
-    }
-    stepper.run(m, [&](std::span<const StepEvent> chunk) {
-      for (const StepEvent& e : chunk) {
-        worst = std::max(worst, e.deviation_sq);
-        sum_sq += e.deviation_sq;
-      }
-      events += chunk.size();
-    });
-    at = m.end;
-  }
+  const auto d = study::deviation_over_random_moves(method, {200, 200, 400}, 10000, 7);
   std::printf("FIGURE deviation_%s max %.5f mm rms %.5f mm over %llu events (5,000 lines, 5,000 arcs, 200/200/400 steps/mm)\n",
-              name, std::sqrt(worst), std::sqrt(sum_sq / static_cast<double>(events)),
-              static_cast<unsigned long long>(events));
+              name, d.max_mm, d.rms_mm, static_cast<unsigned long long>(d.events));
 }
 
 }  // namespace

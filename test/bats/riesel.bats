@@ -48,10 +48,17 @@ no_time() {
 # checkpoint_iteration DIR: the iteration a checkpoint in DIR has reached
 # (third line of the "riesel-checkpoint 1" format), 0 while there is none.
 # Checkpoints are DIR/checkpoint-<16 hex digits>; a ".tmp" is one being written.
+# saved_checkpoints DIR: the checkpoints in DIR, never a temporary (whose name
+# also ends in a digit).
+saved_checkpoints() {
+  compgen -G "$1/checkpoint-*" | grep -E '/checkpoint-[0-9a-f]{16}$' || true
+}
+
 checkpoint_iteration() {
-  local file
-  for file in "$1"/checkpoint-*[0-9a-f]; do
-    [ -e "$file" ] && sed -n 3p "$file" 2>/dev/null && return 0
+  local file iteration
+  for file in $(saved_checkpoints "$1"); do
+    iteration=$(sed -n 3p "$file" 2>/dev/null)
+    [[ "$iteration" =~ ^[0-9]+$ ]] && echo "$iteration" && return 0
   done
   echo 0
 }
@@ -576,7 +583,7 @@ prime"
   started=$(date +%s%N)
   riesel --state st --checkpoint-every 0.1 long.txt > first.out 2> /dev/null 3>&- &
   pid=$!
-  wait_for "st/checkpoint-*[0-9a-f]"
+  wait_for "st/checkpoint-????????????????"
   # Wait for three quarters of the 36625 iterations, so resuming shows.
   tries=1200
   while [ "$(checkpoint_iteration st)" -lt 27000 ]; do
@@ -604,8 +611,8 @@ prime"
   python3 -c "import sys; sys.exit(0 if 1000 * $resumed < 0.9 * $first_ms else 1)" ||
     { echo "resumed proof $resumed s; 27000 iterations took $first_ms ms"; false; }
   # Finished proofs leave no checkpoint behind.
-  run compgen -G "st/checkpoint-*[0-9a-f]"
-  assert_failure
+  run saved_checkpoints st
+  assert_output ""
 }
 
 @test "SIGTERM and SIGINT save a checkpoint and kill riesel by the signal; a re-run completes" {
@@ -681,14 +688,14 @@ prime"
   riesel -j 2 --state st --checkpoint-every 0.1 two.txt > /dev/null 2>&1 3>&- &
   pid=$!
   tries=1200
-  until [ "$(compgen -G "st/checkpoint-*[0-9a-f]" | wc -l)" -eq 2 ]; do
+  until [ "$(saved_checkpoints st | wc -l)" -eq 2 ]; do
     tries=$((tries - 1))
     [ "$tries" -gt 0 ] || { echo "no two checkpoints"; false; }
     sleep 0.05
   done
   kill -9 "$pid"
   wait "$pid" || true
-  mapfile -t checkpoints < <(compgen -G "st/checkpoint-*[0-9a-f]")
+  mapfile -t checkpoints < <(saved_checkpoints st)
   python3 - "${checkpoints[0]}" <<'PY'
 import sys
 path = sys.argv[1]

@@ -13,6 +13,7 @@
 
 #include "io/error.hpp"
 #include "motion/stepper.hpp"
+#include "deviation_study.hpp"
 
 namespace {
 
@@ -195,34 +196,8 @@ TEST(Stepper, AMillionStepLineEndsExactlyAndAManyBlockProgramDoesNotDrift) {
 // 0.00167, with 200/200/400 steps per mm.)
 TEST(Stepper, DirectFollowsThePathAtLeastAsCloselyAsBresenham) {
   auto study = [](StepMethod method) {
-    std::mt19937_64 random(11);
-    std::uniform_real_distribution<double> unit(0, 1);
-    Stepper stepper(method, kStepsPerMm);
-    double worst = 0, sum_sq = 0, events = 0;
-    Vec3 at{};
-    for (int i = 0; i < 2000; ++i) {
-      Motion m;
-      m.start = at;
-      if (i % 2 == 0) {
-        m.end = {at.x + 20 * unit(random) - 10, at.y + 20 * unit(random) - 10, at.z + 2 * unit(random) - 1};
-      } else {
-        m.kind = MotionKind::arc;
-        const double r = 0.2 + 10 * unit(random), a = 6.283 * unit(random), sweep = 0.1 + 6 * unit(random);
-        m.clockwise = unit(random) < 0.5;
-        m.center = {at.x - r * std::cos(a), at.y - r * std::sin(a), at.z};
-        const double e = a + (m.clockwise ? -sweep : sweep);
-        m.end = {m.center.x + r * std::cos(e), m.center.y + r * std::sin(e), at.z + (i % 4 == 1 ? unit(random) - 0.5 : 0)};
-      }
-      stepper.run(m, [&](std::span<const StepEvent> chunk) {
-        for (const StepEvent& e : chunk) {
-          worst = std::max(worst, e.deviation_sq);
-          sum_sq += e.deviation_sq;
-        }
-        events += static_cast<double>(chunk.size());
-      });
-      at = m.end;
-    }
-    return std::pair{std::sqrt(worst), std::sqrt(sum_sq / events)};
+    const auto d = study::deviation_over_random_moves(method, kStepsPerMm, 2000, 11);
+    return std::pair{d.max_mm, d.rms_mm};
   };
   const auto [direct_max, direct_rms] = study(StepMethod::direct);
   const auto [bresenham_max, bresenham_rms] = study(StepMethod::bresenham);
