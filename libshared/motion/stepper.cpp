@@ -37,9 +37,7 @@ std::array<std::int64_t, 3> Stepper::quantise(const Vec3& mm) const {
 
 double Stepper::run(const Motion& motion, const std::function<void(std::span<const StepEvent>)>& sink) {
   if (motion.kind == MotionKind::dwell) return 0;
-  thread_local std::vector<StepEvent> buffer;
-  buffer.reserve(Chunk::kEvents);
-  Chunk out(buffer, sink);
+  Chunk out(sink);
   const double length = motion.kind == MotionKind::arc ? run_arc(motion, out) : run_line(motion, out);
   out.flush();
   return length;
@@ -156,13 +154,13 @@ double Stepper::run_line(const Motion& motion, Chunk& out) {
       const double partial[8] = {0, p0, p1, p0 + p1, p2, p0 + p2, p1 + p2, p0 + p1 + p2};
       int best = candidates[0];
       double best_cost = partial[best] + move_perp_sq[best];
+      // Selects rather than branches: which move wins is data, not pattern.
       for (int i = 1; i < count; ++i) {
         const int mask = candidates[i];
         const double cost = partial[mask] + move_perp_sq[mask];
-        if (cost < best_cost) {
-          best_cost = cost;
-          best = mask;
-        }
+        const bool better = cost < best_cost;
+        best = better ? mask : best;
+        best_cost = better ? cost : best_cost;
       }
       apply(best);
       const int now = moving_axes();

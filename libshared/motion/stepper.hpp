@@ -55,25 +55,24 @@ class Stepper {
   double step_mm(int axis) const { return step_mm_[axis]; }
 
  private:
-  /// Collects events and hands them to the sink a chunk at a time.
+  /// Collects events and hands them to the sink a chunk at a time (a
+  /// fixed array on the stack: one store and one compare per event).
   class Chunk {
    public:
-    static constexpr std::size_t kEvents = 4096;
-    Chunk(std::vector<StepEvent>& buffer, const std::function<void(std::span<const StepEvent>)>& sink)
-        : buffer_(buffer), sink_(sink) {
-      buffer_.clear();
-    }
+    static constexpr std::size_t kEvents = 1024;
+    explicit Chunk(const std::function<void(std::span<const StepEvent>)>& sink) : sink_(sink) {}
     void push(const StepEvent& event) {
-      buffer_.push_back(event);
-      if (buffer_.size() == kEvents) flush();
+      events_[count_++] = event;
+      if (count_ == kEvents) flush();
     }
     void flush() {
-      if (!buffer_.empty()) sink_(std::span<const StepEvent>(buffer_.data(), buffer_.size()));
-      buffer_.clear();
+      if (count_ != 0) sink_(std::span<const StepEvent>(events_.data(), count_));
+      count_ = 0;
     }
 
    private:
-    std::vector<StepEvent>& buffer_;
+    std::array<StepEvent, kEvents> events_;
+    std::size_t count_ = 0;
     const std::function<void(std::span<const StepEvent>)>& sink_;  ///< outlives the chunk
   };
 

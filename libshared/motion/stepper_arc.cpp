@@ -179,7 +179,26 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
           turn = candidate_turn;
         }
       };
-      if (method_ == StepMethod::direct) {
+      if (method_ == StepMethod::direct && !rise) {
+        // The common case, no rise to make: the three in-plane neighbours
+        // the tangent's way, ranked without branches (which of them wins
+        // is what a branch predictor cannot guess). Same order and ties as
+        // the general loop below.
+        const bool blocked0 = now_sign0 == -last_sign0 && now_sign0 == tangent_sign0;
+        const bool blocked1 = now_sign1 == -last_sign1 && now_sign1 == tangent_sign1;
+        double turn_a = 0, turn_b = 0, turn_c = 0;
+        const double cost_a = blocked1 ? INFINITY : cost_of(0, now_sign1, 0, turn_a);
+        const double cost_b = blocked0 ? INFINITY : cost_of(now_sign0, 0, 0, turn_b);
+        const double cost_c = blocked0 || blocked1 ? INFINITY : cost_of(now_sign0, now_sign1, 0, turn_c);
+        const bool b_beats_a = cost_b < cost_a;
+        const double best_ab = b_beats_a ? cost_b : cost_a;
+        const bool c_wins = cost_c < best_ab;
+        if (c_wins || best_ab < INFINITY) {
+          best0 = c_wins || b_beats_a ? now_sign0 : 0;
+          best1 = c_wins || !b_beats_a ? now_sign1 : 0;
+          turn = c_wins ? turn_c : b_beats_a ? turn_b : turn_a;
+        }
+      } else if (method_ == StepMethod::direct) {
         // The neighbours around the tangent: each in-plane axis still or one
         // step the tangent's way (a move against the tangent on an axis never
         // lies nearer an arc that turns less than 90 degrees in one step).
@@ -235,14 +254,13 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
   }
   straight = std::sqrt(straight);
   const double done = std::max(last_along, along_of(phi)), left = g.length - done;
-  thread_local std::vector<StepEvent> tail;
   const std::function<void(std::span<const StepEvent>)> shift_along = [&](std::span<const StepEvent> events) {
     for (StepEvent event : events) {
       event.along_mm = straight > 0 ? std::min(done + left * event.along_mm / straight, g.length) : g.length;
       out.push(event);
     }
   };
-  Chunk tail_out(tail, shift_along);
+  Chunk tail_out(shift_along);
   run_line(rest, tail_out);
   tail_out.flush();
   return g.length;
