@@ -23,5 +23,10 @@ print("%-10s %10d %10d %10d %12.5f %12.5f %10.3f" % (r["method"], r["pulses_x"],
 done
 
 echo
+echo "the same program on the machine of examples/machine-router.json (slower Z):"
+gcode-pulse --machine "$here/machine-router.json" --summary "$program" |
+  python3 -c 'import json, sys; r = json.load(sys.stdin); print("duration %.3f s, %d of the blocks capped by an axis" % (r["duration_s"], r["feed_capped_blocks"]))'
+
+echo
 echo "first pulses of the direct method (t in s; dx, dy, dz in steps):"
 gcode-pulse --steps-per-mm "$steps" --csv "$program" | head -6

@@ -1,7 +1,9 @@
 /// @file number_option.cpp
 #include "cli/number_option.hpp"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <string>
 
 #include "io/error.hpp"
@@ -73,6 +75,26 @@ std::pair<unsigned, unsigned> parse_shard(std::string_view text, std::string_vie
   const std::uint64_t count = parse_count(text.substr(slash + 1), option);
   if (count == 0 || count > 1000000 || index == 0 || index > count) throw Error(quoted + " needs 1 <= K <= N <= 1000000");
   return {static_cast<unsigned>(index - 1), static_cast<unsigned>(count)};
+}
+
+std::vector<double> parse_numbers(std::string_view text, std::string_view option, std::size_t count) {
+  const auto bad = [&] {
+    return Error(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' is not " + std::to_string(count) +
+                 " finite numbers separated by commas");
+  };
+  std::vector<double> values;
+  for (std::size_t at = 0; at <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    std::string_view part = text.substr(at, comma - at);
+    if (part.starts_with('+')) part.remove_prefix(1);
+    double value = 0;
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value)) throw bad();
+    values.push_back(value);
+    at = comma + 1;
+  }
+  if (values.size() != count) throw bad();
+  return values;
 }
 
 }  // namespace tk::cli

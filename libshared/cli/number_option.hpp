@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace tk::cli {
 
@@ -18,5 +19,10 @@ std::pair<std::uint64_t, std::uint64_t> parse_range(std::string_view text, std::
 
 /// "K/N" with 1 <= K <= N <= 1000000, as --shard takes it: {K - 1, N}.
 std::pair<unsigned, unsigned> parse_shard(std::string_view text, std::string_view option);
+
+/// "A,B,C": exactly `count` finite decimal numbers separated by commas (as
+/// --steps-per-mm X,Y,Z or --window X0,Y0,X1,Y1 take them). Throws Error
+/// naming `option` for anything else.
+std::vector<double> parse_numbers(std::string_view text, std::string_view option, std::size_t count);
 
 }  // namespace tk::cli

@@ -84,6 +84,7 @@ struct InterpreterOptions {
   bool lenient = false;  ///< skip unsupported motion words with a warning instead of failing
   /// Largest |coordinate| in mm accepted (beyond it the step counters could overflow).
   double max_coordinate_mm = 1e6;
+  Vec3 start;  ///< where the machine is when the program starts (mm)
 };
 
 struct GcodeBlock;  // one line's words sorted out (gcode_block.hpp)

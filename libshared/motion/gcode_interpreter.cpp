@@ -20,7 +20,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
-GcodeInterpreter::GcodeInterpreter(InterpreterOptions options) : options_(options) {}
+GcodeInterpreter::GcodeInterpreter(InterpreterOptions options) : options_(options), position_(options.start) {}
 
 void GcodeInterpreter::warn(const std::string& message) const {
   if (warn_) warn_(message);

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "cli/number_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/error.hpp"
 #include "motion/arc_geometry.hpp"
@@ -15,12 +16,15 @@
 namespace tk::motion {
 
 SvgWindow parse_svg_window(const std::string& text) {
-  SvgWindow w;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf%c", &w.x0, &w.y0, &w.x1, &w.y1, &extra) != 4 ||
-      !std::isfinite(w.x0) || !std::isfinite(w.y0) || !std::isfinite(w.x1) || !std::isfinite(w.y1) || !(w.x0 < w.x1) ||
-      !(w.y0 < w.y1))
-    throw UsageError("--window needs X0,Y0,X1,Y1 in mm with X0 < X1 and Y0 < Y1");
+  const auto refuse = [] { return UsageError("--window needs X0,Y0,X1,Y1 in mm with X0 < X1 and Y0 < Y1"); };
+  std::vector<double> v;
+  try {
+    v = cli::parse_numbers(text, "--window", 4);
+  } catch (const Error&) {
+    throw refuse();
+  }
+  const SvgWindow w{v[0], v[1], v[2], v[3]};
+  if (!(w.x0 < w.x1) || !(w.y0 < w.y1)) throw refuse();
   return w;
 }
 

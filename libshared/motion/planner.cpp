@@ -18,7 +18,8 @@ double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * 
 
 /// Path length and unit directions at both ends; 0 length for a motion
 /// that goes nowhere. `radius` is the smallest radius of an arc (else 0).
-void shape_of(const Motion& m, double& length, Vec3& entry, Vec3& exit, double& radius) {
+/// `share` is the largest |component| of a unit tangent on each axis.
+void shape_of(const Motion& m, double& length, Vec3& entry, Vec3& exit, double& radius, Vec3& share) {
   radius = 0;
   if (m.kind == MotionKind::arc) {
     const ArcGeometry g = arc_geometry(m);
@@ -26,12 +27,24 @@ void shape_of(const Motion& m, double& length, Vec3& entry, Vec3& exit, double& 
     entry = g.tangent(0);
     exit = g.tangent(g.sweep);
     radius = std::min(g.r_start, g.r_end);
+    const double rise = length > 0 ? std::fabs(g.z_rise) / length : 0;
+    share[g.a0] = share[g.a1] = std::sqrt(std::max(0.0, 1 - rise * rise));
+    share[g.a2] = rise;
     return;
   }
   Vec3 d{m.end.x - m.start.x, m.end.y - m.start.y, m.end.z - m.start.z};
   length = std::sqrt(dot(d, d));
   if (length > 0) d = Vec3{d.x / length, d.y / length, d.z / length};
   entry = exit = d;
+  share = Vec3{std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)};
+}
+
+/// The largest path value (speed or acceleration) whose share on every
+/// axis stays within that axis' limit.
+double limit_by_axes(double path_limit, const std::array<double, 3>& axis_limit, const Vec3& share) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (share[axis] > 1e-12) path_limit = std::min(path_limit, axis_limit[axis] / share[axis]);
+  return path_limit;
 }
 
 }  // namespace
@@ -68,6 +81,9 @@ Planner::Planner(MachineLimits limits) : limits_(limits) {
   if (!(limits_.acceleration > 0) || !std::isfinite(limits_.acceleration)) throw Error("acceleration must be positive");
   if (!(limits_.rapid_speed > 0) || !(limits_.max_speed > 0)) throw Error("speeds must be positive");
   if (!(limits_.junction_deviation >= 0)) throw Error("junction deviation must not be negative");
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(limits_.axis_speed[axis] > 0) || !(limits_.axis_acceleration[axis] > 0))
+      throw Error("axis speeds and accelerations must be positive");
   limits_.lookahead = std::max<std::size_t>(limits_.lookahead, 1);
 }
 
@@ -82,18 +98,24 @@ void Planner::add(const Motion& motion, const Sink& ready) {
   }
   Pending next;
   double radius = 0;
-  shape_of(motion, next.block.length, next.entry_direction, next.exit_direction, radius);
+  Vec3 share;
+  shape_of(motion, next.block.length, next.entry_direction, next.exit_direction, radius, share);
   if (!(next.block.length > 0)) return;
   next.block.motion = motion;
-  next.block.acceleration = limits_.acceleration;
+  const double a = limit_by_axes(limits_.acceleration, limits_.axis_acceleration, share);
+  next.block.acceleration = a;
   double nominal = motion.kind == MotionKind::rapid ? limits_.rapid_speed
                    : motion.inverse_time           ? next.block.length / motion.duration
                                                    : motion.feed;
-  if (motion.kind != MotionKind::rapid && nominal > limits_.max_speed) {
-    nominal = limits_.max_speed;
-    next.block.feed_capped = true;
+  // G0 runs as fast as the slowest axis it needs allows; a feed above
+  // what the machine can do is capped (and counted).
+  const double machine_speed =
+      limit_by_axes(motion.kind == MotionKind::rapid ? limits_.rapid_speed : limits_.max_speed, limits_.axis_speed, share);
+  if (nominal > machine_speed) {
+    nominal = machine_speed;
+    next.block.feed_capped = motion.kind != MotionKind::rapid;
   }
-  if (radius > 0) nominal = std::min(nominal, std::sqrt(limits_.acceleration * radius));  // centripetal limit
+  if (radius > 0) nominal = std::min(nominal, std::sqrt(a * radius));  // centripetal limit
   next.nominal = nominal;
 
   // The corner with the previous block, by junction deviation (grbl).
@@ -104,7 +126,8 @@ void Planner::add(const Motion& motion, const Sink& ready) {
       junction = kUnlimited;
     } else if (cos_turn > -0.999999) {
       const double sin_half = std::sqrt(0.5 * (1 - cos_turn));
-      junction = std::sqrt(limits_.acceleration * limits_.junction_deviation * sin_half / (1 - sin_half));
+      const double corner_a = std::min(a, previous_acceleration_);
+      junction = std::sqrt(corner_a * limits_.junction_deviation * sin_half / (1 - sin_half));
     }
     junction = std::min({junction, nominal, previous_nominal_});
   }
@@ -112,6 +135,7 @@ void Planner::add(const Motion& motion, const Sink& ready) {
   have_previous_ = true;
   previous_exit_direction_ = next.exit_direction;
   previous_nominal_ = nominal;
+  previous_acceleration_ = a;
   if (pending_.empty()) locked_entry_ = junction;
   pending_.push_back(next);
   // Planning costs the window's length: plan once it is full, then hand
@@ -135,12 +159,11 @@ void Planner::finish(const Sink& ready) {
 // junction allows and the accelerations on either side can reach.
 void Planner::plan() {
   if (pending_.empty()) return;
-  const double a = limits_.acceleration;
   double exit = 0;
   for (std::size_t i = pending_.size(); i-- > 0;) {
     PlannedBlock& b = pending_[i].block;
     b.exit_speed = exit;
-    b.entry_speed = std::min(pending_[i].max_entry, std::sqrt(exit * exit + 2 * a * b.length));
+    b.entry_speed = std::min(pending_[i].max_entry, std::sqrt(exit * exit + 2 * b.acceleration * b.length));
     exit = b.entry_speed;
   }
   pending_.front().block.entry_speed = std::min(pending_.front().block.entry_speed, locked_entry_);
@@ -148,7 +171,8 @@ void Planner::plan() {
     PlannedBlock& b = pending_[i].block;
     if (i > 0) {
       const PlannedBlock& before = pending_[i - 1].block;
-      b.entry_speed = std::min(b.entry_speed, std::sqrt(before.entry_speed * before.entry_speed + 2 * a * before.length));
+      b.entry_speed =
+          std::min(b.entry_speed, std::sqrt(before.entry_speed * before.entry_speed + 2 * before.acceleration * before.length));
       pending_[i - 1].block.exit_speed = b.entry_speed;
     }
   }

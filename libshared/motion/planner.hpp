@@ -14,6 +14,7 @@
 /// half a window after it. A dwell stops the machine.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <deque>
 #include <functional>
@@ -22,12 +23,21 @@
 
 namespace tk::motion {
 
+/// Per-axis limits work as grbl's do: a block's speed and acceleration
+/// along its path are capped so that no axis' share of them exceeds its
+/// own limit (a line: limit / |direction component|; an arc or helix: the
+/// largest share any of its tangents gives an axis, cos of its slope for
+/// the plane's axes and sin for the normal axis).
 struct MachineLimits {
-  double acceleration = 500;           ///< mm/s^2, every axis together
+  double acceleration = 500;           ///< mm/s^2 along the path
   double rapid_speed = 5000.0 / 60;    ///< mm/s for G0
   double max_speed = 5000.0 / 60;      ///< mm/s: programmed feeds above it are capped
   double junction_deviation = 0.01;    ///< mm
   std::size_t lookahead = 256;         ///< blocks planned together
+  std::array<double, 3> axis_speed{kNoLimit, kNoLimit, kNoLimit};         ///< mm/s per axis
+  std::array<double, 3> axis_acceleration{kNoLimit, kNoLimit, kNoLimit};  ///< mm/s^2 per axis
+
+  static constexpr double kNoLimit = 1e300;
 };
 
 /// A motion with its planned speeds (mm/s); dwells have only a duration.
@@ -37,7 +47,7 @@ struct PlannedBlock {
   double entry_speed = 0, cruise_speed = 0, exit_speed = 0;
   double acceleration = 0;
   double duration = 0;  ///< s
-  bool feed_capped = false;  ///< the programmed feed exceeded max_speed
+  bool feed_capped = false;  ///< the programmed feed exceeded max_speed or an axis' speed
   /// Where the cruise starts and ends (mm) and when (s): set with the profile.
   double cruise_from = 0, cruise_to = 0, cruise_starts = 0, cruise_ends = 0;
 
@@ -70,7 +80,7 @@ class Planner {
   std::deque<Pending> pending_;
   bool have_previous_ = false;
   Vec3 previous_exit_direction_;
-  double previous_nominal_ = 0;
+  double previous_nominal_ = 0, previous_acceleration_ = 0;
   double locked_entry_ = 0;  ///< the entry speed of the front block, fixed by the block before it
 };
 

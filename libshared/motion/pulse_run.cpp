@@ -24,6 +24,8 @@ PulseRun::PulseRun(const PulseOptions& options, PulseSink on_pulses, std::functi
     if (warn) warn(Error(message, where_).located_message());
   });
   ready_ = [this](const PlannedBlock& block) { on_block(block); };
+  stepper_.set_position(stepper_.quantise(options.interpreter.start));
+  lattice_ = stepper_.position();
   shortest_interval_.fill(INFINITY);
 }
 

@@ -50,6 +50,8 @@ class Stepper {
   double run(const Motion& motion, const std::function<void(std::span<const StepEvent>)>& sink);
 
   const std::array<std::int64_t, 3>& position() const { return position_; }
+  /// Puts the machine at a lattice point (the start of a program).
+  void set_position(const std::array<std::int64_t, 3>& lattice) { position_ = lattice; }
   /// The lattice point nearest to `mm` (rounding half away from zero).
   std::array<std::int64_t, 3> quantise(const Vec3& mm) const;
   double step_mm(int axis) const { return step_mm_[axis]; }

@@ -502,17 +502,12 @@ GP
   long_reference
   cp -r "$BATS_FILE_TMPDIR/ref" st
   cp st/lresults.txt lresults.before
-  start=$(date +%s%N)
   run --separate-stderr riesel --state st long.txt
-  elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
   assert_success
   # Equal "seconds" too: the records come from the journal, not new proofs.
   [ "$output" = "$(cat "$BATS_FILE_TMPDIR/want.out")" ]
   run cmp st/lresults.txt lresults.before
   assert_success
-  # The seed alone takes a second or more to prove.
-  reference_ms=$(python3 -c "print(int(1000 * $(seed_seconds want.out)))")
-  [ "$elapsed_ms" -lt "$reference_ms" ] || { echo "re-run took $elapsed_ms ms, the proof $reference_ms ms"; false; }
 }
 
 @test "a second run on a --state directory in use fails with exit 1 and names the lock" {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "io/error.hpp"
 #include "motion/planner.hpp"
 
 namespace {
@@ -135,3 +136,70 @@ TEST(Planner, ALongerLookaheadOnlyShortensTheProgram) {
 }
 
 }  // namespace
+
+// Per-axis limits, worked by hand: on a line at 45 degrees in XY each axis
+// carries cos 45 of the path's speed and acceleration, so an X limit of
+// 10 mm/s and 100 mm/s^2 allows 10/cos45 = 14.142 mm/s and 141.42 mm/s^2
+// along the path. 100 mm long: 100/14.142 s cruising plus v/a = 0.1 s.
+TEST(Planner, AxisLimitsCapSpeedAndAccelerationByTheAxisShare) {
+  MachineLimits limits;
+  limits.acceleration = 1000;
+  limits.max_speed = 1000;
+  limits.axis_speed = {10, 1000, 1000};
+  limits.axis_acceleration = {100, 1000, 1000};
+  const double side = 100 / std::sqrt(2.0);
+  const auto blocks = plan({line({0, 0, 0}, {side, side, 0}, 100)}, limits);
+  ASSERT_EQ(blocks.size(), 1u);
+  EXPECT_NEAR(blocks[0].cruise_speed, 10 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(blocks[0].acceleration, 100 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(blocks[0].duration, 100 / (10 * std::sqrt(2.0)) + 0.1, 1e-9);
+  EXPECT_TRUE(blocks[0].feed_capped);
+  // Along Y only, X's limits do not apply.
+  const auto along_y = plan({line({0, 0, 0}, {0, 100, 0}, 100)}, limits);
+  EXPECT_NEAR(along_y[0].cruise_speed, 100, 1e-9);
+  EXPECT_NEAR(along_y[0].acceleration, 1000, 1e-9);
+  EXPECT_FALSE(along_y[0].feed_capped);
+}
+
+// G0 runs at what the slowest axis it uses allows, and that is no "cap"
+// of a programmed feed.
+TEST(Planner, RapidsRunAtTheAxisLimit) {
+  MachineLimits limits;
+  limits.acceleration = 100;
+  limits.rapid_speed = 100;
+  limits.axis_speed = {1000, 1000, 5};
+  Motion rapid = line({0, 0, 0}, {0, 0, -10}, 0);
+  rapid.kind = MotionKind::rapid;
+  const auto blocks = plan({rapid}, limits);
+  EXPECT_NEAR(blocks[0].cruise_speed, 5, 1e-12);
+  EXPECT_NEAR(blocks[0].duration, 10.0 / 5 + 5.0 / 100, 1e-9);
+  EXPECT_FALSE(blocks[0].feed_capped);
+}
+
+// A helix rising 2*pi*10 mm over one turn of radius 10 is at 45 degrees:
+// the plane's axes carry cos 45 at most, Z sin 45.
+TEST(Planner, HelixSharesItsSpeedBetweenPlaneAndRise) {
+  MachineLimits limits;
+  limits.acceleration = 1e6;
+  limits.max_speed = 1000;
+  limits.axis_speed = {1000, 1000, 3};
+  Motion helix;
+  helix.kind = MotionKind::arc;
+  helix.start = {10, 0, 0};
+  helix.end = {10, 0, 2 * M_PI * 10};
+  helix.center = {0, 0, 0};
+  helix.feed = 600;
+  const auto blocks = plan({helix}, limits);
+  ASSERT_EQ(blocks.size(), 1u);
+  EXPECT_NEAR(blocks[0].length, 2 * M_PI * 10 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(blocks[0].cruise_speed, 3 * std::sqrt(2.0), 1e-9);
+}
+
+TEST(Planner, RefusesNonPositiveAxisLimits) {
+  MachineLimits limits;
+  limits.axis_speed = {10, 0, 10};
+  EXPECT_THROW(Planner{limits}, tk::Error);
+  limits.axis_speed = {10, 10, 10};
+  limits.axis_acceleration = {10, 10, -1};
+  EXPECT_THROW(Planner{limits}, tk::Error);
+}

@@ -263,6 +263,21 @@ TEST(NumberOption, PrimeHuntersNotation) {
   EXPECT_THROW(tk::cli::parse_range("5", "x"), tk::Error);
 }
 
+TEST(NumberOption, CommaSeparatedNumbers) {
+  using tk::cli::parse_numbers;
+  EXPECT_EQ(parse_numbers("200,200,400", "x", 3), (std::vector<double>{200, 200, 400}));
+  EXPECT_EQ(parse_numbers("-1.5,+2e3,0", "x", 3), (std::vector<double>{-1.5, 2000, 0}));
+  EXPECT_EQ(parse_numbers("7", "x", 1), (std::vector<double>{7}));
+  for (const char* bad : {"", "1,2", "1,2,3,4", "1,,3", "1,2,", ",1,2", "a,b,c", "nan,1,1", "inf,1,1", "1e999,1,1",
+                          "1 ,2,3", "0x10,1,1", "1,2,3 "})
+    EXPECT_THROW(parse_numbers(bad, "--steps-per-mm", 3), tk::Error) << bad;
+  try {
+    parse_numbers("1,2", "--window", 4);
+  } catch (const tk::Error& e) {
+    EXPECT_STREQ(e.what(), "--window '1,2' is not 4 finite numbers separated by commas");
+  }
+}
+
 class SieveFiles : public ::testing::Test {
  protected:
   void SetUp() override {

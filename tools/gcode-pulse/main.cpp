@@ -9,30 +9,21 @@
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
 #include "io/record_writer.hpp"
+#include "cli/number_option.hpp"
+#include "motion/machine_settings.hpp"
 #include "motion/pulse_binary.hpp"
 #include "motion/pulse_run.hpp"
 
 namespace {
 
-/// "X,Y,Z": three positive finite numbers.
-std::array<double, 3> parse_steps_per_mm(const std::string& text) {
-  std::array<double, 3> values{};
-  std::size_t at = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::size_t comma = axis < 2 ? text.find(',', at) : text.size();
-    if (comma == std::string::npos) throw tk::UsageError("--steps-per-mm needs three numbers X,Y,Z");
-    const std::string part = text.substr(at, comma - at);
-    char* end = nullptr;
-    values[axis] = std::strtod(part.c_str(), &end);
-    if (part.empty() || *end != '\0' || !std::isfinite(values[axis]) || values[axis] <= 0)
-      throw tk::UsageError("--steps-per-mm: '" + part + "' is not a positive number");
-    at = comma + 1;
+/// "X,Y,Z" as three numbers; a usage error naming the option otherwise.
+std::array<double, 3> parse_axes(const std::string& text, const char* option) {
+  try {
+    const std::vector<double> values = tk::cli::parse_numbers(text, option, 3);
+    return {values[0], values[1], values[2]};
+  } catch (const tk::Error& e) {
+    throw tk::UsageError(e.what());
   }
-  return values;
-}
-
-void positive(double value, const char* option) {
-  if (!(value > 0) || !std::isfinite(value)) throw tk::UsageError(std::string(option) + " must be a positive number");
 }
 
 }  // namespace
@@ -42,10 +33,11 @@ int main(int argc, char** argv) {
                         "Turn G-code (RS274/NGC as LinuxCNC and grbl run it) into timed step pulses, one event "
                         "per lattice move (t, dx, dy, dz), or a summary of them.",
                         "See gcode-pulse(1).");
-  std::string steps = "200,200,400", method = "direct", svg_path, window_text;
+  std::string steps = "200,200,400", method = "direct", svg_path, window_text, machine_file, axis_max_feed, axis_accel,
+              start;
   bool summary_only = false, lenient = false, binary = false;
-  tk::motion::MachineLimits limits;
-  double rapid_mm_min = 5000, max_feed_mm_min = 0;
+  double accel = 500, rapid = 5000, max_feed = 0, junction_deviation = 0.01;
+  std::size_t lookahead = 256;
   CLI::App& app = tool.app();
   app.add_option("--steps-per-mm", steps, "steps per mm of X, Y and Z")->capture_default_str()->type_name("X,Y,Z");
   app.add_option("--method", method, "direct (the seed's nearest-neighbour calculation), bresenham or dda")
@@ -58,30 +50,56 @@ int main(int argc, char** argv) {
   app.add_option("--svg", svg_path, "draw the ideal and the stepped path in the XY plane (needs --window)")
       ->type_name("FILE");
   app.add_option("--window", window_text, "the part of the XY plane to draw, mm")->type_name("X0,Y0,X1,Y1");
-  app.add_option("--accel", limits.acceleration, "acceleration, mm/s^2")->capture_default_str()->type_name("A");
-  app.add_option("--rapid", rapid_mm_min, "G0 speed, mm/min")->capture_default_str()->type_name("F");
-  app.add_option("--max-feed", max_feed_mm_min, "cap on programmed feeds, mm/min (default: --rapid)")->type_name("F");
-  app.add_option("--junction-deviation", limits.junction_deviation, "corner rounding allowed for junction speeds, mm")
+  app.add_option("--machine", machine_file, "machine description (JSON, keys as these options; options given here win)")
+      ->type_name("FILE");
+  app.add_option("--accel", accel, "acceleration along the path, mm/s^2")->capture_default_str()->type_name("A");
+  app.add_option("--axis-accel", axis_accel, "acceleration limit of each axis, mm/s^2 (default: none)")
+      ->type_name("X,Y,Z");
+  app.add_option("--rapid", rapid, "G0 speed, mm/min")->capture_default_str()->type_name("F");
+  app.add_option("--max-feed", max_feed, "cap on programmed feeds, mm/min (default: --rapid)")->type_name("F");
+  app.add_option("--axis-max-feed", axis_max_feed, "speed limit of each axis, G0 included, mm/min (default: none)")
+      ->type_name("X,Y,Z");
+  app.add_option("--junction-deviation", junction_deviation, "corner rounding allowed for junction speeds, mm")
       ->capture_default_str()
       ->type_name("MM");
-  app.add_option("--lookahead", limits.lookahead, "blocks planned together")->capture_default_str()->type_name("N");
+  app.add_option("--lookahead", lookahead, "blocks planned together")->capture_default_str()->type_name("N");
+  app.add_option("--start", start, "where the machine stands when the program starts, mm (default: 0,0,0)")
+      ->type_name("X,Y,Z");
   tool.add_input_files("G-code files, run one after another; standard input when none or '-'");
 
   return tool.run(argc, argv, [&] {
+    // The machine file first, then whatever the command line gives.
+    tk::motion::MachineSettings settings;
+    if (!machine_file.empty()) settings = tk::motion::read_machine_file(machine_file);
+    tk::motion::MachineSettings given;
+    auto on_command_line = [&](const char* name) { return app.get_option(name)->count() > 0; };
+    if (on_command_line("--steps-per-mm")) given.steps_per_mm = parse_axes(steps, "--steps-per-mm");
+    if (on_command_line("--axis-max-feed")) given.axis_max_feed = parse_axes(axis_max_feed, "--axis-max-feed");
+    if (on_command_line("--axis-accel")) given.axis_accel = parse_axes(axis_accel, "--axis-accel");
+    if (on_command_line("--start")) given.start = parse_axes(start, "--start");
+    if (on_command_line("--accel")) given.accel = accel;
+    if (on_command_line("--rapid")) given.rapid = rapid;
+    if (on_command_line("--max-feed")) given.max_feed = max_feed;
+    if (on_command_line("--junction-deviation")) given.junction_deviation = junction_deviation;
+    if (on_command_line("--lookahead")) given.lookahead = lookahead;
+    try {
+      tk::motion::PulseOptions scratch;
+      given.apply_to(scratch);
+    } catch (const tk::Error& e) {
+      // A bad option value is a usage error, named as the option.
+      std::string message = e.what();
+      const std::size_t space = message.find(' ');
+      std::string name = message.substr(0, space);
+      for (char& c : name)
+        if (c == '_') c = '-';
+      throw tk::UsageError("--" + name + message.substr(space));
+    }
+    settings.override_with(given);
     tk::motion::PulseOptions options;
-    options.steps_per_mm = parse_steps_per_mm(steps);
+    settings.apply_to(options);
     options.method = method == "bresenham" ? tk::motion::StepMethod::bresenham
                      : method == "dda"     ? tk::motion::StepMethod::dda
                                            : tk::motion::StepMethod::direct;
-    positive(limits.acceleration, "--accel");
-    positive(rapid_mm_min, "--rapid");
-    if (max_feed_mm_min != 0) positive(max_feed_mm_min, "--max-feed");
-    if (!(limits.junction_deviation >= 0) || !std::isfinite(limits.junction_deviation))
-      throw tk::UsageError("--junction-deviation must not be negative");
-    if (limits.lookahead == 0) throw tk::UsageError("--lookahead must be at least 1");
-    limits.rapid_speed = rapid_mm_min / 60;
-    limits.max_speed = (max_feed_mm_min > 0 ? max_feed_mm_min : rapid_mm_min) / 60;
-    options.limits = limits;
     options.interpreter.lenient = lenient;
 
     if (binary && summary_only) throw tk::UsageError("--binary and --summary exclude each other");

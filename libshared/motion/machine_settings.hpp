@@ -1,0 +1,44 @@
+/// @file machine_settings.hpp
+/// @brief The machine gcode-pulse drives: steps per mm, speeds and
+/// accelerations (along the path and per axis), start position. Settings
+/// come from a JSON machine file and from options; an option given on the
+/// command line wins over the file, the file over the defaults.
+///
+/// A machine file is one JSON object whose keys are the option names
+/// without their dashes, '-' written '_', in the options' units:
+///
+///     {"steps_per_mm": [200, 200, 400], "rapid": 6000, "max_feed": 4000,
+///      "axis_max_feed": [6000, 6000, 1500], "accel": 800,
+///      "axis_accel": [800, 800, 200], "junction_deviation": 0.02,
+///      "lookahead": 256, "start": [0, 0, 5], "name": "router"}
+///
+/// Lists are X, Y, Z; feeds in mm/min, accelerations in mm/s^2, lengths in
+/// mm. "name" and keys starting with '#' are comments. Any other key is an
+/// error (a misspelt limit must not pass silently).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "motion/pulse_run.hpp"
+
+namespace tk::motion {
+
+struct MachineSettings {
+  std::optional<std::array<double, 3>> steps_per_mm, axis_max_feed, axis_accel, start;
+  std::optional<double> rapid, max_feed, accel, junction_deviation;
+  std::optional<std::size_t> lookahead;
+
+  /// Every setting `over` holds replaces this one's.
+  void override_with(const MachineSettings& over);
+  /// Checks every value (throws Error naming the setting, e.g. "accel must
+  /// be a positive number") and fills PulseOptions, defaults for the rest.
+  void apply_to(PulseOptions& options) const;
+};
+
+/// Reads a machine file; errors name the file.
+MachineSettings read_machine_file(const std::string& path);
+
+}  // namespace tk::motion
