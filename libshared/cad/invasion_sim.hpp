@@ -1,0 +1,70 @@
+/// @file invasion_sim.hpp
+/// @brief The seed's experiment, simulated: an operator drives the tool
+/// with a joystick straight at the part while a control loop guards the
+/// prohibited region (the part grown by the tool radius). The control
+/// samples the tool's position every `period_s`; a stop it orders takes
+/// effect `latency_s` later, during which the tool keeps moving at the
+/// feed. A stroke succeeds when the tool stops outside the region; the
+/// material it leaves between its stop and the boundary is the under-cut.
+///
+/// Two guards, side by side:
+/// - fixed tolerance (the seed's): stop as soon as the sampled distance to
+///   the region is below T. It fails whenever the distance the tool covers
+///   during the latency exceeds T, and leaves about T - (approach speed x
+///   latency) of under-cut otherwise.
+/// - latency-aware (ours): from the last two samples, the approach speed
+///   toward the boundary (the rate at which the distance falls); stop when
+///   the distance predicted for the moment a stop ordered at the next
+///   sample would take effect falls below a margin. On a straight approach
+///   at constant feed the prediction is exact, so the tool stops between
+///   `margin` and `margin + approach speed x period` from the boundary.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cad/drawing.hpp"
+
+namespace tk::cad {
+
+struct InvasionSimOptions {
+  double feed_mm_s = 50;         ///< joystick speed (3000 mm/min)
+  double latency_s = 0.09;       ///< sample to stop taking effect
+  double period_s = 0.001;       ///< control loop period
+  double margin_mm = 0.02;       ///< the latency-aware guard's aim
+  std::uint32_t strokes = 1000;  ///< approaches per guard and tolerance
+  std::uint64_t seed = 1;        ///< for the strokes' start points and angles
+  double max_angle_deg = 60;     ///< largest angle between a stroke and the boundary's normal
+};
+
+/// One guard's figures over all strokes.
+struct InvasionSimResult {
+  std::string guard;              ///< "fixed-tolerance" or "latency-aware"
+  double tolerance_mm = 0;        ///< T for the fixed guard; the margin for ours
+  std::uint32_t strokes = 0;
+  std::uint32_t invasions = 0;    ///< strokes that stopped inside the region
+  double success_rate = 0;        ///< 1 - invasions / strokes
+  double mean_undercut_mm = 0;    ///< over the strokes that stopped outside
+  double max_undercut_mm = 0;
+  double mean_invasion_mm = 0;    ///< depth, over the invading strokes
+  double max_invasion_mm = 0;
+};
+
+/// Signed distance to the prohibited region's boundary: positive outside
+/// (where the tool may be), negative inside.
+using SignedDistance = std::function<double(Point)>;
+
+/// The strokes aim at points of `boundary` (closed polylines of the
+/// region's boundary, each oriented with the region on its left: outer
+/// boundaries counter-clockwise, holes clockwise), starting outside at
+/// `approach_mm` from their target, at a random angle to its normal.
+/// Every guard sees the same strokes. Throws Error on options that are
+/// not positive and finite, or a boundary with no usable edge.
+std::vector<InvasionSimResult> simulate_invasions(const SignedDistance& distance,
+                                                  const std::vector<std::vector<Point>>& boundary,
+                                                  const std::vector<double>& tolerances_mm,
+                                                  const InvasionSimOptions& options);
+
+}  // namespace tk::cad
