@@ -9,6 +9,7 @@
 #include "io/csv.hpp"
 #include "io/error.hpp"
 #include "io/input_file.hpp"
+#include "io/record_fields.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
 
@@ -233,4 +234,30 @@ TEST(RecordWriter, CsvRejectsAFieldOutsideTheHeader) {
   a["id"] = 1;
   b["other"] = 2;
   EXPECT_THROW(write_all({a, b}, OutputFormat::csv), Error);
+}
+
+TEST(RecordFields, NumbersFromJsonAndCsvText) {
+  const tk::Location where{"pos.csv", 7};
+  const tk::Record record = tk::Record::parse(R"({"x": 1.5, "y": "-2e3", "z": "+4", "t": "", "n": null, "s": "abc",
+                                                 "b": true, "i": "inf", "big": "1e400", "nan": "nan"})");
+  EXPECT_EQ(tk::io::number_field(record, "x", where), 1.5);
+  EXPECT_EQ(tk::io::number_field(record, "y", where), -2000);
+  EXPECT_EQ(tk::io::number_field(record, "z", where), 4);
+  EXPECT_FALSE(tk::io::optional_number_field(record, "t", where));
+  EXPECT_FALSE(tk::io::optional_number_field(record, "n", where));
+  EXPECT_FALSE(tk::io::optional_number_field(record, "missing", where));
+  auto message = [&](const char* key) {
+    try {
+      tk::io::number_field(record, key, where);
+    } catch (const tk::Error& e) {
+      return e.located_message();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("missing"), "pos.csv:7: missing field 'missing'");
+  EXPECT_EQ(message("s"), "pos.csv:7: field 's' is not a number: 'abc'");
+  EXPECT_EQ(message("b"), "pos.csv:7: field 'b' is not a number");
+  EXPECT_EQ(message("i"), "pos.csv:7: field 'i' is not finite");
+  EXPECT_EQ(message("nan"), "pos.csv:7: field 'nan' is not finite");
+  EXPECT_EQ(message("big"), "pos.csv:7: field 'big' is out of range: '1e400'");
 }

@@ -1,0 +1,43 @@
+/// @file invasion_check.cpp
+/// @brief The streaming guard.
+#include "cad/invasion_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "io/error.hpp"
+
+namespace tk::cad {
+
+InvasionGuard::InvasionGuard(const RegionIndex& index, GuardOptions options) : index_(index), options_(options) {
+  summary_.closest_mm = std::numeric_limits<double>::infinity();
+}
+
+PositionCheck InvasionGuard::check(Point p, std::optional<double> t) {
+  PositionCheck result;
+  result.answer = guard_query(index_, p, options_.tool_radius, options_.side);
+  const double distance = result.answer.distance;
+  ++summary_.positions;
+  summary_.closest_mm = std::min(summary_.closest_mm, distance);
+  if (distance < 0) {
+    ++summary_.invasions;
+    if (-distance > summary_.deepest_mm) {
+      summary_.deepest_mm = -distance;
+      summary_.deepest_at = p;
+    }
+  }
+  if (t) {
+    if (last_t_ && *t < *last_t_) throw Error("time goes backwards");
+    double approach = 0;
+    if (last_t_ && *t > *last_t_) approach = std::max(0.0, (last_distance_ - distance) / (*t - *last_t_));
+    result.approach_mm_s = approach;
+    result.stop = distance - approach * options_.latency_s < options_.margin_mm;
+    if (*result.stop) ++summary_.stops;
+    last_t_ = t;
+    last_distance_ = distance;
+  }
+  return result;
+}
+
+}  // namespace tk::cad

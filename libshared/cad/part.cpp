@@ -1,0 +1,81 @@
+/// @file part.cpp
+/// @brief Reading a part: layers, units, loops, index.
+#include "cad/part.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "cad/dxf_reader.hpp"
+#include "io/error.hpp"
+
+namespace tk::cad {
+namespace {
+
+const std::pair<const char*, double> kUnits[] = {
+    {"mm", 1}, {"cm", 10}, {"dm", 100}, {"m", 1000}, {"um", 1e-3}, {"in", 25.4}, {"inch", 25.4}, {"ft", 304.8}, {"mil", 0.0254},
+};
+
+}  // namespace
+
+double millimetres_per_named_unit(const std::string& name) {
+  std::string known;
+  for (const auto& [unit, mm] : kUnits) {
+    if (name == unit) return mm;
+    known += known.empty() ? unit : std::string(", ") + unit;
+  }
+  throw Error("unknown unit '" + name + "' (known: " + known + ")");
+}
+
+Part load_part(const std::string& path, const PartOptions& options, const std::function<void(const std::string&)>& warn) {
+  Part part;
+  const double given = options.units.empty() ? 0 : millimetres_per_named_unit(options.units);
+  DxfReadOptions read_options;
+  read_options.chord_tolerance = options.chord_tolerance;  // in the drawing's units: they are not known before reading
+  part.drawing = read_dxf_file(path, read_options);
+  Drawing& d = part.drawing;
+  const std::string name = path == "-" ? "<stdin>" : path;
+  const double declared = millimetres_per_unit(d.insunits);
+  if (declared > 0) {
+    part.millimetres_per_unit = declared;
+    part.units_source = "$INSUNITS";
+    if (given > 0 && given != declared)
+      warn(name + ": $INSUNITS says " + std::to_string(declared) + " mm per unit: --units " + options.units + " is not used");
+  } else if (given > 0) {
+    part.millimetres_per_unit = given;
+    part.units_source = "--units";
+  } else {
+    part.units_source = "assumed";
+    warn(name + ": the drawing does not say its unit ($INSUNITS " + std::to_string(d.insunits) +
+         "): taking millimetres (--units to say otherwise)");
+  }
+  // The chosen layers only.
+  if (!options.layers.empty()) {
+    std::vector<bool> keep(d.layers.size(), false);
+    for (const std::string& layer : options.layers) {
+      const auto found = std::find(d.layers.begin(), d.layers.end(), layer);
+      if (found == d.layers.end()) {
+        std::string list;
+        for (const std::string& l : d.layers) list += (list.empty() ? "" : ", ") + l;
+        throw Error("no layer '" + layer + "' with supported entities (layers: " + (list.empty() ? "none" : list) + ")", {name, 0});
+      }
+      keep[found - d.layers.begin()] = true;
+    }
+    std::erase_if(d.segments, [&](const Segment& s) { return !keep[s.layer]; });
+  }
+  const double k = part.millimetres_per_unit;
+  if (k != 1) {
+    for (Segment& s : d.segments) {
+      s.start = {s.start.x * k, s.start.y * k};
+      s.end = {s.end.x * k, s.end.y * k};
+    }
+  }
+  for (const Segment& s : d.segments)
+    if (!std::isfinite(s.start.x) || !std::isfinite(s.start.y) || !std::isfinite(s.end.x) || !std::isfinite(s.end.y))
+      throw Error("coordinates overflow when scaled to millimetres", {name, s.source_line});
+  part.loops = build_loops(d.segments, options.join_tolerance);
+  part.index = std::make_unique<RegionIndex>(part.loops.loops);
+  return part;
+}
+
+}  // namespace tk::cad

@@ -1,0 +1,45 @@
+/// @file region_distance.hpp
+/// @brief Signed distance from a point to a region bounded by closed loops
+/// of lines and arcs, the nearest boundary element and point, with a
+/// spatial index so a query costs about O(log n) in the boundary size.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "cad/loops.hpp"
+
+namespace tk::cad {
+
+struct RegionQuery {
+  double distance = 0;   ///< to the boundary: positive outside the region, negative inside
+  Point nearest;         ///< the nearest boundary point
+  std::size_t element = 0;  ///< index into RegionIndex::elements() of the nearest element
+  bool inside() const { return distance < 0; }
+};
+
+class RegionIndex {
+ public:
+  /// The region is the even-odd union of the loops' interiors.
+  explicit RegionIndex(const std::vector<Loop>& loops);
+  ~RegionIndex();
+  RegionIndex(RegionIndex&&) noexcept;
+  RegionIndex& operator=(RegionIndex&&) noexcept;
+
+  RegionQuery query(Point p) const;
+  /// Every loop's segments, loop after loop.
+  const std::vector<Segment>& elements() const;
+  /// Which loop an element belongs to.
+  std::size_t loop_of(std::size_t element) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The same answer by examining every element (the oracle for tests and
+/// the benchmark's rival).
+RegionQuery brute_force_query(const std::vector<Loop>& loops, Point p);
+
+}  // namespace tk::cad

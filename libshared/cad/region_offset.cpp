@@ -1,0 +1,415 @@
+/// @file region_offset.cpp
+/// @brief Tool-radius offset: Clipper for the topology, exact lines and arcs
+/// recovered from the drawing's features, and the stretches left uncut.
+#include "cad/region_offset.hpp"
+
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "cad/segment_geometry.hpp"
+#include "io/error.hpp"
+
+namespace tk::cad {
+namespace {
+
+constexpr double kClipperUnitMm = 1e-6;  // 1 nm integers: ±4.6e12 mm fit Clipper's 62-bit range
+constexpr double kLargestCoordinateMm = 1e9;
+
+Point operator+(Point a, Point b) { return {a.x + b.x, a.y + b.y}; }
+Point operator-(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
+Point operator*(double s, Point a) { return {s * a.x, s * a.y}; }
+double dot(Point a, Point b) { return a.x * b.x + a.y * b.y; }
+double cross(Point a, Point b) { return a.x * b.y - a.y * b.x; }
+double norm(Point a) { return std::hypot(a.x, a.y); }
+Point unit(Point a) {
+  const double n = norm(a);
+  return n > 0 ? (1 / n) * a : Point{};
+}
+
+/// The exact curve a stretch of the offset follows: a line (through
+/// `origin` along unit `direction`) or a circle.
+struct Primitive {
+  bool circle = false;
+  Point origin, direction;  // line
+  Point centre;             // circle
+  double radius = 0;
+
+  Point project(Point p) const {
+    if (!circle) return origin + dot(p - origin, direction) * direction;
+    const Point d = p - centre;
+    const double n = norm(d);
+    return n > 0 ? centre + (radius / n) * d : centre + Point{radius, 0};
+  }
+};
+
+/// What a point of the offset is nearest to: an element's inside, or a
+/// corner of the drawing (identified by the element that starts there).
+struct Feature {
+  std::size_t element = 0;
+  bool corner = false;
+  bool operator==(const Feature&) const = default;
+};
+
+/// The drawing's elements with the successor of each within its loop.
+class DrawingFeatures {
+ public:
+  DrawingFeatures(const std::vector<Loop>& drawn, const RegionIndex& index) : index_(index) {
+    for (const Loop& loop : drawn) {
+      const std::size_t first = next_.size();
+      for (std::size_t i = 0; i < loop.segments.size(); ++i)
+        next_.push_back(i + 1 < loop.segments.size() ? next_.size() + 1 : first);
+    }
+  }
+
+  /// The feature nearest to p; the offset curve through p at distance R.
+  Feature classify(Point p) const {
+    const RegionQuery q = index_.query(p);
+    const Segment& s = index_.elements()[q.element];
+    double t = 0;
+    nearest_point(s, p, &t);
+    if (t <= 0) return {q.element, true};
+    if (t >= 1) return {next_[q.element], true};
+    return {q.element, false};
+  }
+
+  Primitive primitive(const Feature& f, Point near, double radius) const {
+    const Segment& s = index_.elements()[f.element];
+    Primitive prim;
+    if (f.corner) {
+      prim.circle = true;
+      prim.centre = s.start;
+      prim.radius = radius;
+    } else if (!is_arc(s)) {
+      prim.direction = unit(s.end - s.start);
+      const Point left{-prim.direction.y, prim.direction.x};
+      const double side = cross(prim.direction, near - s.start) >= 0 ? 1 : -1;
+      prim.origin = s.start + (side * radius) * left;
+    } else {
+      const ArcShape arc = arc_shape(s);
+      prim.circle = true;
+      prim.centre = arc.centre;
+      prim.radius = norm(near - arc.centre) >= arc.radius ? arc.radius + radius : std::max(arc.radius - radius, 0.0);
+    }
+    return prim;
+  }
+
+ private:
+  const RegionIndex& index_;
+  std::vector<std::size_t> next_;
+};
+
+/// Where two exact curves cross, nearest to `near`; nullopt when they do
+/// not (tangent within rounding, or parallel).
+std::optional<Point> crossing_near(const Primitive& a, const Primitive& b, Point near) {
+  std::vector<Point> found;
+  auto line_circle = [&](const Primitive& line, const Primitive& circle) {
+    const Point foot = line.origin + dot(circle.centre - line.origin, line.direction) * line.direction;
+    const double h2 = circle.radius * circle.radius - dot(foot - circle.centre, foot - circle.centre);
+    if (h2 < -1e-9 * circle.radius * circle.radius) return;
+    const double h = std::sqrt(std::max(h2, 0.0));
+    found.push_back(foot + h * line.direction);
+    found.push_back(foot - h * line.direction);
+  };
+  if (!a.circle && !b.circle) {
+    const double denominator = cross(a.direction, b.direction);
+    if (std::abs(denominator) < 1e-12) return std::nullopt;
+    found.push_back(a.origin + (cross(b.origin - a.origin, b.direction) / denominator) * a.direction);
+  } else if (!a.circle) {
+    line_circle(a, b);
+  } else if (!b.circle) {
+    line_circle(b, a);
+  } else {
+    const Point d = b.centre - a.centre;
+    const double distance = norm(d);
+    if (distance < 1e-12) return std::nullopt;
+    const double along = (distance * distance + a.radius * a.radius - b.radius * b.radius) / (2 * distance);
+    const double h2 = a.radius * a.radius - along * along;
+    if (h2 < -1e-9 * a.radius * a.radius) return std::nullopt;
+    const double h = std::sqrt(std::max(h2, 0.0));
+    const Point u = (1 / distance) * d, base = a.centre + along * u, across{-u.y, u.x};
+    found.push_back(base + h * across);
+    found.push_back(base - h * across);
+  }
+  if (found.empty()) return std::nullopt;
+  return *std::min_element(found.begin(), found.end(),
+                           [&](Point p, Point q) { return norm(p - near) < norm(q - near); });
+}
+
+/// The piece of `prim` from `from` to `to`, turning the way the polygon
+/// stretch `path` (from, ..., to) turns about the centre.
+Segment piece(const Primitive& prim, Point from, Point to, const std::vector<Point>& path) {
+  Segment s{from, to};
+  if (!prim.circle) return s;
+  double turning = 0;
+  for (std::size_t i = 1; i < path.size(); ++i) turning += cross(path[i - 1] - prim.centre, path[i] - prim.centre);
+  const double a0 = std::atan2(from.y - prim.centre.y, from.x - prim.centre.x);
+  const double a1 = std::atan2(to.y - prim.centre.y, to.x - prim.centre.x);
+  double sweep = a1 - a0;
+  const double two_pi = 2 * std::numbers::pi;
+  if (turning >= 0) {
+    while (sweep <= 0) sweep += two_pi;
+  } else {
+    while (sweep >= 0) sweep -= two_pi;
+  }
+  s.bulge = std::tan(sweep / 4);
+  return s;
+}
+
+ClipperLib::Path to_clipper(const Loop& loop, double tolerance) {
+  std::vector<Point> points{loop.segments.front().start};
+  for (const Segment& s : loop.segments) flatten(s, tolerance, points);
+  ClipperLib::Path path;
+  path.reserve(points.size());
+  for (const Point& p : points) {
+    if (!(std::abs(p.x) <= kLargestCoordinateMm && std::abs(p.y) <= kLargestCoordinateMm))
+      throw Error("coordinates beyond ±1e9 mm: too large to offset");
+    path.push_back({static_cast<ClipperLib::cInt>(std::llround(p.x / kClipperUnitMm)),
+                    static_cast<ClipperLib::cInt>(std::llround(p.y / kClipperUnitMm))});
+  }
+  return path;
+}
+
+std::vector<Point> from_clipper(const ClipperLib::Path& path) {
+  std::vector<Point> points;
+  points.reserve(path.size());
+  for (const ClipperLib::IntPoint& p : path)
+    points.push_back({static_cast<double>(p.X) * kClipperUnitMm, static_cast<double>(p.Y) * kClipperUnitMm});
+  return points;
+}
+
+Loop polygon_loop(const std::vector<Point>& polygon) {
+  Loop loop;
+  for (std::size_t i = 0; i < polygon.size(); ++i) loop.segments.push_back({polygon[i], polygon[(i + 1) % polygon.size()]});
+  return loop;
+}
+
+/// Clipper's polygon as exact lines and arcs, or nullopt when the pieces do
+/// not check out (each piece's middle at distance R from the drawing, and
+/// the length close to the polygon's).
+std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const DrawingFeatures& features,
+                                  const RegionIndex& index, double radius, double tolerance) {
+  const std::size_t n = polygon.size();
+  if (n < 3) return std::nullopt;
+  // Edge i runs from polygon[i] to polygon[i + 1]; its middle names its feature.
+  std::vector<Feature> edge_feature(n);
+  for (std::size_t i = 0; i < n; ++i) edge_feature[i] = features.classify(0.5 * (polygon[i] + polygon[(i + 1) % n]));
+  // Start at a change of feature so no run wraps around.
+  std::size_t start = 0;
+  while (start < n && edge_feature[start] == edge_feature[(start + n - 1) % n]) ++start;
+  Loop loop;
+  if (start == n) {  // one feature all round: a circle about a corner or concentric with an arc
+    const Primitive prim = features.primitive(edge_feature[0], polygon[0], radius);
+    if (!prim.circle) return std::nullopt;
+    double turning = 0;
+    for (std::size_t i = 0; i < n; ++i) turning += cross(polygon[i] - prim.centre, polygon[(i + 1) % n] - prim.centre);
+    const Point a = prim.project(polygon[0]), b = prim.centre + (prim.centre - a);
+    const double half_turn = turning >= 0 ? 1 : -1;  // bulge of a half circle
+    loop.segments.push_back({a, b, half_turn});
+    loop.segments.push_back({b, a, half_turn});
+  } else {
+    struct Run {
+      Feature feature;
+      std::size_t first_edge, edges;
+      Primitive prim;
+    };
+    std::vector<Run> runs;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t e = (start + k) % n;
+      if (runs.empty() || !(runs.back().feature == edge_feature[e])) runs.push_back({edge_feature[e], e, 0, {}});
+      ++runs.back().edges;
+    }
+    for (Run& run : runs) {
+      const std::size_t middle_edge = (run.first_edge + run.edges / 2) % n;
+      run.prim = features.primitive(run.feature, 0.5 * (polygon[middle_edge] + polygon[(middle_edge + 1) % n]), radius);
+    }
+    // Run r starts at the vertex where edge run.first_edge starts.
+    std::vector<Point> joints(runs.size());
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      const Primitive& before = runs[(r + runs.size() - 1) % runs.size()].prim;
+      const Point vertex = polygon[runs[r].first_edge];
+      const Point on_before = before.project(vertex), on_after = runs[r].prim.project(vertex);
+      std::optional<Point> crossing;
+      if (norm(on_before - on_after) > 1e-9) crossing = crossing_near(before, runs[r].prim, vertex);
+      joints[r] = crossing && norm(*crossing - vertex) < 1e3 * tolerance + 0.1 * radius ? *crossing
+                                                                                      : 0.5 * (on_before + on_after);
+    }
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      const Point from = joints[r], to = joints[(r + 1) % runs.size()];
+      if (norm(to - from) < 1e-9) continue;
+      std::vector<Point> path{from};
+      for (std::size_t k = 1; k < runs[r].edges; ++k) path.push_back(polygon[(runs[r].first_edge + k) % n]);
+      path.push_back(to);
+      loop.segments.push_back(piece(runs[r].prim, from, to, path));
+    }
+  }
+  // The checks: every piece at distance R from the drawing, and about the polygon's length.
+  if (loop.segments.size() < 2) return std::nullopt;
+  double polygon_length = 0, exact_length = 0;
+  for (std::size_t i = 0; i < n; ++i) polygon_length += norm(polygon[(i + 1) % n] - polygon[i]);
+  for (std::size_t i = 0; i < loop.segments.size(); ++i) {
+    Segment& s = loop.segments[i];
+    s.end = loop.segments[(i + 1) % loop.segments.size()].start;  // exactly closed
+    exact_length += segment_length(s);
+    for (double t : {0.25, 0.5, 0.75}) {
+      const double d = std::abs(index.query(point_at(s, t)).distance);
+      if (std::abs(d - radius) > std::max(10 * tolerance, 1e-9 * radius)) return std::nullopt;
+    }
+  }
+  if (std::abs(exact_length - polygon_length) > 0.01 * polygon_length + 100 * tolerance) return std::nullopt;
+  return loop;
+}
+
+double signed_area(const Loop& loop) {
+  double area = 0;
+  for (const Segment& s : loop.segments) {
+    area += 0.5 * cross(s.start, s.end);
+    if (is_arc(s)) {
+      const ArcShape arc = arc_shape(s);
+      area += 0.5 * arc.radius * arc.radius * (arc.sweep - std::sin(arc.sweep));
+    }
+  }
+  return area;
+}
+
+void reverse(Loop& loop) {
+  std::reverse(loop.segments.begin(), loop.segments.end());
+  for (Segment& s : loop.segments) {
+    std::swap(s.start, s.end);
+    s.bulge = -s.bulge;
+  }
+  loop.area = -loop.area;
+}
+
+/// Points of the drawing farther than R (+ the report threshold) from the
+/// tool's contour: material the tool cannot reach. Sampled every R / 8
+/// along each element; the deepest point of a span is then refined by a
+/// golden-section search between its neighbouring samples.
+std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const std::vector<Loop>& contour, double radius,
+                                  const OffsetOptions& options) {
+  std::vector<UncutSpan> spans;
+  if (radius <= 0) return spans;
+  const RegionIndex contour_index(contour);
+  const double step = std::max(radius / 8, 10 * options.tolerance);
+  auto gap_at = [&](const Segment& s, double t) {
+    return contour.empty() ? radius + 1 : std::abs(contour_index.query(point_at(s, t)).distance) - radius;
+  };
+  for (const Loop& loop : drawn) {
+    const std::size_t first_of_loop = spans.size();
+    for (const Segment& s : loop.segments) {
+      const std::size_t samples = std::min<std::size_t>(10000, 1 + static_cast<std::size_t>(segment_length(s) / step));
+      std::vector<double> gaps(samples + 1);
+      for (std::size_t i = 0; i <= samples; ++i) gaps[i] = gap_at(s, static_cast<double>(i) / samples);
+      for (std::size_t i = 0; i <= samples;) {
+        if (gaps[i] <= options.uncut_report_mm) {
+          ++i;
+          continue;
+        }
+        const std::size_t begin = i;
+        std::size_t deepest = i;
+        for (; i <= samples && gaps[i] > options.uncut_report_mm; ++i)
+          if (gaps[i] > gaps[deepest]) deepest = i;
+        double lo = static_cast<double>(deepest == 0 ? 0 : deepest - 1) / samples;
+        double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
+        const double golden = (std::sqrt(5.0) - 1) / 2;
+        for (int k = 0; k < 40; ++k) {
+          const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+          if (gap_at(s, a) > gap_at(s, b)) {
+            hi = b;
+          } else {
+            lo = a;
+          }
+        }
+        const double depth = std::max(gaps[deepest], gap_at(s, 0.5 * (lo + hi)));
+        spans.push_back({point_at(s, static_cast<double>(begin) / samples), point_at(s, static_cast<double>(i - 1) / samples),
+                         depth, s.entity, s.source_line});
+      }
+    }
+    // A corner shared by two elements shows up at the end of one and the start of the next.
+    std::vector<UncutSpan> merged(spans.begin(), spans.begin() + first_of_loop);
+    for (std::size_t i = first_of_loop; i < spans.size(); ++i) {
+      if (merged.size() > first_of_loop && norm(merged.back().to - spans[i].from) < 1e-9) {
+        merged.back().to = spans[i].to;
+        merged.back().depth = std::max(merged.back().depth, spans[i].depth);
+      } else {
+        merged.push_back(spans[i]);
+      }
+    }
+    if (merged.size() > first_of_loop + 1 && norm(merged.back().to - merged[first_of_loop].from) < 1e-9) {
+      merged[first_of_loop].from = merged.back().from;  // the loop's first corner
+      merged[first_of_loop].depth = std::max(merged[first_of_loop].depth, merged.back().depth);
+      merged.pop_back();
+    }
+    spans = std::move(merged);
+  }
+  return spans;
+}
+
+}  // namespace
+
+RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& index, const OffsetOptions& options) {
+  if (!(options.tool_radius >= 0 && std::isfinite(options.tool_radius)))
+    throw Error("the tool radius must be a finite number >= 0");
+  RegionOffset result;
+  const bool inside = options.side == MachiningSide::inside;
+  if (options.tool_radius == 0 || drawn.empty()) {
+    result.loops = drawn;
+  } else {
+    ClipperLib::Paths paths;
+    for (const Loop& loop : drawn) paths.push_back(to_clipper(loop, options.tolerance));
+    ClipperLib::ClipperOffset offsetter;
+    offsetter.ArcTolerance = options.tolerance / kClipperUnitMm;
+    offsetter.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+    ClipperLib::PolyTree tree;
+    offsetter.Execute(tree, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm);
+    const DrawingFeatures features(drawn, index);
+    // Walk the tree: outer boundaries before their holes, depth from nesting.
+    std::vector<std::pair<const ClipperLib::PolyNode*, int>> pending;
+    for (const ClipperLib::PolyNode* child : tree.Childs) pending.push_back({child, -1});
+    for (std::size_t i = 0; i < pending.size(); ++i) {
+      const auto [node, parent] = pending[i];
+      const std::vector<Point> polygon = from_clipper(node->Contour);
+      if (polygon.size() < 3) continue;
+      std::optional<Loop> exact = recover_exact(polygon, features, index, options.tool_radius, options.tolerance);
+      if (!exact) ++result.polygon_loops;
+      Loop loop = exact ? std::move(*exact) : polygon_loop(polygon);
+      loop.parent = parent;
+      loop.depth = parent < 0 ? 0 : result.loops[parent].depth + 1;
+      loop.area = signed_area(loop);
+      if ((loop.area < 0) != loop.is_hole()) reverse(loop);
+      const int self = static_cast<int>(result.loops.size());
+      result.loops.push_back(std::move(loop));
+      for (const ClipperLib::PolyNode* child : node->Childs) pending.push_back({child, self});
+    }
+  }
+  result.uncut = find_uncut(drawn, result.loops, options.tool_radius, options);
+  // Inside machining: the region is everything but the shrunk pocket, so the loops turn round.
+  if (inside)
+    for (Loop& loop : result.loops) reverse(loop);
+  return result;
+}
+
+GuardAnswer guard_query(const RegionIndex& index, Point p, double tool_radius, MachiningSide side) {
+  const RegionQuery q = index.query(p);
+  const double toward_allowed = side == MachiningSide::outside ? 1 : -1;
+  const double clearance = toward_allowed * q.distance;  // > 0 on the tool's side of the drawing
+  GuardAnswer answer{clearance - tool_radius, p, q.element};
+  if (answer.distance >= 0) return answer;
+  Point away = p - q.nearest;
+  if (norm(away) > 1e-12) {
+    away = (clearance >= 0 ? 1.0 : -1.0) * unit(away);
+  } else {  // on the boundary: the normal toward the tool's side (the material is on the left)
+    double t = 0;
+    const Segment& s = index.elements()[q.element];
+    nearest_point(s, p, &t);
+    const Point tangent = tangent_at(s, t);
+    away = toward_allowed * Point{tangent.y, -tangent.x};
+  }
+  answer.clamped = q.nearest + tool_radius * away;
+  return answer;
+}
+
+}  // namespace tk::cad

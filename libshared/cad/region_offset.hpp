@@ -1,0 +1,72 @@
+/// @file region_offset.hpp
+/// @brief The prohibited region for a round tool of radius R: the drawn
+/// part grown by R (machining outside), or the drawn pocket shrunk by R
+/// (machining inside, the region is everything but the shrunk pocket).
+///
+/// Clipper (libpolyclipping) computes the offset of the flattened loops,
+/// which settles the topology: notches and pockets narrower than the tool
+/// close, loops that vanish go. The geometry then comes back exact: every
+/// stretch of Clipper's polygon lies at distance R from one feature of the
+/// drawing (the inside of a line or arc, or a corner), so it is replaced by
+/// that feature's offset (a parallel line, a concentric arc, or an arc of
+/// radius R about the corner), and neighbouring pieces meet where their
+/// exact curves cross. A loop whose recovery fails the checks stays as
+/// Clipper's polygon (counted in `polygon_loops`).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "cad/loops.hpp"
+#include "cad/region_distance.hpp"
+
+namespace tk::cad {
+
+enum class MachiningSide { outside, inside };
+
+struct OffsetOptions {
+  double tool_radius = 0;          ///< mm, >= 0
+  MachiningSide side = MachiningSide::outside;
+  double tolerance = 1e-4;         ///< mm: flattening for Clipper, and the checks of the exact recovery
+  double uncut_report_mm = 1e-3;   ///< material left thicker than this is reported
+};
+
+/// A stretch of the drawing the tool cannot reach: material stays there
+/// (a concave corner, a slot narrower than the tool, a pocket it does not
+/// fit in).
+struct UncutSpan {
+  Point from, to;
+  double depth = 0;              ///< mm of material left, at the worst point
+  std::uint32_t entity = 0;      ///< the drawing entity
+  std::size_t source_line = 0;
+};
+
+struct RegionOffset {
+  /// The prohibited region's boundary, each loop with the region on its
+  /// left (so a tool travelling a loop backwards has the material on its
+  /// right: climb milling with a clockwise spindle).
+  std::vector<Loop> loops;
+  std::vector<UncutSpan> uncut;
+  std::size_t polygon_loops = 0;  ///< loops left as Clipper's polygon
+};
+
+/// `drawn` are the drawing's loops (from build_loops, material on the
+/// left); `index` is a RegionIndex over the same loops. Throws Error for a
+/// drawing too large for Clipper's integers.
+RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& index, const OffsetOptions& options);
+
+/// The tool's side of the prohibited region: the signed distance (positive
+/// where the tool centre may be) and the barrier point, for one query.
+struct GuardAnswer {
+  double distance = 0;   ///< to the prohibited region's boundary; negative inside it
+  Point clamped;         ///< the point itself when allowed, else the nearest allowed point
+  std::size_t element = 0;  ///< nearest element of the drawing (RegionIndex::elements())
+};
+
+/// Exact wherever the tool is allowed and in the band of width R around
+/// the drawing; deeper inside the part the distance is -(depth + R), the
+/// depth being the distance to the drawing's boundary.
+GuardAnswer guard_query(const RegionIndex& index, Point p, double tool_radius, MachiningSide side);
+
+}  // namespace tk::cad
