@@ -341,13 +341,13 @@ void EntityBuilder::end_spline(Plane plane) {
     return;
   }
   const int degree = static_cast<int>(std::clamp<std::int64_t>(e.degree, -1, kMaxSplineDegree + 1));
+  // Every knot span gives a chord at least; beyond the segments left, the
+  // chords themselves will say so (unless they have no length).
+  const std::size_t limit = std::max(curve_limit(), std::min(e.control.size() + 1, kMaxCurvePoints));
   const SplineResult result =
-      flatten_spline(degree, e.knots, e.weights, e.control, options_.chord_tolerance, curve_limit(), points_);
+      flatten_spline(degree, e.knots, e.weights, e.control, options_.chord_tolerance, limit, points_);
   if (result == SplineResult::invalid) return skip(" (invalid)");
-  if (result == SplineResult::too_large) {
-    if (e.control.size() > kMaxCurvePoints) return skip(" (too large)");
-    too_many_segments(e.start);  // more control points than segments left
-  }
+  if (result == SplineResult::too_large) return skip(" (too large)");
   count_read(e.kind, e.layer, e.index, e.start);
   emit_chords(points_);
 }

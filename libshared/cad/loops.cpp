@@ -89,7 +89,8 @@ double leaving_angle(const Segment& segment, bool at_end) {
 /// not cross: neighbours in angular order are paired, choosing the phase
 /// (and for an odd count the end left over) that avoids pairing two ends
 /// leaving in the same direction (a doubled segment) and then minimises the
-/// total angle inside the pairs. Ties leave the latest end over.
+/// total angle inside the pairs. Ties leave the latest end over; beyond 13
+/// ends only the phase is chosen, the last in angular order left over.
 void pair_ends(std::vector<std::pair<double, std::size_t>> around, std::vector<std::ptrdiff_t>& partner) {
   std::sort(around.begin(), around.end());
   const std::size_t n = around.size();

@@ -1,10 +1,11 @@
 /// @file test_dxf_corpus.cpp
-/// @brief Every DXF file of the shared corpus, and three drawings ezdxf
-/// writes itself (R2018, R12, binary) with the entity kinds the corpus
-/// lacks, read by our reader and by ezdxf (test/oracle/dxf_entities.py),
-/// compared entity by entity: counts of read and skipped entities by type,
-/// $INSUNITS, and every segment against ezdxf's coordinates to 1e-9
-/// relative. Skipped when the corpus, /usr/bin/python3 or ezdxf is absent.
+/// @brief Every DXF file of the shared corpus and of test/fixtures/dxf, and
+/// three drawings ezdxf writes itself (R2018, R12, binary) with the entity
+/// kinds the corpus lacks, read by our reader and by ezdxf
+/// (test/oracle/dxf_entities.py), compared entity by entity: counts of read
+/// and skipped entities by type, $INSUNITS, and every segment against
+/// ezdxf's coordinates to 1e-9 relative. Skipped when the corpus,
+/// /usr/bin/python3 or ezdxf is absent.
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
@@ -39,10 +40,10 @@ std::filesystem::path project_root() {
 /// $TOOLKIT_ROOT/../shared/corpus/dxf (ctest sets TOOLKIT_ROOT).
 std::filesystem::path corpus_folder() { return project_root() / ".." / "shared" / "corpus" / "dxf"; }
 
-std::vector<std::filesystem::path> corpus_files() {
+std::vector<std::filesystem::path> dxf_files(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(corpus_folder(), error))
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error))
     if (entry.path().extension() == ".dxf") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
@@ -311,8 +312,15 @@ void compare_file(const std::filesystem::path& file) {
 }  // namespace
 
 TEST(DxfCorpus, EveryFileReadsAsEzdxfReadsIt) {
-  const auto files = corpus_files();
+  const auto files = dxf_files(corpus_folder());
   if (files.empty()) GTEST_SKIP() << "no DXF corpus at " << corpus_folder();
+  if (!have_ezdxf()) GTEST_SKIP() << "/usr/bin/python3 cannot import ezdxf";
+  for (const auto& file : files) compare_file(file);
+}
+
+TEST(DxfCorpus, TheToolsFixturesReadAsEzdxfReadsThem) {
+  const auto files = dxf_files(project_root() / "test" / "fixtures" / "dxf");
+  if (files.empty()) GTEST_SKIP() << "no fixtures";
   if (!have_ezdxf()) GTEST_SKIP() << "/usr/bin/python3 cannot import ezdxf";
   for (const auto& file : files) compare_file(file);
 }

@@ -438,6 +438,56 @@ std::vector<Point> probe_points(std::mt19937_64& random, const std::vector<Loop>
   return points;
 }
 
+TEST(Loops, RandomPartsComeBackWhole) {
+  // Stars with arcs, holes and islands, cut into segments that are
+  // shuffled, reversed at random and moved by up to a tenth of the
+  // tolerance: the loops come back with their areas, nested and oriented,
+  // and the region they bound is the same.
+  std::mt19937_64 random(42);
+  for (int trial = 0; trial < 5; ++trial) {
+    std::vector<std::vector<Segment>> parts = {star(random, {0, 0}, 50, 200, 0.2), circle({20, 0}, 5, 0, true),
+                                               star(random, {20, 0}, 3, 30, 0.2), star(random, {-15, 5}, 8, 60, 0.2),
+                                               star(random, {120, 0}, 20, 90, 0.3)};
+    std::vector<Segment> pieces;
+    std::uniform_real_distribution<double> jitter(-1e-5, 1e-5);
+    for (std::size_t k = 0; k < parts.size(); ++k)
+      for (Segment s : parts[k]) {
+        s.entity = static_cast<std::uint32_t>(k);
+        s.start.x += jitter(random), s.start.y += jitter(random), s.end.x += jitter(random), s.end.y += jitter(random);
+        if (random() % 2) std::swap(s.start, s.end), s.bulge = -s.bulge;
+        pieces.push_back(s);
+      }
+    std::shuffle(pieces.begin(), pieces.end(), random);
+    const LoopSet set = build_loops(pieces, 1e-4);
+    ASSERT_EQ(set.loops.size(), parts.size());
+    EXPECT_TRUE(set.open_segments.empty());
+    EXPECT_TRUE(set.loose_ends.empty());
+    EXPECT_TRUE(set.t_junctions.empty());
+    const int depth[] = {0, 1, 2, 1, 0};
+    std::vector<Loop> originals;
+    for (std::size_t k = 0; k < parts.size(); ++k) originals.push_back({parts[k], depth[k], -1, signed_area(parts[k])});
+    for (const Loop& loop : set.loops) {
+      expect_closed(loop);
+      const std::size_t k = loop.segments[0].entity;
+      EXPECT_EQ(loop.depth, depth[k]) << k;
+      EXPECT_EQ(loop.area > 0, loop.depth % 2 == 0);
+      EXPECT_NEAR(std::abs(loop.area), std::abs(originals[k].area), 1e-2) << k;
+      EXPECT_EQ(loop.parent < 0, loop.depth == 0);
+      if (loop.parent >= 0) {
+        EXPECT_EQ(set.loops[loop.parent].depth, loop.depth - 1);
+      }
+    }
+    const RegionIndex rebuilt(set.loops), original(originals);
+    for (const Point& p : probe_points(random, originals, 2000)) {
+      const RegionQuery a = rebuilt.query(p), b = original.query(p);
+      EXPECT_NEAR(a.distance, b.distance, 1e-4);
+      if (std::abs(b.distance) > 1e-4) {
+        EXPECT_EQ(a.inside(), b.inside());
+      }
+    }
+  }
+}
+
 TEST(RegionIndex, SquareByHand) {
   const std::vector<Loop> loops = {{square(0, 0, 10, 10, 0, false), 0, -1, 100}};
   const RegionIndex index(loops);
@@ -497,6 +547,25 @@ TEST(RegionIndex, MatchesBruteForceOnManyLoops) {
   EXPECT_DOUBLE_EQ(centre.distance, 2);
   EXPECT_FALSE(centre.inside());
   EXPECT_DOUBLE_EQ(index.query({0, 1.5}).distance, 0.5);
+}
+
+TEST(RegionIndex, MatchesBruteForceNearTheCentreOfAFineCircle) {
+  // Every one of the 3,000 arcs is about as near to the centre: the index's
+  // capped lists run out there and it finishes in its tree.
+  const int n = 3000;
+  std::vector<Segment> fine;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * kPi * i / n, b = 2 * kPi * (i + 1) / n;
+    const Point from{10 * std::cos(a), 10 * std::sin(a)}, to{10 * std::cos(b), 10 * std::sin(b)};
+    fine.push_back(arc(from, to, std::tan(kPi / n / 2)));
+  }
+  const std::vector<Loop> loops = {{fine, 0, -1, 0}};
+  std::mt19937_64 random(3);
+  std::vector<Point> points = probe_points(random, loops, 5000);
+  std::uniform_real_distribution<double> near_centre(-0.3, 0.3);
+  for (int i = 0; i < 5000; ++i) points.push_back({near_centre(random), near_centre(random)});
+  compare(loops, points);
+  EXPECT_NEAR(RegionIndex(loops).query({0, 0}).distance, -10, 1e-12);
 }
 
 TEST(RegionIndex, MatchesBruteForceWithExtremeBulgesAndFarPoints) {
