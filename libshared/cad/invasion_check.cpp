@@ -10,13 +10,14 @@
 
 namespace tk::cad {
 
-InvasionGuard::InvasionGuard(const RegionIndex& index, GuardOptions options) : index_(index), options_(options) {
+InvasionGuard::InvasionGuard(const RegionIndex& index, GuardOptions options, const RegionIndex* contour)
+    : index_(index), contour_(contour), options_(options) {
   summary_.closest_mm = std::numeric_limits<double>::infinity();
 }
 
 PositionCheck InvasionGuard::check(Point p, std::optional<double> t) {
   PositionCheck result;
-  result.answer = guard_query(index_, p, options_.tool_radius, options_.side);
+  result.answer = guard_query(index_, p, options_.tool_radius, options_.side, contour_);
   const double distance = result.answer.distance;
   ++summary_.positions;
   summary_.closest_mm = std::min(summary_.closest_mm, distance);

@@ -35,7 +35,9 @@ struct GuardSummary {
 
 class InvasionGuard {
  public:
-  InvasionGuard(const RegionIndex& index, GuardOptions options);
+  /// `contour`: an index over the region's boundary (RegionOffset::loops)
+  /// for exact barrier points, or null (see guard_query).
+  InvasionGuard(const RegionIndex& index, GuardOptions options, const RegionIndex* contour = nullptr);
   /// `t` in seconds when the position has one; times must not go backwards
   /// (Error otherwise, for the caller to place).
   PositionCheck check(Point p, std::optional<double> t);
@@ -43,6 +45,7 @@ class InvasionGuard {
 
  private:
   const RegionIndex& index_;
+  const RegionIndex* contour_;
   GuardOptions options_;
   GuardSummary summary_;
   std::optional<double> last_t_;

@@ -392,12 +392,11 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
   return result;
 }
 
-GuardAnswer guard_query(const RegionIndex& index, Point p, double tool_radius, MachiningSide side) {
-  const RegionQuery q = index.query(p);
-  const double toward_allowed = side == MachiningSide::outside ? 1 : -1;
-  const double clearance = toward_allowed * q.distance;  // > 0 on the tool's side of the drawing
-  GuardAnswer answer{clearance - tool_radius, p, q.element};
-  if (answer.distance >= 0) return answer;
+namespace {
+
+/// The nearest point of the drawing's boundary pushed R toward the tool's side.
+Point push_out(const RegionIndex& index, const RegionQuery& q, Point p, double tool_radius, double toward_allowed) {
+  const double clearance = toward_allowed * q.distance;
   Point away = p - q.nearest;
   if (norm(away) > 1e-12) {
     away = (clearance >= 0 ? 1.0 : -1.0) * unit(away);
@@ -408,7 +407,30 @@ GuardAnswer guard_query(const RegionIndex& index, Point p, double tool_radius, M
     const Point tangent = tangent_at(s, t);
     away = toward_allowed * Point{tangent.y, -tangent.x};
   }
-  answer.clamped = q.nearest + tool_radius * away;
+  return q.nearest + tool_radius * away;
+}
+
+}  // namespace
+
+GuardAnswer guard_query(const RegionIndex& index, Point p, double tool_radius, MachiningSide side,
+                        const RegionIndex* contour) {
+  const double toward_allowed = side == MachiningSide::outside ? 1 : -1;
+  RegionQuery q = index.query(p);
+  GuardAnswer answer{toward_allowed * q.distance - tool_radius, p, q.element};
+  if (answer.distance >= 0) return answer;
+  if (contour && !contour->elements().empty()) {
+    answer.clamped = contour->query(p).nearest;
+    return answer;
+  }
+  // Pushed out from one wall, a point can land within R of another (a slot
+  // a little wider than the tool): push again from there, a few times.
+  Point at = p;
+  for (int round = 0; round < 8; ++round) {
+    at = push_out(index, q, at, tool_radius, toward_allowed);
+    q = index.query(at);
+    if (toward_allowed * q.distance - tool_radius >= -1e-9 * std::max(1.0, tool_radius)) break;
+  }
+  answer.clamped = at;
   return answer;
 }
 

@@ -66,7 +66,13 @@ struct GuardAnswer {
 
 /// Exact wherever the tool is allowed and in the band of width R around
 /// the drawing; deeper inside the part the distance is -(depth + R), the
-/// depth being the distance to the drawing's boundary.
-GuardAnswer guard_query(const RegionIndex& index, Point p, double tool_radius, MachiningSide side);
+/// depth being the distance to the drawing's boundary. The barrier point
+/// is the nearest point of `contour` (an index over RegionOffset::loops,
+/// the region's exact boundary) when given; otherwise the nearest drawing
+/// point pushed R out, again from where it lands while that is within R
+/// of another wall (up to 8 times: a slot narrower than the tool has no
+/// allowed point, and the push can end inside).
+GuardAnswer guard_query(const RegionIndex& index, Point p, double tool_radius, MachiningSide side,
+                        const RegionIndex* contour = nullptr);
 
 }  // namespace tk::cad

@@ -208,6 +208,19 @@ TEST(GuardQuery, BarrierIsTheNearestAllowedPoint) {
   EXPECT_NEAR(a.clamped.y, 2, 1e-12);
 }
 
+TEST(GuardQuery, InASlotNarrowerThanTheToolTheBarrierIsTheContour) {
+  const Offset o = offset(polygon({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
+  const tk::cad::RegionIndex contour(o.result.loops);
+  for (Point p : {Point{30, 30}, Point{29, 39}, Point{30.2, 41.5}}) {
+    const auto a = tk::cad::guard_query(o.index, p, 2, MachiningSide::outside, &contour);
+    EXPECT_LT(a.distance, 0);
+    // The barrier point is allowed (on the region's boundary), and nearer to p than any other boundary point.
+    EXPECT_NEAR(tk::cad::guard_query(o.index, a.clamped, 2, MachiningSide::outside).distance, 0, 1e-9);
+    EXPECT_NEAR(std::hypot(a.clamped.x - p.x, a.clamped.y - p.y), std::abs(contour.query(p).distance), 1e-12);
+    EXPECT_GT(a.clamped.y, 40);  // out of the slot: nowhere in it is allowed
+  }
+}
+
 TEST(InvasionGuard, LatencyAwareStopFromTheApproachSpeed) {
   tk::cad::LoopSet set = tk::cad::build_loops(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1e-6);
   const tk::cad::RegionIndex index(set.loops);

@@ -227,7 +227,8 @@ int main(int argc, char** argv) {
     }
     if (checking) {
       tk::cad::GuardOptions options{tool_radius, machining, latency, margin};
-      tk::cad::InvasionGuard guard(*part.index, options);
+      const tk::cad::RegionIndex contour(region.loops);
+      tk::cad::InvasionGuard guard(*part.index, options, &contour);
       std::vector<std::string> fields{"inside", "distance", "clamped_x", "clamped_y", "element", "entity", "dxf_line", "approach_mm_s", "stop"};
       if (summary)  // CSV: the summary's columns too, empty in the positions' rows
         fields.insert(fields.end(), {"summary", "positions", "invasions", "deepest_invasion_mm", "deepest_x", "deepest_y", "closest_mm", "stops"});
