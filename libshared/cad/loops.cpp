@@ -420,3 +420,28 @@ LoopSet build_loops(const std::vector<Segment>& segments, double join_tolerance)
 }
 
 }  // namespace tk::cad
+
+namespace tk::cad {
+
+std::vector<Point> doubled_edges(const std::vector<Loop>& loops) {
+  // An edge as its ends in lexicographic order and its bulge seen from the first.
+  struct Key {
+    double x0, y0, x1, y1, bulge;
+    auto operator<=>(const Key&) const = default;
+  };
+  std::vector<Key> keys;
+  for (const Loop& loop : loops)
+    for (const Segment& s : loop.segments) {
+      const bool forward = std::pair{s.start.x, s.start.y} <= std::pair{s.end.x, s.end.y};
+      keys.push_back(forward ? Key{s.start.x, s.start.y, s.end.x, s.end.y, s.bulge}
+                             : Key{s.end.x, s.end.y, s.start.x, s.start.y, -s.bulge});
+    }
+  std::sort(keys.begin(), keys.end());
+  std::vector<Point> doubled;
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (keys[i] == keys[i - 1] && (i < 2 || !(keys[i - 1] == keys[i - 2])))  // once per group
+      doubled.push_back(point_at(Segment{{keys[i].x0, keys[i].y0}, {keys[i].x1, keys[i].y1}, keys[i].bulge}, 0.5));
+  return doubled;
+}
+
+}  // namespace tk::cad

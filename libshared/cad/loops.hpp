@@ -54,4 +54,10 @@ LoopSet build_loops(const std::vector<Segment>& segments, double join_tolerance)
 /// exactly: > 0 when it runs counter-clockwise.
 double signed_area(const std::vector<Segment>& loop);
 
+/// Midpoints of the loops' edges drawn twice (the same ends, either way
+/// round, the same curve): two loops sharing an edge, or a loop doubling
+/// back on itself. Even-odd, such an edge bounds nothing, yet the distance
+/// keeps the tool off it, so the offset there is not to be trusted.
+std::vector<Point> doubled_edges(const std::vector<Loop>& loops);
+
 }  // namespace tk::cad

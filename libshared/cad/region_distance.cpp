@@ -114,10 +114,13 @@ Point nearest_on(const Kernel& k, const Point* ends, Point p) {
   double u, v;
   to_local(k, p, u, v);
   const double wv = v - k.k1, rho = std::sqrt(u * u + wv * wv);
-  if (!in_sweep(k, u, v) || rho == 0) return ends[u > 0 ? 1 : 0];
+  // At (or within rounding of) the centre the direction is noise and every
+  // point of the arc is as near: take an end.
+  if (!in_sweep(k, u, v) || rho <= 1e-9 * k.k2) return ends[u > 0 ? 1 : 0];
   const double excess = (u * u + v * v - 2 * v * k.k1 - k.k0 * k.k0) / (rho + k.k2);
-  const double nu = u - excess * u / rho, nv = (v - excess * wv / rho) * k.side;
-  return {k.x + nu * k.dx - nv * k.dy, k.y + nu * k.dy + nv * k.dx};
+  const double nu = u - excess * u / rho, nv = v - excess * wv / rho;
+  if (!in_sweep(k, nu, nv)) return ends[u > 0 ? 1 : 0];  // rounding at the sweep's edge
+  return {k.x + nu * k.dx - nv * k.side * k.dy, k.y + nu * k.dy + nv * k.side * k.dx};
 }
 
 inline bool in_circle(const Kernel& k, Point p) {

@@ -360,6 +360,10 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
   } else {
     ClipperLib::Paths paths;
     for (const Loop& loop : drawn) paths.push_back(to_clipper(loop, options.tolerance));
+    // The region is the loops' even-odd interior (as RegionIndex sees it),
+    // also where a drawing's loops cross themselves or each other; Clipper
+    // offsets by orientation, so hand it the even-odd union first.
+    ClipperLib::SimplifyPolygons(paths, ClipperLib::pftEvenOdd);
     ClipperLib::ClipperOffset offsetter;
     offsetter.ArcTolerance = options.tolerance / kClipperUnitMm;
     offsetter.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etClosedPolygon);

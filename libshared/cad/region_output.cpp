@@ -19,7 +19,7 @@ std::vector<std::string> region_record_fields() {
   return {"record", "loop",      "depth",    "hole",  "area_mm2", "length_mm", "elements", "polyline", "x",
           "y",      "x0",        "y0",       "x1",    "y1",       "depth_mm",  "entity",   "dxf_line", "touched_entity",
           "touched_dxf_line", "file", "version", "units", "mm_per_unit", "entities_read", "entities_skipped", "loops",
-          "holes", "open_segments", "loose_ends", "t_junctions", "uncut", "polygon_loops", "tool_radius", "side"};
+          "holes", "open_segments", "loose_ends", "t_junctions", "uncut", "polygon_loops", "tool_radius", "side", "doubled_edges"};
 }
 
 Record loop_record(const Loop& loop, std::size_t number, double flatten_tolerance, bool with_sources) {

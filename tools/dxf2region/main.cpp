@@ -140,6 +140,10 @@ int main(int argc, char** argv) {
     if (!found.loose_ends.empty())
       warn(fmt::format("{}: {} loose ends (first at {:g}, {:g}, line {}): open chains are not part of the region", name,
                        found.loose_ends.size(), found.loose_ends[0].at.x, found.loose_ends[0].at.y, found.loose_ends[0].source_line));
+    const std::vector<tk::cad::Point> doubled = tk::cad::doubled_edges(found.loops);
+    if (!doubled.empty())
+      warn(fmt::format("{}: {} edges drawn twice (first about {:g}, {:g}): the region there may not be what was meant", name,
+                       doubled.size(), doubled[0].x, doubled[0].y));
     tk::io::RecordWriter writer(tool.output_format());
     auto write_findings = [&](const tk::cad::RegionOffset& region) {
       for (const tk::cad::LooseEnd& end : found.loose_ends) writer.write(tk::cad::loose_end_record(end));
@@ -149,6 +153,7 @@ int main(int argc, char** argv) {
       totals["file"] = name;
       totals["tool_radius"] = tool_radius;
       totals["side"] = side;
+      totals["doubled_edges"] = doubled.size();
       if (tool.common().csv) {  // nested objects as JSON text in one cell
         totals["entities_read"] = totals["entities_read"].dump();
         totals["entities_skipped"] = totals["entities_skipped"].dump();
@@ -169,6 +174,8 @@ int main(int argc, char** argv) {
     const tk::cad::RegionOffset region = tk::cad::offset_region(found.loops, *part.index, offset_options);
     if (region.polygon_loops > 0)
       warn(std::to_string(region.polygon_loops) + " offset loops stay as polygons (the exact lines and arcs did not check out)");
+    if (region.loops.empty())
+      warn("the tool fits nowhere in the pocket: every position is prohibited, and there is no contour");
     if (!region.uncut.empty())
       warn(std::to_string(region.uncut.size()) + " stretches of the drawing are out of the tool's reach (records \"uncut\")");
 
