@@ -439,3 +439,25 @@ print("ok")' <<< "$output"
   run dxf2region - < "$DXF/plate.dxf"
   assert_success
 }
+
+@test "the fuzzers' regressions run clean: exit 0, or exit 1 with a one-line error" {
+  shopt -s nullglob
+  for f in "$TOOLKIT_ROOT"/fuzz/regressions/fuzz_dxf/* "$TOOLKIT_ROOT"/fuzz/regressions/fuzz_region/*; do
+    # fuzz_region's inputs start with an option byte: bits 0-1 the radius, bit 2 the side.
+    options=(--tool-radius 2)
+    if [[ "$f" == */fuzz_region/* ]]; then
+      byte=$(od -An -tu1 -N1 "$f" | tr -d ' ')
+      radii=(0 0.5 2 7)
+      sides=(outside inside)
+      options=(--tool-radius "${radii[$((byte & 3))]}" --side "${sides[$(((byte >> 2) & 1))]}")
+      tail -c +2 "$f" > part.dxf
+    else
+      cp "$f" part.dxf
+    fi
+    run --separate-stderr dxf2region -q part.dxf "${options[@]}"
+    [ "$status" -le 1 ] || { echo "$f: exit $status"; false; }
+    if [ "$status" -eq 1 ]; then
+      [ "$(echo "$stderr" | wc -l)" -eq 1 ] && [[ "$stderr" == "dxf2region: "* ]] || { echo "$f: $stderr"; false; }
+    fi
+  done
+}

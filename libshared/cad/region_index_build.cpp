@@ -1,0 +1,263 @@
+/// @file region_index_build.cpp
+/// @brief Building RegionIndex: the box tree, the two-level grid, each
+/// leaf's candidate list (pruned by quartering) and reference point.
+#include <algorithm>
+#include <cmath>
+
+#include "cad/region_index_impl.hpp"
+#include "cad/segment_geometry.hpp"
+#include "io/error.hpp"
+
+namespace tk::cad {
+
+std::uint32_t RegionIndex::Impl::build_node(std::uint32_t begin, std::uint32_t end) {
+  const auto index = static_cast<std::uint32_t>(nodes.size());
+  nodes.emplace_back();
+  Box box = boxes[order[begin]], centres{kInf, kInf, -kInf, -kInf};
+  for (std::uint32_t i = begin; i < end; ++i) {
+    const Box& b = boxes[order[i]];
+    box = merge(box, b);
+    const Point c{(b.min_x + b.max_x) / 2, (b.min_y + b.max_y) / 2};
+    centres = merge(centres, {c.x, c.y, c.x, c.y});
+  }
+  nodes[index].box = box;
+  if (end - begin <= 4) {
+    nodes[index].first = begin, nodes[index].count = end - begin;
+    return index;
+  }
+  // Median split of the box centres along the longer side.
+  const bool by_x = centres.max_x - centres.min_x >= centres.max_y - centres.min_y;
+  const std::uint32_t mid = begin + (end - begin) / 2;
+  std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                   [&](std::uint32_t a, std::uint32_t b) {
+                     const Box &p = boxes[a], &q = boxes[b];
+                     return by_x ? p.min_x + p.max_x < q.min_x + q.max_x : p.min_y + p.max_y < q.min_y + q.max_y;
+                   });
+  build_node(begin, mid);
+  const std::uint32_t right = build_node(mid, end);
+  nodes[index].right = right;
+  return index;
+}
+
+void RegionIndex::Impl::build_grid() {
+  Box all = boxes.front();
+  for (const Box& b : boxes) all = merge(all, b);
+  const double w = all.max_x - all.min_x, h = all.max_y - all.min_y, extent = std::max(w, h);
+  if (!(extent > 0) || !std::isfinite(extent)) return;  // no grid: every query uses the tree
+  const double mx = w / 4 + 1e-6 * extent, my = h / 4 + 1e-6 * extent;
+  ox = all.min_x - mx, oy = all.min_y - my;
+  const double width = w + 2 * mx, height = h + 2 * my;
+  const double wanted = std::clamp(kCoarseCellsPerElement * double(segments.size()), 1.0, double(1 << 22));
+  size = std::sqrt(width * height / wanted);
+  nx = static_cast<std::size_t>(std::clamp(std::ceil(width / size), 1.0, double(1 << 12)));
+  ny = static_cast<std::size_t>(std::clamp(std::ceil(height / size), 1.0, double(1 << 12)));
+  size = std::max(width / double(nx), height / double(ny));
+  inv_size = 1 / size;
+}
+
+/// Leaves and their cover lists (which elements may touch each leaf).
+/// Elements are cut into pieces of half a cell, each piece's padded box
+/// marking the cells it may touch; a cell then splits into leaves (see
+/// below), and the pieces in it are cut again to find theirs.
+void RegionIndex::Impl::build_covers() {
+  struct Touch {
+    std::uint32_t cell, element;
+    double t0, t1;
+  };
+  const double pad = 1e-6 * size;
+  const auto span = [&](double lo, double hi, double origin, double step, std::size_t n) {
+    const auto at = [&](double x) { return std::clamp(std::floor((x - origin) / step), 0.0, double(n - 1)); };
+    return std::pair{std::size_t(at(lo - pad)), std::size_t(at(hi + pad))};
+  };
+  std::vector<Touch> touches;
+  for (std::uint32_t e = 0; e < segments.size(); ++e) {
+    const double pieces = std::clamp(std::ceil(segment_length(segments[e]) / (size / 2)), 1.0, double(1 << 20));
+    for (double i = 0; i < pieces; ++i) {
+      const double t0 = i / pieces, t1 = (i + 1) / pieces;
+      const Box b = pieces == 1 ? boxes[e] : bounding_box(sub_segment(segments[e], t0, t1));
+      const auto [x0, x1] = span(b.min_x, b.max_x, ox, size, nx);
+      const auto [y0, y1] = span(b.min_y, b.max_y, oy, size, ny);
+      for (std::size_t y = y0; y <= y1; ++y)
+        for (std::size_t x = x0; x <= x1; ++x) touches.push_back({std::uint32_t(y * nx + x), e, t0, t1});
+    }
+  }
+  std::stable_sort(touches.begin(), touches.end(), [](const Touch& a, const Touch& b) { return a.cell < b.cell; });
+
+  coarse.assign(nx * ny, Coarse{0, 1});
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (leaf, element)
+  std::uint32_t leaf_count = 0;
+  for (std::size_t t = 0, cell = 0; cell < nx * ny; ++cell) {
+    const std::size_t begin = t;
+    std::size_t distinct = 0;
+    for (; t < touches.size() && touches[t].cell == cell; ++t)
+      distinct += t == begin || touches[t].element != touches[t - 1].element;
+    // Enough leaves for about kLeafCovers elements touching each, and, up to
+    // a point, about kLeafCandidates that may be nearest (roughly as many
+    // as Voronoi regions cross the leaf, so in proportion to its width).
+    double nearest = 0;
+    const Point middle{ox + (double(cell % nx) + 0.5) * size, oy + (double(cell / nx) + 0.5) * size};
+    const double may_win = double(winners(middle, size / 2, 1, nearest).size());
+    const double wanted =
+        std::max(std::sqrt(double(distinct) / kLeafCovers), std::min(may_win / kLeafCandidates, kMaxListSplit));
+    const auto split = static_cast<std::uint32_t>(std::clamp(std::ceil(wanted), 1.0, 32.0));
+    coarse[cell] = {leaf_count, split};
+    leaf_count += split * split;
+    const double x0 = ox + double(cell % nx) * size, y0 = oy + double(cell / nx) * size, step = size / split;
+    for (std::size_t k = begin; k < t; ++k) {
+      const Touch& touch = touches[k];
+      if (split == 1) {
+        pairs.emplace_back(coarse[cell].first_leaf, touch.element);
+        continue;
+      }
+      for (std::uint32_t j = 0; j < split; ++j) {
+        const double step_t = (touch.t1 - touch.t0) / split;
+        const double t0 = touch.t0 + step_t * j, t1 = touch.t0 + step_t * (j + 1);
+        const Box b = bounding_box(sub_segment(segments[touch.element], t0, t1));
+        if (b.max_x + pad < x0 || b.min_x - pad > x0 + size || b.max_y + pad < y0 || b.min_y - pad > y0 + size)
+          continue;
+        const auto [sx0, sx1] = span(b.min_x, b.max_x, x0, step, split);
+        const auto [sy0, sy1] = span(b.min_y, b.max_y, y0, step, split);
+        for (std::size_t y = sy0; y <= sy1; ++y)
+          for (std::size_t x = sx0; x <= sx1; ++x)
+            pairs.emplace_back(coarse[cell].first_leaf + std::uint32_t(y * split + x), touch.element);
+      }
+    }
+  }
+  std::stable_sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  leaves.assign(leaf_count + 1, Leaf{});
+  for (const auto& [leaf, e] : pairs) ++leaves[leaf + 1].covers, covers.push_back({ends[2 * e], ends[2 * e + 1], e});
+  for (std::size_t i = 0; i < leaf_count; ++i) leaves[i + 1].covers += leaves[i].covers;
+}
+
+/// Adds to `out` (once, by mark) the elements of `window` that may be the
+/// nearest to some point of the square round q of half side `half`: those
+/// within the nearest distance from q plus a diagonal. A square with more
+/// than one is quartered, down to kRefineDepth, so the list comes close to
+/// the elements whose Voronoi regions meet the square.
+void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::size_t end, int depth,
+                               std::vector<std::uint32_t>& out) {
+  double nearest2 = kInf;
+  far2.resize(std::max(far2.size(), end));
+  for (std::size_t i = begin; i < end; ++i) nearest2 = std::min(nearest2, far2[i] = distance2(kernels[scratch[i]], q));
+  const double reach = (std::sqrt(nearest2) + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
+  const std::size_t first = scratch.size();
+  for (std::size_t i = begin; i < end; ++i)
+    if (far2[i] <= reach * reach) scratch.push_back(scratch[i]);
+  const std::size_t last = scratch.size();
+  // Stop at one element, at the depth limit, or where quartering stopped
+  // pruning (all nearly equidistant, as round the centre of a fine circle).
+  const bool stuck = depth > 0 && last - first == end - begin;
+  if (last - first <= 1 || depth == kRefineDepth || stuck || last - first > kRefineLimit) {
+    for (std::size_t i = first; i < last; ++i)
+      if (stamp[scratch[i]] != mark) stamp[scratch[i]] = mark, out.push_back(scratch[i]);
+  } else {
+    for (double dy : {-0.5, 0.5})
+      for (double dx : {-0.5, 0.5}) refine({q.x + dx * half, q.y + dy * half}, half / 2, first, last, depth + 1, out);
+  }
+  scratch.resize(first);
+}
+
+/// The elements that may be nearest to a point of the square round c of
+/// half side `half` (refined `depth` times), sorted by their distance from
+/// c (left in near[]); `nearest` gets c's distance to the boundary.
+std::vector<std::uint32_t> RegionIndex::Impl::winners(Point c, double half, int depth, double& nearest) {
+  double best2 = kInf;
+  std::uint32_t best = 0;
+  tree_nearest(c, best2, best);
+  nearest = std::sqrt(best2);
+  std::vector<std::pair<double, std::uint32_t>> found;
+  tree_within(c, (nearest + 2 * std::sqrt(2.0) * half) * (1 + 1e-9), found);
+  std::vector<std::uint32_t> listed;
+  for (const auto& [d, e] : found) near[e] = d;
+  if (found.size() > kWideWindow) {
+    // Many elements nearly equidistant (deep inside a finely divided
+    // outline): refining would cost more than it saves. The nearest
+    // kMaxCandidates + 1 by distance from c keep the leaf's promise (every
+    // element nearer than the last listed is listed); queries beyond fall
+    // back to the tree.
+    std::nth_element(found.begin(), found.begin() + kMaxCandidates, found.end());
+    for (std::size_t i = 0; i <= kMaxCandidates; ++i) listed.push_back(found[i].second);
+  } else {
+    scratch.clear();
+    for (const auto& entry : found) scratch.push_back(entry.second);
+    ++mark;
+    refine(c, half, 0, scratch.size(), kRefineDepth - depth, listed);
+  }
+  std::sort(listed.begin(), listed.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return std::pair{near[a], a} < std::pair{near[b], b}; });
+  return listed;
+}
+
+/// A leaf's candidates, capped; then its reference point: the first of a
+/// few scattered points that keeps clear of the boundary, with its inside
+/// flag from the ray test.
+void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y) {
+  const std::size_t leaf = coarse[cell].first_leaf + y * coarse[cell].split + x;
+  const double leaf_size = size / coarse[cell].split;
+  const Point c = centre(cell % nx, cell / nx, coarse[cell].split, x, y);
+  double nearest = 0;
+  std::vector<std::uint32_t> listed = winners(c, leaf_size / 2, kRefineDepth, nearest);
+  leaves[leaf].nearest = float_above(nearest);
+  leaves[leaf].complete = listed.size() > kMaxCandidates ? float_below(near[listed[kMaxCandidates]]) : INFINITY;
+  listed.resize(std::min(listed.size(), kMaxCandidates));
+  for (std::size_t i = 0; i < listed.size(); ++i) {
+    const Candidate entry{float_below(near[listed[i]]), listed[i]};
+    if (i < kHead) leaves[leaf].head[i] = entry;
+    else candidates.push_back(entry);
+  }
+  leaves[leaf + 1].candidates = static_cast<std::uint32_t>(candidates.size());
+
+  double clearest = -1;
+  Point& ref = leaves[leaf].ref;
+  std::uint32_t ignored = 0;
+  for (int k = 0; k < 8 && clearest < 1e-4 * leaf_size; ++k) {
+    const double fx = 0.8 * std::fmod(0.5137 + 0.6180339887 * k, 1.0) - 0.4;
+    const double fy = 0.8 * std::fmod(0.5291 + 0.7548776662 * k, 1.0) - 0.4;
+    const Point q{c.x + fx * leaf_size, c.y + fy * leaf_size};
+    const double clearance = std::sqrt(leaf_nearest(leaf, c, q, ignored));
+    if (clearance > clearest) clearest = clearance, ref = q;
+  }
+  for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m) {
+    const std::uint32_t e = covers[m].packed;
+    const bool left = left_of(covers[m].start, covers[m].end, ref), arc = kernels[e].side != 0;
+    covers[m].packed |= (left ? kRefLeft : 0) | (arc && in_lens(kernels[e], left, ref) ? kRefLens : 0) |
+                        (arc ? kArc : 0) | (kernels[e].side > 0 ? kCcw : 0);
+  }
+  leaves[leaf].inside = tree_ray_parity(ref);
+}
+
+RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (const Segment& s : loops[l].segments) m.segments.push_back(s), m.loop_of.push_back(l);
+  if (m.segments.size() >= Impl::kElementBits) throw Error("region boundary too large to index");
+  if (m.segments.empty()) return;
+  for (const Segment& s : m.segments) {
+    m.kernels.push_back(make_kernel(s));
+    m.boxes.push_back(bounding_box(s));
+    m.ends.push_back(s.start), m.ends.push_back(s.end);
+  }
+  // Pad the boxes a little beyond rounding, so pruning by box never drops
+  // an element that a direct computation would count.
+  double scale = 0;
+  for (const Box& b : m.boxes)
+    scale = std::max({scale, std::abs(b.min_x), std::abs(b.min_y), std::abs(b.max_x), std::abs(b.max_y)});
+  const double pad = 1e-12 * scale;
+  for (Box& b : m.boxes) b = {b.min_x - pad, b.min_y - pad, b.max_x + pad, b.max_y + pad};
+  m.order.resize(m.segments.size());
+  for (std::uint32_t i = 0; i < m.order.size(); ++i) m.order[i] = i;
+  m.nodes.reserve(m.segments.size());
+  m.build_node(0, static_cast<std::uint32_t>(m.order.size()));
+  m.build_grid();
+  if (m.nx == 0) return;
+  m.stamp.assign(m.segments.size(), 0);
+  m.near.resize(m.segments.size());
+  m.build_covers();
+  for (std::size_t cell = 0; cell < m.coarse.size(); ++cell)
+    for (std::uint32_t y = 0; y < m.coarse[cell].split; ++y)
+      for (std::uint32_t x = 0; x < m.coarse[cell].split; ++x) m.build_leaf(cell, x, y);
+  m.stamp = {}, m.near = {}, m.far2 = {}, m.scratch = {};
+}
+
+}  // namespace tk::cad

@@ -1,0 +1,231 @@
+/// @file region_index_impl.hpp
+/// @brief The inside of RegionIndex (see region_distance.cpp for the
+/// design), shared by its query side (region_distance.cpp) and its build
+/// side (region_index_build.cpp). Private to those two files.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "cad/region_distance.hpp"
+#include "cad/segment_geometry.hpp"
+
+namespace tk::cad {
+namespace region_index {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+// Tuned on bench_region_query's gear; see the file comment.
+constexpr double kCoarseCellsPerElement = 1;
+constexpr double kLeafCovers = 1;           // elements touching a leaf, about
+constexpr double kLeafCandidates = 6;       // elements that may be nearest in a leaf, about
+constexpr double kMaxListSplit = 2;         // splits of a cell for that, at most
+constexpr std::size_t kMaxCandidates = 64;  // elements listed per leaf, at most
+constexpr int kRefineDepth = 3;             // quarterings of a leaf while pruning its list
+constexpr std::size_t kRefineLimit = 1024;  // longer lists are not pruned
+constexpr std::size_t kWideWindow = 4 * kMaxCandidates;  // longer windows are not refined at all
+
+/// An element prepared for queries. Arcs live in their chord frame as in
+/// segment_geometry.cpp: local u along the chord from its midpoint, v
+/// across it, mirrored so the arc bulges toward -v; the centre is at
+/// (0, centre offset), the ends at (+-half chord, 0).
+struct alignas(64) Kernel {  // one cache line
+  double x = 0, y = 0;    ///< line: start; arc: chord midpoint
+  double dx = 0, dy = 0;  ///< line: end - start; arc: unit chord direction
+  double k0 = 0;          ///< line: 1 / |end - start|^2; arc: half chord
+  double k1 = 0, k2 = 0;  ///< arc: centre offset, radius
+  double side = 0;        ///< 0 line, +1 counter-clockwise arc, -1 clockwise
+};
+
+inline Kernel make_kernel(const Segment& s) {
+  Kernel k;
+  const double dx = s.end.x - s.start.x, dy = s.end.y - s.start.y;
+  if (!is_arc(s)) {
+    const double length2 = dx * dx + dy * dy;
+    k.x = s.start.x, k.y = s.start.y, k.dx = dx, k.dy = dy, k.k0 = length2 > 0 ? 1 / length2 : 0;
+    return k;
+  }
+  const double chord = std::sqrt(dx * dx + dy * dy), b = std::abs(s.bulge);
+  k.x = (s.start.x + s.end.x) / 2, k.y = (s.start.y + s.end.y) / 2;
+  k.dx = chord > 0 ? dx / chord : 1, k.dy = chord > 0 ? dy / chord : 0;
+  k.k0 = chord / 2;
+  k.k1 = chord * (1 - b * b) / (4 * b);
+  k.k2 = chord * (1 + b * b) / (4 * b);
+  k.side = s.bulge > 0 ? 1 : -1;
+  return k;
+}
+
+inline void to_local(const Kernel& k, Point p, double& u, double& v) {
+  const double px = p.x - k.x, py = p.y - k.y;
+  u = px * k.dx + py * k.dy;
+  v = k.side * (py * k.dx - px * k.dy);
+}
+
+/// Is the direction from the arc's centre to local (u, v) within its sweep?
+inline bool in_sweep(const Kernel& k, double u, double v) { return k.k1 * (k.k0 - std::abs(u)) - v * k.k0 >= 0; }
+
+inline double distance2(const Kernel& k, Point p) {
+  if (k.side == 0) {
+    const double px = p.x - k.x, py = p.y - k.y;
+    const double t = std::clamp((px * k.dx + py * k.dy) * k.k0, 0.0, 1.0);
+    const double ex = px - t * k.dx, ey = py - t * k.dy;
+    return ex * ex + ey * ey;
+  }
+  double u, v;
+  to_local(k, p, u, v);
+  if (in_sweep(k, u, v)) {
+    // rho - r as (rho^2 - r^2) / (rho + r): no cancellation for huge radii.
+    const double wv = v - k.k1;
+    const double excess = (u * u + v * v - 2 * v * k.k1 - k.k0 * k.k0) / (std::sqrt(u * u + wv * wv) + k.k2);
+    return excess * excess;
+  }
+  const double e = std::abs(u) - k.k0;
+  return e * e + v * v;
+}
+
+/// The nearest point of the element whose ends are ends[0], ends[1] (those exactly).
+inline Point nearest_on(const Kernel& k, const Point* ends, Point p) {
+  if (k.side == 0) {
+    const double t = std::clamp(((p.x - k.x) * k.dx + (p.y - k.y) * k.dy) * k.k0, 0.0, 1.0);
+    return t <= 0 ? ends[0] : t >= 1 ? ends[1] : Point{k.x + t * k.dx, k.y + t * k.dy};
+  }
+  double u, v;
+  to_local(k, p, u, v);
+  const double wv = v - k.k1, rho = std::sqrt(u * u + wv * wv);
+  // At (or within rounding of) the centre the direction is noise and every
+  // point of the arc is as near: take an end.
+  if (!in_sweep(k, u, v) || rho <= 1e-9 * k.k2) return ends[u > 0 ? 1 : 0];
+  const double excess = (u * u + v * v - 2 * v * k.k1 - k.k0 * k.k0) / (rho + k.k2);
+  const double nu = u - excess * u / rho, nv = v - excess * wv / rho;
+  if (!in_sweep(k, nu, nv)) return ends[u > 0 ? 1 : 0];  // rounding at the sweep's edge
+  return {k.x + nu * k.dx - nv * k.side * k.dy, k.y + nu * k.dy + nv * k.side * k.dx};
+}
+
+inline bool in_circle(const Kernel& k, Point p) {
+  double u, v;
+  to_local(k, p, u, v);
+  return u * u + v * v - 2 * v * k.k1 - k.k0 * k.k0 < 0;
+}
+
+/// p in the region between an arc and its chord; `left` is left_of(start, end, p).
+inline bool in_lens(const Kernel& k, bool left, Point p) { return (k.side > 0 ? !left : left) && in_circle(k, p); }
+
+/// Crossing parity of the ray from p toward +x of the element from a to b
+/// (the rules of crosses_ray()).
+inline bool ray_parity(const Kernel& k, Point a, Point b, Point p) {
+  const bool straddles = (a.y > p.y) != (b.y > p.y);
+  if (k.side == 0) return straddles && left_of(a, b, p) == (b.y > a.y);
+  const bool left = left_of(a, b, p);
+  return (straddles && left == (b.y > a.y)) != in_lens(k, left, p);
+}
+
+/// Crossing parity of the segment from c to p: the element's ends are
+/// sided by left_of(c, p, end), c and p by left_of(start, end, .) as in
+/// the ray test (c_left and c_lens precomputed). An arc crosses as often
+/// as its chord, plus once for each of c and p inside its lens.
+/// `arc` and `ccw` describe the element, so that a line needs no kernel.
+inline bool segment_parity(const Kernel& k, Point a, Point b, bool arc, bool ccw, Point c, Point p, bool c_left,
+                           bool c_lens) {
+  const bool p_left = left_of(a, b, p);
+  const bool chord = c_left != p_left && left_of(c, p, a) != left_of(c, p, b);
+  if (!arc) return chord;
+  const bool p_lens = (ccw ? !p_left : p_left) && in_circle(k, p);
+  return (chord != c_lens) != p_lens;
+}
+
+/// The largest float not above d, and the smallest not below.
+inline float float_below(double d) {
+  float f = static_cast<float>(d);
+  if (static_cast<double>(f) > d) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+inline float float_above(double d) { return -float_below(-d); }
+
+inline double box_distance2(const Box& b, Point p) {
+  const double dx = std::max({b.min_x - p.x, 0.0, p.x - b.max_x});
+  const double dy = std::max({b.min_y - p.y, 0.0, p.y - b.max_y});
+  return dx * dx + dy * dy;
+}
+
+inline Box merge(const Box& a, const Box& b) {
+  return {std::min(a.min_x, b.min_x), std::min(a.min_y, b.min_y), std::max(a.max_x, b.max_x),
+          std::max(a.max_y, b.max_y)};
+}
+
+}  // namespace region_index
+
+using namespace region_index;
+
+struct RegionIndex::Impl {
+  struct Node {  // of the box tree; its left child is the next node
+    Box box;
+    std::uint32_t first = 0, count = 0, right = 0;  // count > 0: leaf over order[first, first + count)
+  };
+  struct Coarse {  // a grid cell, split into split x split leaves numbered from first_leaf
+    std::uint32_t first_leaf, split;
+  };
+  struct Candidate {
+    float key = INFINITY;  // the element's distance from the leaf centre, rounded down
+    std::uint32_t element = 0;
+  };
+  static constexpr std::size_t kHead = 4;
+  struct alignas(64) Leaf {  // one cache line; leaves[i + 1].candidates / .covers end leaf i's lists
+    std::uint32_t candidates = 0;  // the list after the head
+    std::uint32_t covers : 31 = 0, inside : 1 = 0;  // inside: whether ref is
+    float complete = 0;  // every element that can win and is nearer the centre than this is listed
+    float nearest = 0;   // the centre's distance to the boundary, rounded up
+    Point ref;           // a point of the leaf clear of the boundary
+    Candidate head[kHead];  // the list's first entries (key infinity: none), at hand with the rest
+  };
+  struct Cover {  // an element that may touch a leaf, with its ends at hand
+    Point start, end;
+    std::uint32_t packed;  // element | kRefLeft | kRefLens | kArc | kCcw
+  };
+  // left_of / in_lens at the leaf's reference point, and the kind of element
+  static constexpr std::uint32_t kRefLeft = 1u << 31, kRefLens = 1u << 30, kArc = 1u << 29, kCcw = 1u << 28;
+  static constexpr std::uint32_t kElementBits = kCcw - 1;
+
+  std::vector<Segment> segments;
+  std::vector<std::size_t> loop_of;
+  std::vector<Kernel> kernels;
+  std::vector<Point> ends;  // start and end of each element, compact
+  std::vector<Box> boxes;
+  std::vector<Node> nodes;
+  std::vector<std::uint32_t> order;
+  std::vector<Coarse> coarse;
+  std::vector<Leaf> leaves;
+  std::vector<Candidate> candidates;
+  std::vector<Cover> covers;
+  double ox = 0, oy = 0, size = 1, inv_size = 1;
+  std::size_t nx = 0, ny = 0;
+
+  std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);
+  void tree_nearest(Point p, double& best2, std::uint32_t& best) const;
+  void tree_within(Point p, double radius, std::vector<std::pair<double, std::uint32_t>>& out) const;
+  bool tree_ray_parity(Point p) const;
+  void build_grid();
+  void build_covers();
+  void build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y);
+  std::vector<std::uint32_t> winners(Point c, double half, int depth, double& nearest);
+  void refine(Point q, double half, std::size_t begin, std::size_t end, int depth, std::vector<std::uint32_t>& out);
+
+  // Scratch while building: a mark per element, distances from a centre,
+  // and refine()'s lists, each square's after its parent's.
+  std::vector<std::uint32_t> stamp;
+  std::uint32_t mark = 0;
+  std::vector<double> near, far2;
+  std::vector<std::uint32_t> scratch;
+  double leaf_nearest(std::size_t leaf, Point centre, Point p, std::uint32_t& best) const;
+  /// Centre of leaf (x, y) of cell (ix, iy), the same point for building and querying.
+  Point centre(std::size_t ix, std::size_t iy, std::uint32_t split, std::uint32_t x, std::uint32_t y) const {
+    return {ox + (double(ix) + (x + 0.5) / split) * size, oy + (double(iy) + (y + 0.5) / split) * size};
+  }
+  RegionQuery answer(Point p, double best2, std::uint32_t best, bool inside) const {
+    const double d = std::sqrt(best2);
+    return {inside ? -d : d, nearest_on(kernels[best], &ends[2 * best], p), best};
+  }
+};
+
+}  // namespace tk::cad
