@@ -167,18 +167,19 @@ std::vector<std::uint32_t> RegionIndex::Impl::winners(Point c, double half, int 
   tree_nearest(c, best2, best);
   nearest = std::sqrt(best2);
   std::vector<std::pair<double, std::uint32_t>> found;
-  tree_within(c, (nearest + 2 * std::sqrt(2.0) * half) * (1 + 1e-9), found);
+  const double reach = (nearest + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
   std::vector<std::uint32_t> listed;
-  for (const auto& [d, e] : found) near[e] = d;
-  if (found.size() > kWideWindow) {
+  if (!tree_within(c, reach, found, kWideWindow)) {
     // Many elements nearly equidistant (deep inside a finely divided
-    // outline): refining would cost more than it saves. The nearest
-    // kMaxCandidates + 1 by distance from c keep the leaf's promise (every
-    // element nearer than the last listed is listed); queries beyond fall
-    // back to the tree.
-    std::nth_element(found.begin(), found.begin() + kMaxCandidates, found.end());
-    for (std::size_t i = 0; i <= kMaxCandidates; ++i) listed.push_back(found[i].second);
+    // outline): refining, even gathering them all, would cost more than it
+    // saves. The nearest kMaxCandidates + 1 to c keep the leaf's promise
+    // (every element nearer than the last listed is listed); queries
+    // beyond fall back to the tree.
+    found.clear();
+    tree_k_nearest(c, kMaxCandidates + 1, found);
+    for (const auto& [d, e] : found) near[e] = d, listed.push_back(e);
   } else {
+    for (const auto& [d, e] : found) near[e] = d;
     scratch.clear();
     for (const auto& entry : found) scratch.push_back(entry.second);
     ++mark;

@@ -203,7 +203,12 @@ struct RegionIndex::Impl {
 
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);
   void tree_nearest(Point p, double& best2, std::uint32_t& best) const;
-  void tree_within(Point p, double radius, std::vector<std::pair<double, std::uint32_t>>& out) const;
+  /// The elements within `radius` of p, (distance, element); false (out
+  /// unfinished) as soon as there are more than `cap`.
+  bool tree_within(Point p, double radius, std::vector<std::pair<double, std::uint32_t>>& out,
+                   std::size_t cap = SIZE_MAX) const;
+  /// The k elements nearest to p (fewer when there are fewer), unordered.
+  void tree_k_nearest(Point p, std::size_t k, std::vector<std::pair<double, std::uint32_t>>& out) const;
   bool tree_ray_parity(Point p) const;
   void build_grid();
   void build_covers();

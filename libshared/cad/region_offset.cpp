@@ -363,7 +363,12 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     // The region is the loops' even-odd interior (as RegionIndex sees it),
     // also where a drawing's loops cross themselves or each other; Clipper
     // offsets by orientation, so hand it the even-odd union first.
-    ClipperLib::SimplifyPolygons(paths, ClipperLib::pftEvenOdd);
+    // (A union, not SimplifyPolygons: its strictly-simple pass is quadratic on spiky outlines.)
+    {
+      ClipperLib::Clipper even_odd;
+      even_odd.AddPaths(paths, ClipperLib::ptSubject, true);
+      even_odd.Execute(ClipperLib::ctUnion, paths, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+    }
     ClipperLib::ClipperOffset offsetter;
     offsetter.ArcTolerance = options.tolerance / kClipperUnitMm;
     offsetter.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
