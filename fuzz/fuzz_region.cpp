@@ -55,9 +55,11 @@ constexpr double kContourTolerance = 10 * kOffsetTolerance;
 
 bool small_and_bounded(const Drawing& d) {
   if (d.segments.size() > kMaxSegments) return false;
-  for (const Segment& s : d.segments)
-    for (double v : {s.start.x, s.start.y, s.end.x, s.end.y})
+  for (const Segment& s : d.segments) {
+    const Box b = bounding_box(s);  // an arc's, not just its ends
+    for (double v : {b.min_x, b.min_y, b.max_x, b.max_y})
       if (!(std::abs(v) <= kMaxCoordinate)) return false;
+  }
   return true;
 }
 

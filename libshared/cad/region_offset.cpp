@@ -3,6 +3,7 @@
 /// recovered from the drawing's features, and the stretches left uncut.
 #include "cad/region_offset.hpp"
 
+#include <fmt/format.h>
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
@@ -18,6 +19,7 @@ namespace {
 
 constexpr double kClipperUnitMm = 1e-6;  // 1 nm integers: ±4.6e12 mm fit Clipper's 62-bit range
 constexpr double kLargestCoordinateMm = 1e9;
+constexpr double kLargestPartMm = 1e6;  // a kilometre: beyond it, the units are wrong, not the machine big
 
 Point operator+(Point a, Point b) { return {a.x + b.x, a.y + b.y}; }
 Point operator-(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
@@ -355,6 +357,16 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     throw Error("the tool radius must be a finite number >= 0");
   RegionOffset result;
   const bool inside = options.side == MachiningSide::inside;
+  // The offset's work grows with the part's size over the tolerance: refuse absurd sizes (an arc of
+  // bulge 1e7 between two near points is a circle hundreds of kilometres across).
+  for (const Loop& loop : drawn)
+    for (const Segment& s : loop.segments) {
+      const Box b = bounding_box(s);
+      if (!(b.max_x - b.min_x <= kLargestPartMm && b.max_y - b.min_y <= kLargestPartMm))
+        throw Error(fmt::format("an element spans more than 1 km ({:g} mm): too large to machine; are the units right?",
+                                std::max(b.max_x - b.min_x, b.max_y - b.min_y)),
+                    {"", s.source_line});
+    }
   if (options.tool_radius == 0 || drawn.empty()) {
     result.loops = drawn;
   } else {

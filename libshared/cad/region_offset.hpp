@@ -53,7 +53,8 @@ struct RegionOffset {
 
 /// `drawn` are the drawing's loops (from build_loops, material on the
 /// left); `index` is a RegionIndex over the same loops. Throws Error for a
-/// drawing too large for Clipper's integers.
+/// drawing too large for Clipper's integers, or with an element more than
+/// a kilometre across (the Location's line is the element's DXF line).
 RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& index, const OffsetOptions& options);
 
 /// The tool's side of the prohibited region: the signed distance (positive

@@ -171,7 +171,12 @@ int main(int argc, char** argv) {
     offset_options.tool_radius = tool_radius;
     offset_options.side = machining;
     offset_options.tolerance = offset_tolerance;
-    const tk::cad::RegionOffset region = tk::cad::offset_region(found.loops, *part.index, offset_options);
+    tk::cad::RegionOffset region;
+    try {
+      region = tk::cad::offset_region(found.loops, *part.index, offset_options);
+    } catch (const tk::Error& e) {
+      throw tk::Error(e.what(), {name, e.where().line});  // the library knows the DXF line, not the file
+    }
     if (region.polygon_loops > 0)
       warn(std::to_string(region.polygon_loops) + " offset loops stay as polygons (the exact lines and arcs did not check out)");
     if (region.loops.empty())
