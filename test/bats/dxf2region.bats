@@ -438,6 +438,11 @@ print("ok")' <<< "$output"
   assert_output --regexp "^dxf2region: huge.dxf:[0-9]+: "
   run dxf2region - < "$DXF/plate.dxf"
   assert_success
+  # A square 2 km across (metres taken for millimetres?) is refused with its line.
+  printf '0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n0\n20\n0\n10\n2e6\n20\n0\n10\n2e6\n20\n2e6\n10\n0\n20\n2e6\n0\nENDSEC\n0\nEOF\n' > huge_part.dxf
+  run dxf2region -q huge_part.dxf --tool-radius 1
+  assert_failure 1
+  assert_output "dxf2region: huge_part.dxf:5: an element spans more than 1 km (2e+06 mm): too large to machine; are the units right?"
 }
 
 @test "the fuzzers' regressions run clean: exit 0, or exit 1 with a one-line error" {
