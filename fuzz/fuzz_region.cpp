@@ -112,7 +112,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     offset_options.tolerance = kOffsetTolerance;
     const RegionOffset region = set.loops.empty() ? RegionOffset{} : offset_region(set.loops, index, offset_options);
     check_closed(region.loops, "offset");
-    const RegionIndex contour(region.loops);
+    const RegionIndex* contour = region.contour.get();  // null for a zero radius: the barrier is then the drawing itself
     // Loops that touch or overlap themselves or each other (a vertex on an
     // edge, an edge drawn twice) bound hairs of no area: the distance keeps
     // the tool off them, Clipper's union drops them. The oracles on the
@@ -127,7 +127,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         invariant_failed("index", "at (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")");
       if (set.loops.empty()) continue;
       (void)guard_query(index, p, radius, side);  // the push-out barrier: may end inside in a narrow slot
-      const GuardAnswer guard = guard_query(index, p, radius, side, &contour);
+      const GuardAnswer guard = guard_query(index, p, radius, side, contour);
       const double after = guard_query(index, guard.clamped, radius, side).distance;
       if (oracle_enabled("barrier") && clean && !region.loops.empty() && after < -kContourTolerance)
         invariant_failed("barrier", "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ") clamped to (" +

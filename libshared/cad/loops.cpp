@@ -205,14 +205,6 @@ class LoopParity {
   std::vector<std::size_t> start_, members_;
 };
 
-void reverse(std::vector<Segment>& loop) {
-  std::reverse(loop.begin(), loop.end());
-  for (Segment& s : loop) {
-    std::swap(s.start, s.end);
-    s.bulge = -s.bulge;
-  }
-}
-
 /// Ends lying on another segment's interior: segments are cut into pieces
 /// of about the mean length and hashed by cell, so long lines cost no more
 /// than short ones.
@@ -261,6 +253,22 @@ void find_t_junctions(const std::vector<Segment>& kept, const std::vector<bool>&
 }
 
 }  // namespace
+
+void reverse_chain(std::vector<Segment>& chain) {
+  std::reverse(chain.begin(), chain.end());
+  for (Segment& s : chain) {
+    std::swap(s.start, s.end);
+    s.bulge = -s.bulge;
+  }
+}
+
+std::vector<Point> flatten_loop(const Loop& loop, double tolerance) {
+  std::vector<Point> points;
+  if (loop.segments.empty()) return points;
+  points.push_back(loop.segments.front().start);
+  for (const Segment& s : loop.segments) flatten(s, tolerance, points);
+  return points;
+}
 
 double signed_area(const std::vector<Segment>& loop) {
   if (loop.empty()) return 0;
@@ -401,7 +409,7 @@ LoopSet build_loops(const std::vector<Segment>& segments, double join_tolerance)
   }
   for (Found& f : found)
     if ((f.loop.area > 0) == f.loop.is_hole()) {
-      reverse(f.loop.segments);
+      reverse_chain(f.loop.segments);
       f.loop.area = -f.loop.area;
     }
   std::vector<std::size_t> order(found.size());

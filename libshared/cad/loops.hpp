@@ -54,6 +54,13 @@ LoopSet build_loops(const std::vector<Segment>& segments, double join_tolerance)
 /// exactly: > 0 when it runs counter-clockwise.
 double signed_area(const std::vector<Segment>& loop);
 
+/// The same path travelled the other way: order reversed, ends swapped, bulges negated.
+void reverse_chain(std::vector<Segment>& chain);
+
+/// The loop as a closed polyline (first point repeated at the end), every
+/// chord within `tolerance` of its curve.
+std::vector<Point> flatten_loop(const Loop& loop, double tolerance);
+
 /// Midpoints of the loops' edges drawn twice (the same ends, either way
 /// round, the same curve): two loops sharing an edge, or a loop doubling
 /// back on itself. Even-odd, such an edge bounds nothing, yet the distance

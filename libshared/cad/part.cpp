@@ -12,16 +12,17 @@
 namespace tk::cad {
 namespace {
 
-const std::pair<const char*, double> kUnits[] = {
-    {"mm", 1}, {"cm", 10}, {"dm", 100}, {"m", 1000}, {"um", 1e-3}, {"in", 25.4}, {"inch", 25.4}, {"ft", 304.8}, {"mil", 0.0254},
+/// Unit names for --units, as their $INSUNITS codes (one table of lengths: units.cpp).
+const std::pair<const char*, int> kUnits[] = {
+    {"mm", 4}, {"cm", 5}, {"dm", 14}, {"m", 6}, {"um", 13}, {"in", 1}, {"inch", 1}, {"ft", 2}, {"mil", 9},
 };
 
 }  // namespace
 
 double millimetres_per_named_unit(const std::string& name) {
   std::string known;
-  for (const auto& [unit, mm] : kUnits) {
-    if (name == unit) return mm;
+  for (const auto& [unit, code] : kUnits) {
+    if (name == unit) return millimetres_per_unit(code);
     known += known.empty() ? unit : std::string(", ") + unit;
   }
   throw Error("unknown unit '" + name + "' (known: " + known + ")");

@@ -162,8 +162,7 @@ Segment piece(const Primitive& prim, Point from, Point to, const std::vector<Poi
 }
 
 ClipperLib::Path to_clipper(const Loop& loop, double tolerance) {
-  std::vector<Point> points{loop.segments.front().start};
-  for (const Segment& s : loop.segments) flatten(s, tolerance, points);
+  const std::vector<Point> points = flatten_loop(loop, tolerance);
   ClipperLib::Path path;
   path.reserve(points.size());
   for (const Point& p : points) {
@@ -265,24 +264,8 @@ std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const Drawi
   return loop;
 }
 
-double signed_area(const Loop& loop) {
-  double area = 0;
-  for (const Segment& s : loop.segments) {
-    area += 0.5 * cross(s.start, s.end);
-    if (is_arc(s)) {
-      const ArcShape arc = arc_shape(s);
-      area += 0.5 * arc.radius * arc.radius * (arc.sweep - std::sin(arc.sweep));
-    }
-  }
-  return area;
-}
-
 void reverse(Loop& loop) {
-  std::reverse(loop.segments.begin(), loop.segments.end());
-  for (Segment& s : loop.segments) {
-    std::swap(s.start, s.end);
-    s.bulge = -s.bulge;
-  }
+  reverse_chain(loop.segments);
   loop.area = -loop.area;
 }
 
@@ -290,14 +273,13 @@ void reverse(Loop& loop) {
 /// tool's contour: material the tool cannot reach. Sampled every R / 8
 /// along each element; the deepest point of a span is then refined by a
 /// golden-section search between its neighbouring samples.
-std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const std::vector<Loop>& contour, double radius,
+std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIndex* contour, double radius,
                                   const OffsetOptions& options) {
   std::vector<UncutSpan> spans;
   if (radius <= 0) return spans;
-  const RegionIndex contour_index(contour);
   const double step = std::max(radius / 8, 10 * options.tolerance);
   auto gap_at = [&](const Segment& s, double t) {
-    return contour.empty() ? radius + 1 : std::abs(contour_index.query(point_at(s, t)).distance) - radius;
+    return contour ? std::abs(contour->query(point_at(s, t)).distance) - radius : radius + 1;
   };
   for (const Loop& loop : drawn) {
     const std::size_t first_of_loop = spans.size();
@@ -399,15 +381,18 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
       Loop loop = exact ? std::move(*exact) : polygon_loop(polygon);
       loop.parent = parent;
       loop.depth = parent < 0 ? 0 : result.loops[parent].depth + 1;
-      loop.area = signed_area(loop);
+      loop.area = signed_area(loop.segments);
       if ((loop.area < 0) != loop.is_hole()) reverse(loop);
       const int self = static_cast<int>(result.loops.size());
       result.loops.push_back(std::move(loop));
       for (const ClipperLib::PolyNode* child : node->Childs) pending.push_back({child, self});
     }
   }
-  result.uncut = find_uncut(drawn, result.loops, options.tool_radius, options);
-  // Inside machining: the region is everything but the shrunk pocket, so the loops turn round.
+  // One index over the contour serves the uncut search here and the barrier points of guard_query.
+  if (options.tool_radius > 0 && !result.loops.empty()) result.contour = std::make_unique<RegionIndex>(result.loops);
+  result.uncut = find_uncut(drawn, result.contour.get(), options.tool_radius, options);
+  // Inside machining: the region is everything but the shrunk pocket, so the loops turn round
+  // (the index does not care: its inside is even-odd and its distances have no direction).
   if (inside)
     for (Loop& loop : result.loops) reverse(loop);
   return result;

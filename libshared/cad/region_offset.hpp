@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "cad/loops.hpp"
@@ -49,6 +50,9 @@ struct RegionOffset {
   std::vector<Loop> loops;
   std::vector<UncutSpan> uncut;
   std::size_t polygon_loops = 0;  ///< loops left as Clipper's polygon
+  /// An index over `loops` (for guard_query's barrier points), built for
+  /// the uncut search; null when the tool radius is 0 or there is no loop.
+  std::unique_ptr<RegionIndex> contour;
 };
 
 /// `drawn` are the drawing's loops (from build_loops, material on the

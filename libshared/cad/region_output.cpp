@@ -31,8 +31,6 @@ Record loop_record(const Loop& loop, std::size_t number, double flatten_toleranc
   record["area_mm2"] = loop.area;
   double length = 0;
   Record elements = Record::array();
-  std::vector<Point> polyline;
-  if (!loop.segments.empty()) polyline.push_back(loop.segments.front().start);
   for (const Segment& s : loop.segments) {
     length += segment_length(s);
     Record e;
@@ -53,12 +51,11 @@ Record loop_record(const Loop& loop, std::size_t number, double flatten_toleranc
       e["dxf_line"] = s.source_line;
     }
     elements.push_back(std::move(e));
-    flatten(s, flatten_tolerance, polyline);
   }
   record["length_mm"] = length;
   record["elements"] = std::move(elements);
   Record points = Record::array();
-  for (const Point& p : polyline) points.push_back(Record::array({p.x, p.y}));
+  for (const Point& p : flatten_loop(loop, flatten_tolerance)) points.push_back(Record::array({p.x, p.y}));
   record["polyline"] = std::move(points);
   return record;
 }

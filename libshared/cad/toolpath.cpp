@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
 
 #include "cad/segment_geometry.hpp"
@@ -40,13 +39,7 @@ std::string toolpath_gcode(const std::vector<Loop>& loops, const ToolpathOptions
     std::vector<Segment> path = loops[i].segments;
     if (path.empty()) continue;
     // The loops have the region (material) on their left: climb milling goes the other way round.
-    if (options.climb) {
-      std::reverse(path.begin(), path.end());
-      for (Segment& s : path) {
-        std::swap(s.start, s.end);
-        s.bulge = -s.bulge;
-      }
-    }
+    if (options.climb) reverse_chain(path);
     out += fmt::format("(loop {}{})\n", i, loops[i].is_hole() ? ", a hole" : "");
     out += "G0 X" + mm(path.front().start.x) + " Y" + mm(path.front().start.y) + "\n";
     out += "G1 Z" + mm(options.cut_z) + " F" + mm(options.plunge_feed) + "\n";

@@ -267,7 +267,7 @@ want = [json.loads(l) for l in open("want.jsonl")]
 summary = got.pop()
 assert len(got) == len(want) == 3000
 for g, w in zip(got, want):
-    assert g["id"] == w and False or True
+    assert (g["x"], g["y"]) == (w["x"], w["y"]), (g, w)
     assert abs(g["distance"] - w["expected"]) < 1e-9, (g, w)
     assert g["inside"] == w["inside"], (g, w)
 invasions = sum(w["inside"] for w in want)

@@ -210,15 +210,24 @@ TEST(GuardQuery, BarrierIsTheNearestAllowedPoint) {
 
 TEST(GuardQuery, InASlotNarrowerThanTheToolTheBarrierIsTheContour) {
   const Offset o = offset(polygon({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
-  const tk::cad::RegionIndex contour(o.result.loops);
-  for (Point p : {Point{30, 30}, Point{29, 39}, Point{30.2, 41.5}}) {
-    const auto a = tk::cad::guard_query(o.index, p, 2, MachiningSide::outside, &contour);
+  ASSERT_TRUE(o.result.contour);
+  // Over the slot's mouth the region's boundary is the two corner arcs (radius 2 about (28.5, 40) and
+  // (31.5, 40)), which meet at the dent (30, 40 + sqrt(4 - 1.5^2)). From deep in the slot, and from
+  // beside the left corner's arc below the dent, the nearest allowed point is the dent.
+  const Point dent{30, 40 + std::sqrt(1.75)};
+  for (Point p : {Point{30, 30}, Point{29, 39}}) {
+    const auto a = tk::cad::guard_query(o.index, p, 2, MachiningSide::outside, o.result.contour.get());
     EXPECT_LT(a.distance, 0);
-    // The barrier point is allowed (on the region's boundary), and nearer to p than any other boundary point.
-    EXPECT_NEAR(tk::cad::guard_query(o.index, a.clamped, 2, MachiningSide::outside).distance, 0, 1e-9);
-    EXPECT_NEAR(std::hypot(a.clamped.x - p.x, a.clamped.y - p.y), std::abs(contour.query(p).distance), 1e-12);
-    EXPECT_GT(a.clamped.y, 40);  // out of the slot: nowhere in it is allowed
+    EXPECT_NEAR(a.clamped.x, dent.x, 1e-9);
+    EXPECT_NEAR(a.clamped.y, dent.y, 1e-9);
   }
+  // Just inside the right corner's arc above the dent: pushed out along the radius from (31.5, 40).
+  const Point p{30.2, 41.5};
+  const double r = std::hypot(p.x - 31.5, p.y - 40);
+  const auto a = tk::cad::guard_query(o.index, p, 2, MachiningSide::outside, o.result.contour.get());
+  EXPECT_NEAR(a.distance, r - 2, 1e-12);
+  EXPECT_NEAR(a.clamped.x, 31.5 + 2 * (p.x - 31.5) / r, 1e-9);
+  EXPECT_NEAR(a.clamped.y, 40 + 2 * (p.y - 40) / r, 1e-9);
 }
 
 TEST(InvasionGuard, LatencyAwareStopFromTheApproachSpeed) {

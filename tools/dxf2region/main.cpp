@@ -37,17 +37,6 @@ void require_positive(double value, const char* option, bool zero_allowed = fals
     throw tk::UsageError(std::string(option) + " must be a finite number " + (zero_allowed ? ">= 0" : "> 0"));
 }
 
-/// Closed polylines of the region's boundary (region on the left), for the simulation.
-std::vector<std::vector<tk::cad::Point>> boundary_polylines(const std::vector<tk::cad::Loop>& loops, double tolerance) {
-  std::vector<std::vector<tk::cad::Point>> out;
-  for (const tk::cad::Loop& loop : loops) {
-    std::vector<tk::cad::Point> points{loop.segments.front().start};
-    for (const tk::cad::Segment& s : loop.segments) tk::cad::flatten(s, tolerance, points);
-    out.push_back(std::move(points));
-  }
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -219,8 +208,10 @@ int main(int argc, char** argv) {
       options.strokes = strokes;
       options.seed = seed;
       const auto guard = [&](tk::cad::Point p) { return tk::cad::guard_query(*part.index, p, tool_radius, machining).distance; };
-      const auto results = tk::cad::simulate_invasions(guard, boundary_polylines(region.loops, offset_tolerance * 10),
-                                                       number_list(tolerances_text, "--tolerances"), options);
+      std::vector<std::vector<tk::cad::Point>> boundary;  // the region on the left of each
+      for (const tk::cad::Loop& loop : region.loops) boundary.push_back(tk::cad::flatten_loop(loop, offset_tolerance * 10));
+      const auto results =
+          tk::cad::simulate_invasions(guard, boundary, number_list(tolerances_text, "--tolerances"), options);
       for (const tk::cad::InvasionSimResult& r : results) {
         writer.write(tk::Record{{"guard", r.guard},
                                 {"tolerance_mm", r.tolerance_mm},
@@ -239,8 +230,7 @@ int main(int argc, char** argv) {
     }
     if (checking) {
       tk::cad::GuardOptions options{tool_radius, machining, latency, margin};
-      const tk::cad::RegionIndex contour(region.loops);
-      tk::cad::InvasionGuard guard(*part.index, options, &contour);
+      tk::cad::InvasionGuard guard(*part.index, options, region.contour.get());
       std::vector<std::string> fields{"inside", "distance", "clamped_x", "clamped_y", "element", "entity", "dxf_line", "approach_mm_s", "stop"};
       if (summary)  // CSV: the summary's columns too, empty in the positions' rows
         fields.insert(fields.end(), {"summary", "positions", "invasions", "deepest_invasion_mm", "deepest_x", "deepest_y", "closest_mm", "stops"});
