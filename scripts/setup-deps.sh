@@ -10,7 +10,7 @@ build_pkgs=(g++ cmake make pkg-config libcli11-dev libgmp-dev libeigen3-dev
 # Tests: unit tests, CLI tests, the PARI/GP and ezdxf oracles, sanitizer runtime.
 test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp python3 python3-ezdxf parallel)
 # Benchmarks: peers timed in the same run (never runtime dependencies).
-bench_pkgs=(libflint-dev primesieve)
+bench_pkgs=(libflint-dev primesieve libfuzzylite-dev)
 
 want=("${build_pkgs[@]}")
 case "${1:-build}" in

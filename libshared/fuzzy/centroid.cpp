@@ -21,26 +21,29 @@ struct Corners {
   std::array<double, 4> y;
 };
 
+/// Slopes of the three pieces between corners (0 for a vertical one: never used).
+std::array<double, 3> slopes(const Corners& c) {
+  std::array<double, 3> s{};
+  for (int k = 0; k < 3; ++k)
+    if (c.x[k + 1] > c.x[k]) s[k] = (c.y[k + 1] - c.y[k]) / (c.x[k + 1] - c.x[k]);
+  return s;
+}
+
 Corners corners(const ImpliedTerm& term, Implication implication) {
   const Trapezoid& p = term.shape;
   const double h = term.level;
-  if (implication == Implication::product) return {{p.a, p.b, p.c, p.d}, {0, h, h, 0}};
+  if (implication == Implication::product) return Corners{{p.a, p.b, p.c, p.d}, {0, h, h, 0}};
   // Clipped at h: the edges reach h a fraction h of the way up.
-  return {{p.a, p.a + h * (p.b - p.a), p.d - h * (p.d - p.c), p.d}, {0, h, h, 0}};
+  return Corners{{p.a, p.a + h * (p.b - p.a), p.d - h * (p.d - p.c), p.d}, {0, h, h, 0}};
 }
 
-/// The straight line a term follows on (l, r), an interval with none of the
-/// term's corners strictly inside: its values at l and r.
-std::array<double, 2> line_on(const Corners& c, double l, double r) {
-  if (r <= c.x[0] || l >= c.x[3]) return {0, 0};
-  for (int k = 0; k < 3; ++k) {
-    if (c.x[k] <= l && r <= c.x[k + 1] && c.x[k] < c.x[k + 1]) {
-      const double slope = (c.y[k + 1] - c.y[k]) / (c.x[k + 1] - c.x[k]);
-      return {c.y[k] + slope * (l - c.x[k]), c.y[k] + slope * (r - c.x[k])};
-    }
-  }
-  return {0, 0};  // not reached for a valid interval
-}
+struct Scratch {
+  std::vector<Corners> shapes;
+  std::vector<int> segment;  ///< per shape: the corner its current piece starts at (-1: before it)
+  std::vector<double> breaks;
+  std::vector<std::array<double, 2>> lines;
+  std::vector<std::array<double, 3>> slopes;
+};
 
 /// Adds the integrals of y and (x - ref) y over the segment (x0, y0)-(x1, y1).
 void integrate_piece(double x0, double y0, double x1, double y1, double ref, double& area, double& moment) {
@@ -100,29 +103,80 @@ CentroidResult discrete_centroid(std::span<const ImpliedTerm> terms, Implication
   return grid.centroid(terms, implication);
 }
 
+namespace {
+
+/// Integrates the envelope of `shapes` over [lo, hi] by sweeping their corners.
+void sweep(std::span<const Corners> shapes, double lo, double hi, double ref, Scratch& scratch, double& area,
+           double& moment) {
+  std::vector<int>& segment = scratch.segment;
+  std::vector<double>& breaks = scratch.breaks;
+  std::vector<std::array<double, 2>>& lines = scratch.lines;
+  scratch.slopes.clear();
+  for (const Corners& c : shapes) scratch.slopes.push_back(slopes(c));
+  breaks.clear();
+  breaks.push_back(lo);
+  breaks.push_back(hi);
+  for (const Corners& c : shapes)
+    for (double x : c.x)
+      if (x > lo && x < hi) breaks.push_back(x);
+  // Few points: insertion sort beats std::sort here.
+  for (std::size_t i = 1; i < breaks.size(); ++i)
+    for (std::size_t j = i; j > 0 && breaks[j] < breaks[j - 1]; --j) std::swap(breaks[j], breaks[j - 1]);
+  segment.assign(shapes.size(), -1);
+  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+    const double l = breaks[k], r = breaks[k + 1];
+    if (!(r > l)) continue;
+    // Every corner is a break, so on (l, r) each shape follows one straight piece.
+    lines.clear();
+    for (std::size_t j = 0; j < shapes.size(); ++j) {
+      const Corners& c = shapes[j];
+      int& p = segment[j];
+      while (p < 3 && c.x[p + 1] <= l) ++p;
+      if (p < 0 || p >= 3) continue;  // outside the term: 0
+      const double slope = scratch.slopes[j][p];
+      lines.push_back({c.y[p] + slope * (l - c.x[p]), c.y[p] + slope * (r - c.x[p])});
+    }
+    if (lines.size() == 1)
+      integrate_piece(l, lines[0][0], r, lines[0][1], ref, area, moment);
+    else if (!lines.empty())
+      integrate_envelope(lines, l, r, ref, area, moment);
+  }
+}
+
+}  // namespace
+
 CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication implication, double min, double max) {
   // Reused between calls: evaluation allocates nothing once warm.
-  thread_local std::vector<Corners> shapes;
-  thread_local std::vector<double> breaks;
-  thread_local std::vector<std::array<double, 2>> lines;
+  thread_local Scratch scratch;
+  std::vector<Corners>& shapes = scratch.shapes;
   shapes.clear();
-  breaks.assign({min, max});
-  for (const ImpliedTerm& t : terms) {
-    if (!(t.level > 0)) continue;
-    shapes.push_back(corners(t, implication));
-    for (double x : shapes.back().x)
-      if (x > min && x < max) breaks.push_back(x);
-  }
-  std::sort(breaks.begin(), breaks.end());
-  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  for (const ImpliedTerm& t : terms)
+    if (t.level > 0) shapes.push_back(corners(t, implication));
+  // By where they start, so that terms whose supports overlap come together.
+  if (shapes.size() > 1)
+    std::sort(shapes.begin(), shapes.end(), [](const Corners& a, const Corners& b) { return a.x[0] < b.x[0]; });
 
   const double ref = 0.5 * (min + max);  // moments about the middle keep their digits
   double area = 0, moment = 0;
-  lines.resize(shapes.size());
-  for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-    const double l = breaks[k], r = breaks[k + 1];
-    for (std::size_t j = 0; j < shapes.size(); ++j) lines[j] = line_on(shapes[j], l, r);
-    if (!lines.empty()) integrate_envelope(lines, l, r, ref, area, moment);
+  for (std::size_t first = 0; first < shapes.size();) {
+    // A cluster: the terms whose supports overlap the first one's, in a chain.
+    double end = shapes[first].x[3];
+    std::size_t last = first + 1;
+    while (last < shapes.size() && shapes[last].x[0] < end) end = std::max(end, shapes[last++].x[3]);
+    const double lo = shapes[first].x[0];
+    if (last == first + 1 && lo >= min && end <= max) {
+      // A lone term inside the range: a trapezoid of height h with corners
+      // a, b, c, d, area h (d + c - b - a) / 2 and first moment
+      // h (d^2 + dc + c^2 - b^2 - ba - a^2) / 6, taken about ref.
+      const Corners& t = shapes[first];
+      const double a = t.x[0] - ref, b = t.x[1] - ref, c = t.x[2] - ref, d = t.x[3] - ref, h = t.y[1];
+      area += 0.5 * h * (d + c - b - a);
+      moment += h / 6 * (d * d + d * c + c * c - b * b - b * a - a * a);
+    } else if (end > min && lo < max) {
+      sweep(std::span<const Corners>(shapes.data() + first, last - first), std::max(lo, min), std::min(end, max), ref,
+            scratch, area, moment);
+    }
+    first = last;
   }
   if (!(area > 0)) return {kNaN, 0};
   return {ref + moment / area, area};

@@ -115,6 +115,7 @@ Mamdani::Mamdani(const Engine& engine)
     out.first_level = level_count;
     for (const Term& t : v.terms) out.terms.push_back(t.points);
     out.grid = SampleGrid(v.min, v.max, v.defuzzifier.resolution);
+    for (const Trapezoid& t : out.terms) out.grid_terms.push_back(out.grid.prepare(t));
     level_count += out.terms.size();
     level_output_.insert(level_output_.end(), out.terms.size(), o);
     outputs_.push_back(std::move(out));
@@ -141,6 +142,8 @@ void Mamdani::set_defuzzifier(const Defuzzifier& defuzzifier) {
   for (CompiledOutput& out : outputs_) {
     out.defuzzifier = defuzzifier;
     out.grid = SampleGrid(out.min, out.max, defuzzifier.resolution);
+    out.grid_terms.clear();
+    for (const Trapezoid& t : out.terms) out.grid_terms.push_back(out.grid.prepare(t));
   }
 }
 
@@ -204,18 +207,17 @@ void Mamdani::evaluate(std::span<const double> inputs, std::span<double> outputs
   }
   for (std::size_t o = 0; o < outputs_.size(); ++o) {
     CompiledOutput& out = outputs_[o];
-    implied_.clear();
-    for (std::size_t t = 0; t < out.terms.size(); ++t) {
-      const double level = levels_[out.first_level + t];
-      if (level > 0) implied_.push_back({out.terms[t], level});
+    const std::span<const double> levels(levels_.data() + out.first_level, out.terms.size());
+    CentroidResult c{0, 0};
+    if (out.defuzzifier.kind == Defuzzifier::Kind::discrete) {
+      c = out.grid.centroid(out.grid_terms, levels, implication_);
+    } else {
+      implied_.clear();
+      for (std::size_t t = 0; t < out.terms.size(); ++t)
+        if (levels[t] > 0) implied_.push_back({out.terms[t], levels[t]});
+      if (!implied_.empty()) c = exact_centroid(implied_, implication_, out.min, out.max);
     }
-    if (implied_.empty()) {
-      outputs[o] = out.default_value;
-      continue;
-    }
-    const CentroidResult c = out.defuzzifier.kind == Defuzzifier::Kind::exact
-                                 ? exact_centroid(implied_, implication_, out.min, out.max)
-                                 : out.grid.centroid(implied_, implication_);
+    // No rule fired, or the fired terms have no area inside the range.
     outputs[o] = c.area > 0 ? c.centroid : out.default_value;
   }
 }

@@ -55,6 +55,7 @@ class Mamdani {
     std::vector<Trapezoid> terms;
     std::size_t first_level = 0;  ///< index of its first term in levels_
     SampleGrid grid{0, 1, 1};
+    std::vector<GridTerm> grid_terms;  ///< terms prepared for the grid
   };
   struct CompiledRule {
     std::size_t first_antecedent = 0, antecedent_count = 0;  ///< into antecedents_
