@@ -1,8 +1,242 @@
 /// @file main.cpp
-/// @brief fuzzyfeed (work in progress).
+/// @brief fuzzyfeed: the fuzzy adaptive feed-rate override of Stryczek &
+/// Orawczak, as a filter over spindle-load records (one record per IPO
+/// cycle) and as a closed-loop simulation of a turning pass (--simulate).
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <memory>
+
 #include "cli/tool_app.hpp"
+#include "io/error.hpp"
+#include "io/record_fields.hpp"
+#include "io/record_reader.hpp"
+#include "io/record_writer.hpp"
+#include "machining/feed_override.hpp"
+#include "machining/turning_profile.hpp"
+#include "machining/turning_sim.hpp"
+#include "machining/turning_svg.hpp"
+
+namespace {
+
+using namespace tk::machining;
+
+/// The stream mode: each record gets the law's answer to its load.
+void filter_records(const std::vector<std::string>& inputs, const FeedOverrideParams& law_params, tk::io::OutputFormat format) {
+  FeedOverride law(law_params);
+  const bool modified = law_params.variant == OverrideVariant::modified;
+  tk::io::RecordWriter writer(format);
+  if (modified)
+    writer.declare_fields({"load_avg", "wk", "override", "feed_out"});
+  else
+    writer.declare_fields({"wk", "override", "feed_out"});
+  tk::io::RecordReader reader(inputs.empty() ? std::vector<std::string>{"-"} : inputs);
+  tk::Record record;
+  double previous_t = -std::numeric_limits<double>::infinity();
+  while (reader.next(record)) {
+    const tk::Location where = reader.where();
+    const double t = tk::io::number_field(record, "t", where);
+    if (!(t > previous_t)) throw tk::Error(fmt::format("t must increase strictly: {} after {}", t, previous_t), where);
+    previous_t = t;
+    const double load = tk::io::number_field(record, "load", where);
+    if (!(load >= 0 && load <= 100)) throw tk::Error(fmt::format("load {} is outside 0-100 % of rated", load), where);
+    const std::optional<double> feed = tk::io::optional_number_field(record, "feed", where);
+    if (feed && *feed < 0) throw tk::Error(fmt::format("feed {} is negative", *feed), where);
+    const OverrideStep step = law.step(load);
+    if (modified) record["load_avg"] = step.load_used;
+    record["wk"] = step.factor;
+    record["override"] = step.override_pct;
+    if (feed) record["feed_out"] = *feed * step.override_pct / 100;
+    writer.write(record);
+  }
+  writer.flush();
+}
+
+/// The trace file: one record per IPO cycle, through the fast numeric path.
+class TraceFile {
+ public:
+  TraceFile(const std::string& path, tk::io::OutputFormat format, bool modified, double programmed_feed)
+      : path_(path), file_(std::fopen(path.c_str(), "w")), modified_(modified), feed_(programmed_feed) {
+    if (!file_) throw tk::Error(fmt::format("cannot write the trace '{}': {}", path, std::strerror(errno)));
+    writer_ = std::make_unique<tk::io::RecordWriter>(format, file_);
+    std::vector<std::string> fields{"t", "z", "depth", "load_true", "load"};
+    if (modified) fields.push_back("load_avg");
+    fields.insert(fields.end(), {"wk", "override", "feed", "feed_out"});
+    writer_->declare_fields(fields);
+  }
+  ~TraceFile() {
+    if (file_) std::fclose(file_);
+  }
+  void add(const TraceSample& s) {
+    std::vector<double>& v = values_;
+    v.assign({s.t_s, s.z_mm, s.depth_mm, s.load_true_pct, s.load_pct});
+    if (modified_) v.push_back(s.step.load_used);
+    v.insert(v.end(), {s.step.factor, s.step.override_pct, feed_, feed_ * s.step.override_pct / 100});
+    try {
+      writer_->write_numbers(v, 0);
+    } catch (const tk::Error& e) {
+      throw tk::Error(fmt::format("the trace '{}': {}", path_, e.what()));
+    }
+  }
+  void close() {
+    try {
+      writer_->flush();
+    } catch (const tk::Error& e) {
+      throw tk::Error(fmt::format("the trace '{}': {}", path_, e.what()));
+    }
+    const int status = std::fclose(file_);
+    file_ = nullptr;
+    if (status != 0) throw tk::Error(fmt::format("cannot write the trace '{}': {}", path_, std::strerror(errno)));
+  }
+
+ private:
+  std::string path_;
+  std::FILE* file_;
+  bool modified_;
+  double feed_;
+  std::unique_ptr<tk::io::RecordWriter> writer_;
+  std::vector<double> values_;
+};
+
+tk::Record segment_record(const SegmentStats& s) {
+  return {{"record", "segment"},       {"segment", s.index},
+          {"z_from", s.segment.z_from_mm}, {"z_to", s.segment.z_to_mm},
+          {"depth", s.segment.depth_mm},   {"start_s", s.start_s},
+          {"duration_s", s.duration_s},    {"mean_load_pct", s.mean_load_pct},
+          {"max_load_pct", s.max_load_pct}, {"mean_override_pct", s.mean_override_pct},
+          {"oscillation_pct", s.oscillation_pct}, {"override_sd_pct", s.override_sd_pct}};
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  tk::cli::ToolApp tool("fuzzyfeed", "work in progress");
-  return tool.run(argc, argv, [] {});
+  tk::cli::ToolApp tool("fuzzyfeed",
+                        "Fuzzy adaptive feed-rate override (Stryczek & Orawczak, reconstructed): reads spindle-load "
+                        "records (t, load, optionally feed), one per IPO cycle, and adds the factor wk and the new "
+                        "override; or simulates a turning pass under the law (--simulate).",
+                        "See fuzzyfeed(1).");
+  tool.add_input_files("load records (t, load[, feed]); standard input when none or '-'");
+  FeedOverrideParams law;
+  TurningParams process;
+  std::string variant = "original", profile_path, trace_path, svg_path;
+  long long average_d = 25;
+  double power_kw = 9;
+  bool simulate = false, segments = false;
+  CLI::App& app = tool.app();
+  const std::string law_group = "The law (both modes)", sim_group = "Simulation (with --simulate)";
+  app.add_option("--mz", law.mz_pct, "M_z, the spindle load to hold, % of rated")->capture_default_str()->type_name("PCT")->group(law_group);
+  app.add_option("--variant", variant, "original: formulas (1)-(4); modified: (5)-(7)")
+      ->check(CLI::IsMember({"original", "modified"}))
+      ->capture_default_str()
+      ->group(law_group);
+  app.add_option("--k", law.gain_k, "modified: gain, the fraction of the correction applied")->capture_default_str()->group(law_group);
+  app.add_option("--p", law.dead_band_p, "modified: dead band, a fraction of M_z")->capture_default_str()->group(law_group);
+  app.add_option("--d", average_d, "modified: loads averaged, IPO cycles")->capture_default_str()->type_name("N")->group(law_group);
+  app.add_option("--initial-override", law.initial_override_pct, "O_a before the first sample, %")
+      ->capture_default_str()
+      ->type_name("PCT")
+      ->group(law_group);
+  app.add_option("--min-override", law.min_override_pct, "the override's floor, % (its ceiling is 200)")
+      ->capture_default_str()
+      ->type_name("PCT")
+      ->group(law_group);
+  app.add_flag("--simulate", simulate, "simulate a turning pass under the law and write a summary record")->group(sim_group);
+  std::vector<CLI::Option*> sim_options{
+      app.add_option("--profile", profile_path, "allowance profile records (z_from, z_to, depth or z, depth; mm)")->type_name("FILE"),
+      app.add_option("--trace", trace_path, "write one record per IPO cycle to FILE")->type_name("FILE"),
+      app.add_option("--svg", svg_path, "plot load and override against time to FILE")->type_name("FILE"),
+      app.add_flag("--segments", segments, "a record per constant-allowance segment before the summary"),
+      app.add_option("--feed", process.feed_mm_rev, "programmed feed, mm/rev")->capture_default_str()->type_name("MM"),
+      app.add_option("--cutting-speed", process.cutting_speed_m_min, "v_c, m/min")->capture_default_str()->type_name("V"),
+      app.add_option("--diameter", process.diameter_mm, "workpiece diameter, mm (constant spindle speed from v_c)")
+          ->capture_default_str()
+          ->type_name("MM"),
+      app.add_option("--power", power_kw, "the main drive's rated power, kW")->capture_default_str()->type_name("KW"),
+      app.add_option("--efficiency", process.cutting.efficiency, "η of the main drive")->capture_default_str(),
+      app.add_option("--kc11", process.cutting.kc11_n_mm2, "Kienzle k_c1.1, N/mm² (E295)")->capture_default_str(),
+      app.add_option("--mc", process.cutting.mc, "Kienzle exponent m_c (E295)")->capture_default_str(),
+      app.add_option("--kappa", process.cutting.kappa_deg, "the tool's setting angle κ_r, degrees")->capture_default_str(),
+      app.add_option("--ipo", process.ipo_s, "interpolation cycle, s")->capture_default_str()->type_name("S"),
+      app.add_option("--lag", process.lag_s, "time constant of the load signal, s")->capture_default_str()->type_name("S"),
+      app.add_option("--noise", process.noise_pct, "σ of the load signal's noise, % of rated")->capture_default_str()->type_name("PCT"),
+      app.add_option("--seed", process.seed, "of the noise")->capture_default_str()->type_name("N"),
+      app.add_option("--above-tol", process.above_tolerance, "time_above_mz counts load above (1 + this) M_z")
+          ->capture_default_str()
+          ->type_name("FRAC")};
+  for (CLI::Option* option : sim_options) option->group(sim_group);
+
+  return tool.run(argc, argv, [&] {
+    law.variant = parse_override_variant(variant);
+    if (average_d < 1) throw tk::UsageError("--d must be an integer >= 1");
+    law.average_d = static_cast<std::size_t>(average_d);
+    validate(law);
+    if (!simulate) {
+      for (CLI::Option* option : sim_options)
+        if (option->count() > 0) throw tk::UsageError(option->get_name() + " goes with --simulate");
+      filter_records(tool.common().inputs, law, tool.output_format());
+      return;
+    }
+    if (!tool.common().inputs.empty()) throw tk::UsageError("--simulate reads no records (use --profile FILE for the allowance)");
+    process.cutting.rated_power_w = power_kw * 1000;
+    validate(process);
+    if (!profile_path.empty()) process.profile = read_profile(profile_path);
+    check_profile(process.profile);
+
+    std::unique_ptr<TraceFile> trace;
+    if (!trace_path.empty())
+      trace = std::make_unique<TraceFile>(trace_path, tool.output_format(), law.variant == OverrideVariant::modified, process.feed_mm_rev);
+    TurningSvg plot;
+    const RunStats run = simulate_turning(process, law, law.mz_pct, [&](const TraceSample& s) {
+      if (trace) trace->add(s);
+      if (!svg_path.empty()) plot.add(s.t_s, s.load_pct, s.load_true_pct, s.step.override_pct, s.depth_mm);
+    });
+    if (trace) trace->close();
+    const RunStats baseline = simulate_turning(process, std::nullopt, law.mz_pct);
+    if (!svg_path.empty()) {
+      if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} IPO cycles only", TurningSvg::kMaxSamples));
+      TurningPlotInfo info;
+      info.mz_pct = law.mz_pct;
+      if (law.variant == OverrideVariant::modified) info.dead_band_pct = law.dead_band_p * law.mz_pct;
+      info.title = fmt::format("fuzzyfeed --variant {}: M_z {:g} %, {:g} mm/rev, v_c {:g} m/min, IPO {:g} ms, lag {:g} ms, noise {:g} %; "
+                               "{:.1f} s against {:.1f} s at 100 %",
+                               variant, law.mz_pct, process.feed_mm_rev, process.cutting_speed_m_min, process.ipo_s * 1e3,
+                               process.lag_s * 1e3, process.noise_pct, run.time_s, baseline.time_s);
+      plot.write(svg_path, info);
+    }
+
+    tk::Record summary{{"record", "summary"},
+                       {"variant", variant},
+                       {"mz", law.mz_pct},
+                       {"machining_time_s", run.time_s},
+                       {"baseline_time_s", baseline.time_s},
+                       {"time_ratio", run.time_s / baseline.time_s},
+                       {"time_above_mz_s", run.time_above_mz_s},
+                       {"baseline_time_above_mz_s", baseline.time_above_mz_s},
+                       {"override_oscillation_pct", run.oscillation_pct},
+                       {"override_sd_pct", run.override_sd_pct},
+                       {"oscillation_segment", run.oscillation_segment},
+                       {"mean_override_pct", run.mean_override_pct},
+                       {"mean_load_pct", run.mean_load_pct},
+                       {"max_load_pct", run.max_load_pct},
+                       {"baseline_max_load_pct", baseline.max_load_pct},
+                       {"cycles", run.cycles},
+                       {"length_mm", process.profile.back().z_to_mm - process.profile.front().z_from_mm},
+                       {"spindle_rpm", spindle_speed_rev_s(process) * 60}};
+    tk::io::RecordWriter writer(tool.output_format());
+    if (segments) {
+      std::vector<std::string> columns;
+      const tk::Record segment_shape = segment_record(SegmentStats{});
+      for (const auto& [key, value] : segment_shape.items()) columns.push_back(key);
+      for (const auto& [key, value] : summary.items())
+        if (key != "record") columns.push_back(key);
+      writer.declare_fields(columns);  // CSV: one header for both kinds of record
+      for (const SegmentStats& s : run.segments) writer.write(segment_record(s));
+    }
+    writer.write(summary);
+    writer.flush();
+  });
 }

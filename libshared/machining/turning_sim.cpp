@@ -1,0 +1,233 @@
+/// @file turning_sim.cpp
+/// @brief The turning model and the closed-loop run, cycle by cycle.
+#include "machining/turning_sim.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numbers>
+#include <random>
+
+#include "io/error.hpp"
+
+namespace tk::machining {
+
+namespace {
+
+/// Gaussian noise from the Box-Muller transform over mt19937_64, whose
+/// output the standard fixes: the same seed gives the same noise with any
+/// standard library (std::normal_distribution's algorithm is unspecified).
+class GaussianNoise {
+ public:
+  GaussianNoise(double sigma, std::uint64_t seed) : sigma_(sigma), random_(seed) {}
+
+  double next() {
+    if (sigma_ == 0) return 0;
+    if (has_spare_) {
+      has_spare_ = false;
+      return sigma_ * spare_;
+    }
+    const double u1 = 1.0 - uniform();  // (0, 1]: log is finite
+    const double u2 = uniform();
+    const double radius = std::sqrt(-2.0 * std::log(u1));
+    spare_ = radius * std::sin(2 * std::numbers::pi * u2);
+    has_spare_ = true;
+    return sigma_ * radius * std::cos(2 * std::numbers::pi * u2);
+  }
+
+ private:
+  double uniform() { return static_cast<double>(random_() >> 11) * 0x1.0p-53; }  // [0, 1)
+
+  double sigma_;
+  std::mt19937_64 random_;
+  double spare_ = 0;
+  bool has_spare_ = false;
+};
+
+/// The override samples of one segment, summarised when the tool leaves it.
+class SegmentRecorder {
+ public:
+  void start(std::size_t index, const AllowanceSegment& segment, double t_s) {
+    stats_ = {};
+    stats_.index = index;
+    stats_.segment = segment;
+    stats_.start_s = t_s;
+    samples_.clear();
+  }
+  void add(double t_s, double dt_s, double load_true, double override_pct) {
+    samples_.push_back({t_s, override_pct});
+    stats_.duration_s += dt_s;
+    stats_.mean_load_pct += load_true * dt_s;
+    stats_.max_load_pct = std::max(stats_.max_load_pct, load_true);
+    stats_.mean_override_pct += override_pct;
+  }
+  bool empty() const { return samples_.empty(); }
+
+  SegmentStats finish() {
+    SegmentStats s = stats_;
+    if (samples_.empty()) return s;
+    if (s.duration_s > 0) s.mean_load_pct /= s.duration_s;
+    s.mean_override_pct /= static_cast<double>(samples_.size());
+    // The settled part: the second half of the segment's time, so that the
+    // swing of the override after a step in the allowance does not count.
+    const double settled_from = s.start_s + s.duration_s / 2;
+    double low = kMaxOverridePct, high = 0, sum = 0, squares = 0;
+    std::size_t n = 0;
+    for (const auto& [t, o] : samples_) {
+      if (t < settled_from) continue;
+      low = std::min(low, o), high = std::max(high, o);
+      sum += o, squares += o * o, ++n;
+    }
+    if (n > 0) {
+      s.oscillation_pct = (high - low) / 2;
+      const double mean = sum / static_cast<double>(n);
+      s.override_sd_pct = std::sqrt(std::max(0.0, squares / static_cast<double>(n) - mean * mean));
+    }
+    return s;
+  }
+
+ private:
+  SegmentStats stats_;
+  std::vector<std::pair<double, double>> samples_;
+};
+
+}  // namespace
+
+double kienzle_force_n(const CuttingModel& model, double depth_mm, double feed_mm_rev) {
+  const double sin_kappa = std::sin(model.kappa_deg * std::numbers::pi / 180);
+  const double h = feed_mm_rev * sin_kappa;  // chip thickness
+  const double b = depth_mm / sin_kappa;     // chip width
+  return model.kc11_n_mm2 * b * std::pow(h, 1 - model.mc);
+}
+
+double spindle_load_pct(const CuttingModel& model, double depth_mm, double feed_mm_rev, double cutting_speed_m_min) {
+  const double power_w = kienzle_force_n(model, depth_mm, feed_mm_rev) * cutting_speed_m_min / 60;
+  return 100 * power_w / (model.efficiency * model.rated_power_w);
+}
+
+std::vector<AllowanceSegment> default_profile() {
+  std::vector<AllowanceSegment> profile;
+  double z = 0;
+  for (int collar = 0; collar < 3; ++collar) {
+    profile.push_back({z, z + 60, 1});
+    profile.push_back({z + 60, z + 68, 3});
+    z += 68;
+  }
+  return profile;
+}
+
+void check_profile(const std::vector<AllowanceSegment>& profile) {
+  if (profile.empty()) throw Error("the allowance profile is empty");
+  for (std::size_t i = 0; i < profile.size(); ++i) {
+    const AllowanceSegment& s = profile[i];
+    if (!std::isfinite(s.z_from_mm) || !std::isfinite(s.z_to_mm) || !(s.z_from_mm < s.z_to_mm))
+      throw Error(fmt::format("profile segment {}: z must increase (from {} to {})", i + 1, s.z_from_mm, s.z_to_mm));
+    if (!(s.depth_mm >= 0 && s.depth_mm < 50))
+      throw Error(fmt::format("profile segment {}: depth {} mm is outside [0, 50)", i + 1, s.depth_mm));
+    if (i > 0 && s.z_from_mm != profile[i - 1].z_to_mm)
+      throw Error(fmt::format("profile segment {} starts at z = {}, not where the one before ends ({})", i + 1,
+                              s.z_from_mm, profile[i - 1].z_to_mm));
+  }
+}
+
+void validate(const TurningParams& p) {
+  const auto positive = [](double value, const char* option) {
+    if (!(value > 0 && std::isfinite(value))) throw UsageError(fmt::format("{} must be a finite number > 0, not {}", option, value));
+  };
+  positive(p.cutting.kc11_n_mm2, "--kc11");
+  if (!(p.cutting.mc >= 0 && p.cutting.mc < 1)) throw UsageError(fmt::format("--mc must be in [0, 1), not {}", p.cutting.mc));
+  if (!(p.cutting.kappa_deg > 0 && p.cutting.kappa_deg < 180))
+    throw UsageError(fmt::format("--kappa must be in (0, 180) degrees, not {}", p.cutting.kappa_deg));
+  positive(p.cutting.rated_power_w, "--power");
+  if (!(p.cutting.efficiency > 0 && p.cutting.efficiency <= 1))
+    throw UsageError(fmt::format("--efficiency must be in (0, 1], not {}", p.cutting.efficiency));
+  positive(p.feed_mm_rev, "--feed");
+  positive(p.cutting_speed_m_min, "--cutting-speed");
+  positive(p.diameter_mm, "--diameter");
+  positive(p.ipo_s, "--ipo");
+  if (p.ipo_s > 1) throw UsageError("--ipo is in seconds and must be at most 1");
+  if (!(p.lag_s >= 0 && std::isfinite(p.lag_s))) throw UsageError("--lag must be a finite number >= 0");
+  if (!(p.noise_pct >= 0 && p.noise_pct <= 100)) throw UsageError("--noise must be in [0, 100] % of rated");
+  if (!(p.above_tolerance >= 0 && std::isfinite(p.above_tolerance))) throw UsageError("--above-tol must be a finite number >= 0");
+}
+
+double spindle_speed_rev_s(const TurningParams& params) {
+  return params.cutting_speed_m_min * 1000 / (std::numbers::pi * params.diameter_mm) / 60;
+}
+
+double baseline_time_s(const TurningParams& params) {
+  const double length = params.profile.back().z_to_mm - params.profile.front().z_from_mm;
+  return length / (params.feed_mm_rev * spindle_speed_rev_s(params));
+}
+
+RunStats simulate_turning(const TurningParams& params, const std::optional<FeedOverrideParams>& law, double mz_pct,
+                          const TraceSink& on_sample) {
+  validate(params);
+  check_profile(params.profile);
+  std::optional<FeedOverride> control;
+  if (law) control.emplace(*law);
+  const double n_rev_s = spindle_speed_rev_s(params);
+  const double above = mz_pct * (1 + params.above_tolerance);
+  const double z_end = params.profile.back().z_to_mm;
+  const auto load_at = [&](double depth, double override_pct) {
+    return spindle_load_pct(params.cutting, depth, params.feed_mm_rev * override_pct / 100, params.cutting_speed_m_min);
+  };
+
+  RunStats run;
+  GaussianNoise noise(params.noise_pct, params.seed);
+  FirstOrderLag signal(params.lag_s, params.ipo_s);
+  double override_pct = control ? control->override_pct() : 100;
+  double z = params.profile.front().z_from_mm;
+  std::size_t segment = 0;
+  SegmentRecorder recorder;
+  recorder.start(0, params.profile[0], 0);
+  // The control is switched on with the tool already in the cut: the signal
+  // starts settled at the first segment's load rather than rising from 0.
+  signal.reset(load_at(params.profile[0].depth_mm, override_pct));
+  double weighted_load = 0, override_sum = 0;
+  for (std::uint64_t cycle = 0;; ++cycle) {
+    if (static_cast<double>(cycle) > params.max_cycles)
+      throw Error(fmt::format("the cut takes more than {:g} IPO cycles: the override or the feed is too low", params.max_cycles));
+    const double t = static_cast<double>(cycle) * params.ipo_s;
+    while (segment + 1 < params.profile.size() && z >= params.profile[segment].z_to_mm) {
+      if (!recorder.empty()) run.segments.push_back(recorder.finish());
+      ++segment;
+      recorder.start(segment, params.profile[segment], t);
+    }
+    const double depth = params.profile[segment].depth_mm;
+    const double feed = params.feed_mm_rev * override_pct / 100;
+    const double load_true = load_at(depth, override_pct);
+    const double load = std::clamp(signal.update(load_true) + noise.next(), 0.0, 100.0);
+    const OverrideStep step = control ? control->step(load) : OverrideStep{load, 1, 100};
+
+    const double feed_rate_mm_s = feed * n_rev_s;
+    double dt = params.ipo_s;
+    const bool last = z + feed_rate_mm_s * dt >= z_end;
+    if (last) dt = (z_end - z) / feed_rate_mm_s;  // the cut ends inside this cycle
+    if (on_sample) on_sample({t, z, depth, load_true, load, step, feed});
+    recorder.add(t, dt, load_true, step.override_pct);
+    weighted_load += load_true * dt;
+    override_sum += step.override_pct;
+    run.max_load_pct = std::max(run.max_load_pct, load_true);
+    if (load_true > above) run.time_above_mz_s += dt;
+    run.cycles = cycle + 1;
+    if (last) {
+      run.time_s = t + dt;
+      break;
+    }
+    z += feed_rate_mm_s * dt;
+    override_pct = step.override_pct;  // O_n takes effect in the next cycle
+  }
+  run.segments.push_back(recorder.finish());
+  run.mean_load_pct = run.time_s > 0 ? weighted_load / run.time_s : 0;
+  run.mean_override_pct = override_sum / static_cast<double>(run.cycles);
+  for (const SegmentStats& s : run.segments)
+    if (s.oscillation_pct > run.oscillation_pct) {
+      run.oscillation_pct = s.oscillation_pct;
+      run.oscillation_segment = s.index;
+    }
+  for (const SegmentStats& s : run.segments) run.override_sd_pct = std::max(run.override_sd_pct, s.override_sd_pct);
+  return run;
+}
+
+}  // namespace tk::machining
