@@ -40,6 +40,13 @@ Trapezoid dark_term(int adc_bits) {
   throw Error(fmt::format("the ADC has 10 or 12 bits, not {}", adc_bits));
 }
 
+std::string sensor_pattern(double left, double mid, double right, int adc_bits) {
+  const Trapezoid light = light_term(adc_bits), dark = dark_term(adc_bits);
+  std::string pattern;
+  for (double reading : {left, mid, right}) pattern += light(reading) >= dark(reading) ? 'L' : 'D';
+  return pattern;
+}
+
 Engine line_follower_engine(const LineFollowerOptions& options) {
   if (!(options.speed_factor > 0) || !std::isfinite(options.speed_factor))
     throw Error("the speed factor must be a finite number above 0");

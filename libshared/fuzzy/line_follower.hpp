@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 
 #include "fuzzy/engine.hpp"
 
@@ -39,6 +40,10 @@ struct LineFollowerOptions {
 /// The no-rule-fired default of both motors is 0 (the range's midpoint,
 /// motor off); BACKWARD_MAX is defined, as in the seed, but no rule uses it.
 Engine line_follower_engine(const LineFollowerOptions& options);
+
+/// "LLD" and the like: each reading's stronger term (L when LIGHT >= DARK),
+/// left to right, as the seed names the situations.
+std::string sensor_pattern(double left, double mid, double right, int adc_bits);
 
 /// The sensor terms' corners for an ADC of `adc_bits` (10 or 12), as the seed gives them.
 Trapezoid light_term(int adc_bits);

@@ -1,8 +1,383 @@
 /// @file main.cpp
-/// @brief tnorm-bench (work in progress).
+/// @brief tnorm-bench: Könczöl & Gál's Mamdani line follower under six
+/// t-norms: its motor commands for sensor readings (eval), its speed per
+/// inference (bench), laps of a simulated car (laps), and the controller as
+/// fuzzylite FLL (fll). Any FLL controller can stand in for the seed's.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/number_option.hpp"
 #include "cli/tool_app.hpp"
+#include "fuzzy/fll.hpp"
+#include "fuzzy/inference_timing.hpp"
+#include "fuzzy/line_follower.hpp"
+#include "fuzzy/mamdani.hpp"
+#include "io/error.hpp"
+#include "io/record_fields.hpp"
+#include "io/record_reader.hpp"
+#include "io/record_writer.hpp"
+#include "vehicle/lap_svg.hpp"
+#include "vehicle/line_car.hpp"
+#include "vehicle/line_track.hpp"
+
+namespace {
+
+using namespace tk;
+using fuzzy::TNorm;
+
+constexpr TNorm kAllTNorms[] = {TNorm::minimum,     TNorm::product,       TNorm::drastic,
+                                TNorm::lukasiewicz, TNorm::trigonometric, TNorm::hamacher};
+
+/// Options that pick and shape the controller, shared by every mode.
+struct ControllerOptions {
+  std::vector<std::string> tnorms;
+  int adc_bits = 10;
+  std::string centroid;  ///< "" keeps the controller's own; "exact", "discrete", "discrete:N"
+  double speed_factor = 1.92;
+  std::string backward_slowly = "-45,-35,-25,-15";
+  std::string implication = "minimum";
+  std::string fll_path;
+  double fire_threshold = 0;
+
+  void add_to(CLI::App& sub, bool many_tnorms) {
+    auto* t = sub.add_option("--tnorm", tnorms,
+                             many_tnorms ? "t-norm(s): minimum, product, drastic, lukasiewicz, trigonometric, hamacher, all"
+                                         : "the rules' t-norm: minimum, product, drastic, lukasiewicz, trigonometric, hamacher")
+                  ->type_name("NAME");
+    if (!many_tnorms) t->expected(1);
+    sub.add_option("--adc", adc_bits, "the sensors' ADC: 10 (Arduino Uno) or 12 bits (ESP32)")
+        ->check(CLI::IsMember({10, 12}))
+        ->capture_default_str();
+    sub.add_option("--centroid", centroid, "exact, or discrete[:N] (fuzzylite's, N samples, default 100)")
+        ->type_name("KIND");
+    sub.add_option("--speed-factor", speed_factor, "scales the motor terms (seed: 1.92, later 2.0)")->capture_default_str();
+    sub.add_option("--backward-slowly", backward_slowly, "BACKWARD_SLOWLY's corners before scaling")
+        ->capture_default_str()
+        ->type_name("A,B,C,D");
+    sub.add_option("--implication", implication, "minimum (clip) or product (scale)")
+        ->check(CLI::IsMember({"minimum", "product"}))
+        ->capture_default_str();
+    sub.add_option("--fll", fll_path, "use this fuzzylite FLL controller instead of the seed's")->type_name("FILE");
+    sub.add_option("--fire-threshold", fire_threshold, "rules fire from this activation on (fuzzylite: 1e-6)")
+        ->capture_default_str()
+        ->type_name("X");
+  }
+
+  std::vector<TNorm> chosen_tnorms(bool default_all) const {
+    std::vector<TNorm> chosen;
+    for (const std::string& name : tnorms) {
+      if (name == "all") {
+        chosen.assign(std::begin(kAllTNorms), std::end(kAllTNorms));
+        continue;
+      }
+      const auto t = fuzzy::tnorm_from_name(name);
+      if (!t) throw UsageError("--tnorm: unknown t-norm '" + name + "'");
+      chosen.push_back(*t);
+    }
+    if (chosen.empty()) {
+      if (default_all) return {std::begin(kAllTNorms), std::end(kAllTNorms)};
+      if (fll_path.empty()) chosen.push_back(TNorm::minimum);
+    }
+    return chosen;
+  }
+
+  fuzzy::Defuzzifier defuzzifier(const fuzzy::Defuzzifier& fallback) const {
+    if (centroid.empty()) return fallback;
+    fuzzy::Defuzzifier d;
+    if (centroid == "exact") {
+      d.kind = fuzzy::Defuzzifier::Kind::exact;
+    } else if (centroid.rfind("discrete", 0) == 0) {
+      d.kind = fuzzy::Defuzzifier::Kind::discrete;
+      if (centroid.size() > 8) {
+        if (centroid[8] != ':') throw UsageError("--centroid: use exact, discrete or discrete:N");
+        const std::uint64_t n = cli::parse_count(centroid.substr(9), "--centroid");
+        if (n < 1 || n > 10'000'000) throw UsageError("--centroid: N must be from 1 to 10000000");
+        d.resolution = static_cast<int>(n);
+      }
+    } else {
+      throw UsageError("--centroid: use exact, discrete or discrete:N");
+    }
+    return d;
+  }
+
+  /// The controller: the seed's with `t`, or the FLL file's (with `t` when given).
+  fuzzy::Engine engine(std::optional<TNorm> t) const {
+    fuzzy::Engine e;
+    if (!fll_path.empty()) {
+      e = fuzzy::read_fll_file(fll_path);
+      if (t) e.rule_block.conjunction = *t;
+    } else {
+      fuzzy::LineFollowerOptions o;
+      o.adc_bits = adc_bits;
+      o.speed_factor = speed_factor;
+      o.implication = implication == "product" ? fuzzy::Implication::product : fuzzy::Implication::minimum;
+      o.conjunction = t.value_or(TNorm::minimum);
+      std::vector<double> corners;
+      try {
+        corners = cli::parse_numbers(backward_slowly, "--backward-slowly", 4);
+        e = fuzzy::line_follower_engine(
+            [&] {
+              o.backward_slowly = {corners[0], corners[1], corners[2], corners[3]};
+              return o;
+            }());
+      } catch (const UsageError&) {
+        throw;
+      } catch (const Error& err) {
+        throw UsageError(err.what());
+      }
+    }
+    for (auto& out : e.outputs) out.defuzzifier = defuzzifier(out.defuzzifier);
+    return e;
+  }
+
+  fuzzy::Mamdani controller(const fuzzy::Engine& e) const {
+    if (!(fire_threshold >= 0 && fire_threshold <= 1)) throw UsageError("--fire-threshold must be in [0, 1]");
+    fuzzy::Mamdani m(e);
+    m.set_fire_threshold(fire_threshold);
+    return m;
+  }
+};
+
+std::string tnorm_label(const fuzzy::Engine& e) { return std::string(fuzzy::tnorm_name(e.rule_block.conjunction)); }
+
+void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
+  const std::vector<TNorm> chosen = options.chosen_tnorms(false);
+  if (chosen.size() > 1) throw UsageError("eval takes one --tnorm");
+  const fuzzy::Engine engine = options.engine(chosen.empty() ? std::nullopt : std::optional<TNorm>(chosen[0]));
+  fuzzy::Mamdani controller = options.controller(engine);
+  const bool seed_controller = options.fll_path.empty();
+  const double full_scale = options.adc_bits == 10 ? 1023 : 4095;
+  io::RecordReader reader(tool.common().inputs);
+  io::RecordWriter writer(tool.output_format());
+  std::vector<std::string> added;
+  for (const auto& out : engine.outputs) added.push_back(out.name);
+  writer.declare_fields(added);
+  std::vector<double> in(engine.inputs.size()), out(engine.outputs.size());
+  Record record;
+  while (reader.next(record)) {
+    const Location where = reader.where();
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      in[i] = io::number_field(record, engine.inputs[i].name, where);
+      if (seed_controller && (in[i] < 0 || in[i] > full_scale))
+        throw Error(fmt::format("{} reading {} is outside the {}-bit ADC's 0..{}", engine.inputs[i].name, in[i],
+                                options.adc_bits, full_scale),
+                    where);
+    }
+    controller.evaluate(in, out);
+    for (std::size_t o = 0; o < out.size(); ++o) {
+      if (std::isnan(out[o]))
+        record[engine.outputs[o].name] = nullptr;  // no rule fired and the default is nan
+      else
+        record[engine.outputs[o].name] = out[o];
+    }
+    writer.write(record);
+  }
+  writer.flush();
+}
+
+void run_bench(cli::ToolApp& tool, const ControllerOptions& options, double seconds) {
+  if (!(seconds > 0) || seconds > 3600) throw UsageError("--seconds must be above 0 and at most 3600");
+  io::RecordWriter writer(tool.output_format());
+  for (TNorm t : options.chosen_tnorms(true)) {
+    const fuzzy::Engine engine = options.engine(t);
+    if (engine.inputs.size() != 3) throw Error("bench needs a controller with three inputs (the sensors)");
+    fuzzy::Mamdani controller = options.controller(engine);
+    const auto triples = fuzzy::protocol_triples(options.adc_bits);
+    const fuzzy::InferenceTiming timing = fuzzy::time_inferences(controller, triples, seconds);
+    const fuzzy::Defuzzifier& d = engine.outputs[0].defuzzifier;
+    Record r;
+    r["tnorm"] = tnorm_label(engine);
+    r["ns_per_inference"] = std::round(timing.ns_per_inference * 10) / 10;
+    r["ms_per_2x1024"] = std::round(timing.ms_per_2x1024 * 1e4) / 1e4;
+    r["inferences"] = timing.inferences;
+    r["centroid"] = d.kind == fuzzy::Defuzzifier::Kind::exact ? "exact" : "discrete";
+    r["resolution"] = d.kind == fuzzy::Defuzzifier::Kind::exact ? Record() : Record(d.resolution);
+    writer.write(r);
+    writer.flush();
+  }
+}
+
+struct LapsOptions {
+  int laps = 3;
+  double latency_ms = 1.8;
+  double period_ms = 0;
+  double time_limit = 120;
+  std::string track_path;
+  std::string oval = "1000,300";
+  std::string svg_path, trace_path;
+  std::uint64_t seed = 1;
+  double noise = -1;
+  double sensor_spacing = -1;
+  double line_width = vehicle::kTapeWidthMm;
+  double spot_sigma = -1;
+};
+
+void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOptions& laps) {
+  if (laps.laps < 1 || laps.laps > 1000) throw UsageError("--laps must be from 1 to 1000");
+  if (!(laps.latency_ms >= 0) || laps.latency_ms > 1000) throw UsageError("--latency-ms must be in [0, 1000]");
+  if (!(laps.period_ms >= 0) || laps.period_ms > 1000) throw UsageError("--period-ms must be in [0, 1000]");
+  if (!(laps.time_limit > 0) || laps.time_limit > 36000) throw UsageError("--time-limit must be above 0, at most 36000 s");
+  vehicle::Track track = [&] {
+    if (!(laps.line_width > 0) || laps.line_width > 500) throw UsageError("--line-width must be above 0 and at most 500 mm");
+    if (!laps.track_path.empty()) return vehicle::read_track(laps.track_path, laps.line_width);
+    std::vector<double> oval;
+    try {
+      oval = cli::parse_numbers(laps.oval, "--oval", 2);
+    } catch (const Error& e) {
+      throw UsageError(e.what());
+    }
+    if (!(oval[0] >= 0) || !(oval[1] > 0)) throw UsageError("--oval: straight >= 0 and radius > 0, mm");
+    return vehicle::oval_track(oval[0], oval[1], laps.line_width);
+  }();
+  vehicle::CarParameters car = vehicle::CarParameters::with_adc_bits(options.adc_bits);
+  if (laps.noise >= 0) car.noise_counts = laps.noise;
+  if (laps.sensor_spacing >= 0) car.sensor_spacing_mm = laps.sensor_spacing;
+  if (laps.spot_sigma >= 0) car.spot_sigma_mm = laps.spot_sigma;
+  vehicle::LapOptions run;
+  run.laps = laps.laps;
+  run.latency_s = laps.latency_ms / 1000;
+  run.control_period_s = laps.period_ms / 1000;
+  run.time_limit_s = laps.time_limit;
+  run.seed = laps.seed;
+
+  io::RecordWriter writer(tool.output_format());
+  std::vector<vehicle::LapRun> runs;
+  std::FILE* trace_file = nullptr;
+  std::unique_ptr<io::RecordWriter> trace_writer;
+  if (!laps.trace_path.empty()) {
+    trace_file = std::fopen(laps.trace_path.c_str(), "w");
+    if (!trace_file) throw Error("cannot write " + laps.trace_path);
+    trace_writer = std::make_unique<io::RecordWriter>(tool.output_format(), trace_file);
+  }
+  for (TNorm t : options.chosen_tnorms(false)) {
+    const fuzzy::Engine engine = options.engine(t);
+    if (engine.inputs.size() != 3 || engine.outputs.size() != 2)
+      throw Error("laps needs a controller with three inputs (left, mid, right) and two outputs (left, right motor)");
+    fuzzy::Mamdani controller = options.controller(engine);
+    double out[2];
+    auto drive = [&](const vehicle::SensorReadings& s) {
+      const double in[3] = {s.left, s.mid, s.right};
+      controller.evaluate(in, out);
+      return vehicle::MotorCommand{out[0], out[1]};
+    };
+    std::vector<vehicle::TracePoint> trace;
+    const bool tracing = !laps.svg_path.empty() || trace_writer;
+    const vehicle::LapResult result = vehicle::run_laps(track, car, run, drive, tracing ? &trace : nullptr);
+    const std::string label = tnorm_label(engine);
+    Record r;
+    r["tnorm"] = label;
+    r["completed"] = result.completed;
+    r["lap_times_s"] = result.lap_times_s;
+    r["total_s"] = result.total_s;
+    r["excursions"] = result.excursions;
+    r["max_deviation_mm"] = result.max_deviation_mm;
+    r["rms_deviation_mm"] = result.rms_deviation_mm;
+    r["stop_reason"] = result.stop_reason;
+    const auto& s = result.readings_at_end;
+    r["sensors_at_end"] = fuzzy::sensor_pattern(s.left, s.mid, s.right, options.adc_bits);
+    r["readings_at_end"] = {s.left, s.mid, s.right};
+    r["distance_mm"] = result.distance_mm;
+    r["latency_ms"] = laps.latency_ms;
+    if (tool.common().csv) {
+      r["lap_times_s"] = r["lap_times_s"].dump();
+      r["readings_at_end"] = r["readings_at_end"].dump();
+    }
+    writer.write(r);
+    writer.flush();
+    if (trace_writer) {
+      trace_writer->declare_fields({"tnorm", "t", "x", "y", "heading", "left", "mid", "right", "left_motor", "right_motor"});
+      for (const auto& p : trace) {
+        Record tr;
+        tr["tnorm"] = label;
+        tr["t"] = p.t;
+        tr["x"] = p.x;
+        tr["y"] = p.y;
+        tr["heading"] = p.heading;
+        tr["left"] = p.readings.left;
+        tr["mid"] = p.readings.mid;
+        tr["right"] = p.readings.right;
+        tr["left_motor"] = p.command.left;
+        tr["right_motor"] = p.command.right;
+        trace_writer->write(tr);
+      }
+    }
+    if (!laps.svg_path.empty()) runs.emplace_back(label, std::move(trace));
+  }
+  if (trace_writer) {
+    trace_writer->flush();
+    if (std::fclose(trace_file) != 0) throw Error("cannot write " + laps.trace_path);
+  }
+  if (!laps.svg_path.empty()) vehicle::write_lap_svg(laps.svg_path, track, runs);
+}
+
+void run_fll(const ControllerOptions& options) {
+  const std::vector<TNorm> chosen = options.chosen_tnorms(false);
+  if (chosen.size() > 1) throw UsageError("fll takes one --tnorm");
+  const fuzzy::Engine engine = options.engine(chosen.empty() ? std::nullopt : std::optional<TNorm>(chosen[0]));
+  const std::string text = fuzzy::write_fll(engine);
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size()) throw Error("write error on standard output");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  tk::cli::ToolApp tool("tnorm-bench", "work in progress");
-  return tool.run(argc, argv, [] {});
+  cli::ToolApp tool("tnorm-bench",
+                    "Konczol & Gal's fuzzy line follower under six t-norms: motor commands for sensor readings (eval), "
+                    "ns per inference (bench), simulated laps (laps), the controller as fuzzylite FLL (fll).",
+                    "See tnorm-bench(1).");
+  CLI::App& app = tool.app();
+  app.require_subcommand(1);
+
+  ControllerOptions eval_options, bench_options, laps_options, fll_options;
+  CLI::App* eval = app.add_subcommand("eval", "add left_motor and right_motor to records with left, mid, right");
+  eval_options.add_to(*eval, false);
+  eval->add_option("files", tool.common().inputs, "input files; standard input when none or '-'")->type_name("FILE");
+
+  double seconds = 0.5;
+  CLI::App* bench = app.add_subcommand("bench", "time the inference per t-norm: one record each");
+  bench_options.add_to(*bench, true);
+  bench->add_option("--seconds", seconds, "CPU time per t-norm")->capture_default_str()->type_name("S");
+
+  LapsOptions laps;
+  CLI::App* lap = app.add_subcommand("laps", "drive a simulated car round a track: one record per t-norm");
+  laps_options.add_to(*lap, true);
+  lap->add_option("--laps", laps.laps, "laps to complete")->capture_default_str();
+  lap->add_option("--latency-ms", laps.latency_ms, "sampling to command taking effect (Uno ~1.8 x 2, ESP32 ~0.18 x 2)")
+      ->capture_default_str()
+      ->type_name("MS");
+  lap->add_option("--period-ms", laps.period_ms, "control period (0: the latency, a loop that runs back to back)")
+      ->capture_default_str()
+      ->type_name("MS");
+  lap->add_option("--time-limit", laps.time_limit, "give up after this many simulated seconds")->capture_default_str();
+  lap->add_option("--track", laps.track_path, "centre line as records with x, y in mm (a closed loop)")->type_name("FILE");
+  lap->add_option("--oval", laps.oval, "the default track: straight length and radius, mm")
+      ->capture_default_str()
+      ->type_name("L,R");
+  lap->add_option("--line-width", laps.line_width, "width of the line (tape), mm")->capture_default_str()->type_name("MM");
+  lap->add_option("--svg", laps.svg_path, "draw the track and each t-norm's path")->type_name("FILE");
+  lap->add_option("--trace", laps.trace_path, "write the runs' time series (t, x, y, readings, commands)")->type_name("FILE");
+  lap->add_option("--seed", laps.seed, "seed of the sensor noise")->capture_default_str();
+  lap->add_option("--noise", laps.noise, "sensor noise, ADC counts (standard deviation; default the car's, 3 at 10 bits)")
+      ->type_name("COUNTS");
+  lap->add_option("--sensor-spacing", laps.sensor_spacing, "mid sensor to each outer one, mm (default the car's)")
+      ->type_name("MM");
+  lap->add_option("--spot-sigma", laps.spot_sigma, "the sensors' spot on the floor, Gaussian sigma, mm (default the car's)")
+      ->type_name("MM");
+
+  CLI::App* fll = app.add_subcommand("fll", "write the controller as fuzzylite FLL");
+  fll_options.add_to(*fll, false);
+
+  for (CLI::App* sub : app.get_subcommands({})) sub->fallthrough();  // --csv, -q after the subcommand
+
+  return tool.run(argc, argv, [&] {
+    if (eval->parsed()) run_eval(tool, eval_options);
+    if (bench->parsed()) run_bench(tool, bench_options, seconds);
+    if (lap->parsed()) run_laps(tool, laps_options, laps);
+    if (fll->parsed()) run_fll(fll_options);
+  });
 }
