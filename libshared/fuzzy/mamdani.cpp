@@ -25,6 +25,7 @@ template <>
 struct Kernel<TNorm::minimum> {
   static double inner(double mu) { return mu; }
   static double combine(const double* v, const std::size_t* idx, std::size_t n) {
+    if (n == 3) return std::min(std::min(v[idx[0]], v[idx[1]]), v[idx[2]]);  // the seed's rules, unrolled
     double m = v[idx[0]];
     for (std::size_t i = 1; i < n; ++i) m = std::min(m, v[idx[i]]);
     return m;
@@ -38,6 +39,7 @@ struct Kernel<TNorm::minimum> {
 template <>
 struct Kernel<TNorm::product> : Kernel<TNorm::minimum> {
   static double combine(const double* v, const std::size_t* idx, std::size_t n) {
+    if (n == 3) return v[idx[0]] * v[idx[1]] * v[idx[2]];
     double p = v[idx[0]];
     for (std::size_t i = 1; i < n; ++i) p *= v[idx[i]];
     return p;
@@ -47,6 +49,7 @@ struct Kernel<TNorm::product> : Kernel<TNorm::minimum> {
 template <>
 struct Kernel<TNorm::lukasiewicz> : Kernel<TNorm::minimum> {
   static double combine(const double* v, const std::size_t* idx, std::size_t n) {
+    if (n == 3) return std::max(0.0, v[idx[0]] + v[idx[1]] + v[idx[2]] - 2.0);
     double s = v[idx[0]];
     for (std::size_t i = 1; i < n; ++i) s += v[idx[i]];
     return std::max(0.0, s - static_cast<double>(n - 1));
@@ -56,6 +59,11 @@ struct Kernel<TNorm::lukasiewicz> : Kernel<TNorm::minimum> {
 template <>
 struct Kernel<TNorm::drastic> : Kernel<TNorm::minimum> {
   static double combine(const double* v, const std::size_t* idx, std::size_t n) {
+    if (n == 3) {
+      const double a = v[idx[0]], b = v[idx[1]], c = v[idx[2]];
+      const int below_one = (a < 1) + (b < 1) + (c < 1);
+      return below_one <= 1 ? std::min(std::min(a, b), c) : 0;
+    }
     std::size_t below_one = 0;
     double smallest = 1;
     for (std::size_t i = 0; i < n; ++i) {
@@ -81,6 +89,7 @@ template <>
 struct Kernel<TNorm::hamacher> {
   static double inner(double mu) { return mu > 0 ? 1 / mu - 1 : kInf; }
   static double combine(const double* v, const std::size_t* idx, std::size_t n) {
+    if (n == 3) return v[idx[0]] + v[idx[1]] + v[idx[2]];
     double s = v[idx[0]];
     for (std::size_t i = 1; i < n; ++i) s += v[idx[i]];
     return s;
