@@ -31,6 +31,23 @@ echo "   $(wc -l <<< "$survivors") of 100000 candidates survive the sieve"
 mrtest -j 2 --keep prime,probable --csv <<< "$survivors" | cut -d, -f1-4
 
 echo
+echo "== Konczol & Gal's fuzzy line follower: three laps per t-norm on a simulated oval"
+echo "   (the drastic t-norm stops the car; tnorm-bench(1)):"
+tnorm-bench laps --tnorm all | python3 -c '
+import json, sys
+for r in map(json.loads, sys.stdin):
+    print("   %-14s completed %-5s %6.2f s  %s" % (r["tnorm"], r["completed"], r["total_s"], r["stop_reason"]))'
+echo
+echo "== Stryczek & Orawczak's adaptive feed: the original law against the modified one"
+for variant in original modified; do
+  fuzzyfeed --simulate --variant "$variant" | python3 -c '
+import json, sys
+r = json.load(sys.stdin)
+print("   %-8s %.1f s against %.1f s at 100 %% override, override oscillation +-%.1f points" % (
+    r["variant"], r["machining_time_s"], r["baseline_time_s"], r["override_oscillation_pct"]))'
+done
+
+echo
 echo "== The main job, a search from scratch: sieve | mrtest | riesel finds and proves"
 echo "   twin primes k*2^3300-1, k*2^3300+1 of 1,000 digits (examples/search-twins.sh):"
 bash "$here/search-twins.sh"
