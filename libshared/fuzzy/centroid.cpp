@@ -145,7 +145,18 @@ void sweep(std::span<const Corners> shapes, double lo, double hi, double ref, Sc
 
 }  // namespace
 
-CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication implication, double min, double max) {
+void add_exact_moments(std::span<const ImpliedTerm> terms, Implication implication, double min, double max, double ref,
+                       double& area, double& moment) {
+  if (terms.size() == 1 && terms[0].level > 0 && terms[0].shape.a >= min && terms[0].shape.d <= max) {
+    // A lone term inside the range: a trapezoid of height h with corners
+    // a, b, c, d, area h (d + c - b - a) / 2 and first moment
+    // h (d^2 + dc + c^2 - b^2 - ba - a^2) / 6, taken about ref.
+    const Corners t = corners(terms[0], implication);
+    const double a = t.x[0] - ref, b = t.x[1] - ref, c = t.x[2] - ref, d = t.x[3] - ref, h = t.y[1];
+    area += 0.5 * h * (d + c - b - a);
+    moment += h / 6 * (d * d + d * c + c * c - b * b - b * a - a * a);
+    return;
+  }
   // Reused between calls: evaluation allocates nothing once warm.
   thread_local Scratch scratch;
   std::vector<Corners>& shapes = scratch.shapes;
@@ -155,29 +166,23 @@ CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication im
   // By where they start, so that terms whose supports overlap come together.
   if (shapes.size() > 1)
     std::sort(shapes.begin(), shapes.end(), [](const Corners& a, const Corners& b) { return a.x[0] < b.x[0]; });
-
-  const double ref = 0.5 * (min + max);  // moments about the middle keep their digits
-  double area = 0, moment = 0;
   for (std::size_t first = 0; first < shapes.size();) {
     // A cluster: the terms whose supports overlap the first one's, in a chain.
     double end = shapes[first].x[3];
     std::size_t last = first + 1;
     while (last < shapes.size() && shapes[last].x[0] < end) end = std::max(end, shapes[last++].x[3]);
     const double lo = shapes[first].x[0];
-    if (last == first + 1 && lo >= min && end <= max) {
-      // A lone term inside the range: a trapezoid of height h with corners
-      // a, b, c, d, area h (d + c - b - a) / 2 and first moment
-      // h (d^2 + dc + c^2 - b^2 - ba - a^2) / 6, taken about ref.
-      const Corners& t = shapes[first];
-      const double a = t.x[0] - ref, b = t.x[1] - ref, c = t.x[2] - ref, d = t.x[3] - ref, h = t.y[1];
-      area += 0.5 * h * (d + c - b - a);
-      moment += h / 6 * (d * d + d * c + c * c - b * b - b * a - a * a);
-    } else if (end > min && lo < max) {
+    if (end > min && lo < max)
       sweep(std::span<const Corners>(shapes.data() + first, last - first), std::max(lo, min), std::min(end, max), ref,
             scratch, area, moment);
-    }
     first = last;
   }
+}
+
+CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication implication, double min, double max) {
+  const double ref = 0.5 * (min + max);  // moments about the middle keep their digits
+  double area = 0, moment = 0;
+  add_exact_moments(terms, implication, min, max, ref, area, moment);
   if (!(area > 0)) return {kNaN, 0};
   return {ref + moment / area, area};
 }

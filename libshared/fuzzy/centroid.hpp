@@ -38,4 +38,10 @@ CentroidResult discrete_centroid(std::span<const ImpliedTerm> terms, Implication
 /// integrals of y and x y have closed forms piece by piece.
 CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication implication, double min, double max);
 
+/// The building block of exact_centroid: adds the integrals of y and of
+/// (x - ref) y over [min, max] of the aggregate of `terms`. Terms whose
+/// supports cannot overlap may be passed in separate calls.
+void add_exact_moments(std::span<const ImpliedTerm> terms, Implication implication, double min, double max, double ref,
+                       double& area, double& moment);
+
 }  // namespace tk::fuzzy

@@ -1,6 +1,6 @@
 /// @file fll.cpp
-/// @brief FLL reader (line by line, rules parsed once every variable is
-/// known) and writer in fuzzylite 6.0's layout; see fll.hpp for the subset.
+/// @brief The FLL reader: line by line, rules parsed once every variable is
+/// known; see fll.hpp for the subset. The writer is fll_write.cpp.
 #include "fuzzy/fll.hpp"
 
 #include <fmt/format.h>
@@ -16,35 +16,13 @@
 #include <vector>
 
 #include "io/error.hpp"
+#include "fuzzy/fll_names.hpp"
 #include "io/input_file.hpp"
 
 namespace tk::fuzzy {
 namespace {
 
-constexpr std::array<std::pair<TNorm, std::string_view>, 6> kConjunctions{{{TNorm::minimum, "Minimum"},
-                                                                           {TNorm::product, "AlgebraicProduct"},
-                                                                           {TNorm::drastic, "DrasticProduct"},
-                                                                           {TNorm::lukasiewicz, "BoundedDifference"},
-                                                                           {TNorm::hamacher, "HamacherProduct"},
-                                                                           {TNorm::trigonometric, "Trigonometric"}}};
-constexpr std::array<std::string_view, 9> kSNorms{"Maximum",     "AlgebraicSum",     "BoundedSum",
-                                                  "DrasticSum",  "EinsteinSum",      "HamacherSum",
-                                                  "NilpotentMaximum", "NormalizedSum", "UnboundedSum"};
-// Words a rule gives meaning to: as names they would make rules ambiguous.
-constexpr std::array<std::string_view, 6> kKeywords{"if", "is", "and", "or", "then", "with"};
-constexpr std::array<std::string_view, 6> kHedges{"not", "any", "very", "somewhat", "extremely", "seldom"};
-
-template <typename List>
-bool contains(const List& list, std::string_view word) {
-  return std::find(list.begin(), list.end(), word) != list.end();
-}
-
-std::string_view trim(std::string_view s) {
-  constexpr std::string_view blank = " \t\r\v\f";
-  const auto first = s.find_first_not_of(blank);
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(blank) - first + 1);
-}
+using namespace fll_names;
 
 std::vector<std::string_view> split(std::string_view s) {
   std::vector<std::string_view> tokens;
@@ -65,18 +43,6 @@ std::optional<double> parse_number(std::string_view s) {
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value, std::chars_format::general);
   if (ec != std::errc{} || end != s.data() + s.size() || !std::isfinite(value)) return std::nullopt;
   return value;
-}
-
-/// What fuzzylite keeps of a name (letters, digits, '_', '.'), so that
-/// names pass through fuzzylite unchanged; rule words are excluded.
-std::string name_problem(std::string_view name) {
-  if (name.empty()) return "a name is empty";
-  for (const char c : name)
-    if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '.'))
-      return fmt::format("invalid name '{}' (use letters, digits, '_' and '.')", name);
-  if (contains(kKeywords, name) || contains(kHedges, name))
-    return fmt::format("'{}' is a rule word and cannot be a name", name);
-  return {};
 }
 
 enum class Section { none, engine, input, output, rules };
@@ -105,6 +71,9 @@ class Reader {
     line_ = 0;
     if (section_ == Section::none) fail("no 'Engine:' line (empty input)");
     close_section();
+    // fuzzylite cannot evaluate a Mamdani block without one; our default would differ silently.
+    line_ = rule_block_line_;
+    if (seen_rule_block_ && !have_implication_) fail("the RuleBlock has no implication");
     for (const auto& [at, rule] : rules_) {
       line_ = at;
       parse_rule(rule);
@@ -134,6 +103,7 @@ class Reader {
       close_section();
       if (seen_rule_block_) fail("only one RuleBlock is supported");
       seen_rule_block_ = true;
+      rule_block_line_ = line_;
       engine_.rule_block.name = value;
       section_ = Section::rules;
       return;
@@ -172,7 +142,7 @@ class Reader {
     }
     section_ = input ? Section::input : Section::output;
     section_line_ = line_;
-    have_range_ = false;
+    have_range_ = have_aggregation_ = have_defuzzifier_ = false;
   }
 
   // A variable's problems that only show at its end, reported at its header.
@@ -182,6 +152,11 @@ class Reader {
     line_ = section_line_;
     if (!have_range_) fail(fmt::format("variable '{}' has no range", variable().name));
     if (variable().terms.empty()) fail(fmt::format("variable '{}' has no terms", variable().name));
+    // fuzzylite's defaults (none) cannot evaluate; ours would differ silently.
+    if (section_ == Section::output && !have_aggregation_)
+      fail(fmt::format("output variable '{}' has no aggregation", variable().name));
+    if (section_ == Section::output && !have_defuzzifier_)
+      fail(fmt::format("output variable '{}' has no defuzzifier", variable().name));
     line_ = here;
   }
 
@@ -219,8 +194,10 @@ class Reader {
       term(value);
     } else if (output && (key == "aggregation" || key == "accumulation")) {
       if (value != "Maximum") fail(fmt::format("{} '{}' is not supported (only Maximum)", key, value));
+      have_aggregation_ = true;
     } else if (output && key == "defuzzifier") {
       defuzzifier(value);
+      have_defuzzifier_ = true;
     } else if (output && key == "default") {
       double& slot = engine_.outputs.back().default_value;
       if (value == "nan" || value == "NaN" || value == "NAN") {
@@ -300,6 +277,7 @@ class Reader {
       if (value != "none" && !contains(kSNorms, value)) fail(fmt::format("unknown disjunction '{}'", value));
     } else if (key == "implication" || (key == "activation" && tnorm(value))) {
       // fuzzylite 5 wrote the implication as `activation: <TNorm>`.
+      have_implication_ = true;
       if (value == "Minimum") {
         block.implication = Implication::minimum;
       } else if (value == "AlgebraicProduct") {
@@ -374,42 +352,13 @@ class Reader {
   Engine engine_;
   Section section_ = Section::none;
   std::size_t section_line_ = 0;
-  bool have_range_ = false;
+  bool have_range_ = false, have_aggregation_ = false, have_defuzzifier_ = false;
   bool seen_rule_block_ = false;
-  bool conjunction_none_ = false;
+  bool conjunction_none_ = true;  // fuzzylite's default, as for a missing implication
+  bool have_implication_ = false;
+  std::size_t rule_block_line_ = 0;
   std::vector<std::pair<std::size_t, std::string_view>> rules_;
 };
-
-void check_text(std::string_view text, std::string_view what) {
-  if (text.find_first_of("#\n\r") != std::string_view::npos || text.find('\0') != std::string_view::npos ||
-      trim(text) != text)
-    throw Error(fmt::format("{} '{}' cannot be written to FLL", what, text));
-}
-
-void check_name(std::string_view name) {
-  const std::string problem = name_problem(name);
-  if (!problem.empty()) throw Error(fmt::format("cannot write FLL: {}", problem));
-}
-
-void write_variable(std::string& out, const Variable& v, const char* kind) {
-  check_name(v.name);
-  check_text(v.description, "description");
-  fmt::format_to(std::back_inserter(out), "{}: {}\n", kind, v.name);
-  if (!v.description.empty()) fmt::format_to(std::back_inserter(out), "  description: {}\n", v.description);
-  fmt::format_to(std::back_inserter(out), "  enabled: true\n  range: {} {}\n  lock-range: false\n", v.min, v.max);
-}
-
-void write_terms(std::string& out, const Variable& v) {
-  for (const Term& t : v.terms) {
-    check_name(t.name);
-    const Trapezoid& p = t.points;
-    if (t.shape == Term::Shape::triangle && p.b == p.c) {
-      fmt::format_to(std::back_inserter(out), "  term: {} Triangle {} {} {}\n", t.name, p.a, p.b, p.d);
-    } else {
-      fmt::format_to(std::back_inserter(out), "  term: {} Trapezoid {} {} {} {}\n", t.name, p.a, p.b, p.c, p.d);
-    }
-  }
-}
 
 }  // namespace
 
@@ -423,105 +372,6 @@ Engine read_fll_file(const std::string& path) {
     text += '\n';
   }
   return read_fll(text, input.where().file);
-}
-
-std::string write_fll(const Engine& engine) {
-  validate(engine);
-  check_text(engine.name, "engine name");
-  check_text(engine.description, "description");
-  check_text(engine.rule_block.name, "rule block name");
-  std::string out = engine.name.empty() ? "Engine:\n" : fmt::format("Engine: {}\n", engine.name);
-  if (!engine.description.empty()) out += fmt::format("  description: {}\n", engine.description);
-  for (const Variable& v : engine.inputs) {
-    write_variable(out, v, "InputVariable");
-    write_terms(out, v);
-  }
-  for (const OutputVariable& v : engine.outputs) {
-    write_variable(out, v, "OutputVariable");
-    const bool exact = v.defuzzifier.kind == Defuzzifier::Kind::exact;
-    out += "  aggregation: Maximum\n  defuzzifier: ";
-    out += exact && v.defuzzifier.resolution == 100 ? std::string("ExactCentroid")
-                                                    : fmt::format("{} {}", exact ? "ExactCentroid" : "Centroid",
-                                                                  v.defuzzifier.resolution);
-    out += std::isnan(v.default_value) ? std::string("\n  default: nan\n")
-                                       : fmt::format("\n  default: {}\n", v.default_value);
-    out += "  lock-previous: false\n";
-    write_terms(out, v);
-  }
-  const RuleBlock& block = engine.rule_block;
-  out += block.name.empty() ? "RuleBlock:\n" : fmt::format("RuleBlock: {}\n", block.name);
-  std::string_view conjunction;
-  for (const auto& [t, name] : kConjunctions)
-    if (t == block.conjunction) conjunction = name;
-  fmt::format_to(std::back_inserter(out),
-                 "  enabled: true\n  conjunction: {}\n  disjunction: none\n  implication: {}\n  activation: General\n",
-                 conjunction, block.implication == Implication::minimum ? "Minimum" : "AlgebraicProduct");
-  for (const Rule& rule : block.rules) {
-    out += "  rule: if";
-    for (std::size_t i = 0; i < rule.antecedents.size(); ++i) {
-      const Variable& v = engine.inputs[rule.antecedents[i].variable];
-      fmt::format_to(std::back_inserter(out), "{} {} is {}", i ? " and" : "", v.name, v.terms[rule.antecedents[i].term].name);
-    }
-    out += " then";
-    for (std::size_t i = 0; i < rule.consequents.size(); ++i) {
-      const Variable& v = engine.outputs[rule.consequents[i].variable];
-      fmt::format_to(std::back_inserter(out), "{} {} is {}", i ? " and" : "", v.name, v.terms[rule.consequents[i].term].name);
-    }
-    if (rule.weight != 1) fmt::format_to(std::back_inserter(out), " with {}", rule.weight);
-    out += '\n';
-  }
-  return out;
-}
-
-namespace {
-
-bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-
-std::string variable_difference(const Variable& a, const Variable& b) {
-  if (a.name != b.name) return fmt::format("variable name '{}' vs '{}'", a.name, b.name);
-  if (a.description != b.description) return fmt::format("variable '{}': description", a.name);
-  if (!same(a.min, b.min) || !same(a.max, b.max)) return fmt::format("variable '{}': range", a.name);
-  if (a.terms.size() != b.terms.size()) return fmt::format("variable '{}': number of terms", a.name);
-  for (std::size_t i = 0; i < a.terms.size(); ++i) {
-    const Term &s = a.terms[i], &t = b.terms[i];
-    if (s.name != t.name || s.shape != t.shape || !same(s.points.a, t.points.a) || !same(s.points.b, t.points.b) ||
-        !same(s.points.c, t.points.c) || !same(s.points.d, t.points.d))
-      return fmt::format("variable '{}': term {} ('{}')", a.name, i + 1, s.name);
-  }
-  return {};
-}
-
-bool same_propositions(const std::vector<Proposition>& a, const std::vector<Proposition>& b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Proposition& p, const Proposition& q) {
-    return p.variable == q.variable && p.term == q.term;
-  });
-}
-
-}  // namespace
-
-std::string engine_difference(const Engine& a, const Engine& b) {
-  if (a.name != b.name) return "engine name";
-  if (a.description != b.description) return "engine description";
-  if (a.inputs.size() != b.inputs.size() || a.outputs.size() != b.outputs.size()) return "number of variables";
-  for (std::size_t i = 0; i < a.inputs.size(); ++i)
-    if (auto d = variable_difference(a.inputs[i], b.inputs[i]); !d.empty()) return d;
-  for (std::size_t i = 0; i < a.outputs.size(); ++i) {
-    const OutputVariable &s = a.outputs[i], &t = b.outputs[i];
-    if (auto d = variable_difference(s, t); !d.empty()) return d;
-    if (s.defuzzifier.kind != t.defuzzifier.kind || s.defuzzifier.resolution != t.defuzzifier.resolution)
-      return fmt::format("variable '{}': defuzzifier", s.name);
-    if (!same(s.default_value, t.default_value)) return fmt::format("variable '{}': default", s.name);
-  }
-  const RuleBlock &p = a.rule_block, &q = b.rule_block;
-  if (p.name != q.name) return "rule block name";
-  if (p.conjunction != q.conjunction) return "conjunction";
-  if (p.implication != q.implication) return "implication";
-  if (p.rules.size() != q.rules.size()) return "number of rules";
-  for (std::size_t i = 0; i < p.rules.size(); ++i)
-    if (!same_propositions(p.rules[i].antecedents, q.rules[i].antecedents) ||
-        !same_propositions(p.rules[i].consequents, q.rules[i].consequents) || !same(p.rules[i].weight, q.rules[i].weight))
-      return fmt::format("rule {}", i + 1);
-  return {};
 }
 
 }  // namespace tk::fuzzy

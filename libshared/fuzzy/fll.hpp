@@ -19,9 +19,13 @@
 ///                 when no rule uses `and`
 ///   disjunction   none or any fuzzylite S-norm name, but no rule may use `or`
 ///   implication   Minimum or AlgebraicProduct (also as the old-style
-///                 `activation: <TNorm>`); activation General
+///                 `activation: <TNorm>`), required; activation General
 ///   rules         `if A is X [and B is Y ...] then Z is W [and V is U ...]
 ///                 [with WEIGHT]`; no hedges, parentheses or `or`
+/// A missing conjunction is none, as in fuzzylite. Where fuzzylite's
+/// default could not evaluate or differs from ours (range, aggregation,
+/// defuzzifier, implication), the key is required, so that whatever we
+/// accept fuzzylite evaluates the same way.
 /// Names of variables and terms are letters, digits, `_` and `.` (what
 /// fuzzylite keeps of a name), and not a rule keyword or hedge.
 ///

@@ -56,6 +56,9 @@ class Mamdani {
     std::size_t first_level = 0;  ///< index of its first term in levels_
     SampleGrid grid{0, 1, 1};
     std::vector<GridTerm> grid_terms;  ///< terms prepared for the grid
+    /// The terms in groups whose supports overlap (in a chain): apart, the
+    /// exact centroid's integrals of different groups simply add up.
+    std::vector<std::vector<std::size_t>> overlap_groups;
   };
   struct CompiledRule {
     std::size_t first_antecedent = 0, antecedent_count = 0;  ///< into antecedents_

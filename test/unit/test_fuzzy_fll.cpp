@@ -192,13 +192,13 @@ TEST(Fll, CrlfCommentsAndBlankLines) {
   for (char c : lf) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   EXPECT_EQ(engine_difference(read_fll(lf, "lf"), read_fll(crlf, "crlf")), "");
   const std::string commented = "# header\n\n  Engine: E # name\n#x\nInputVariable: a\n range: 0 1 # r\n"
-                                "term: T Triangle 0 0.5 1#t\nOutputVariable: z\nrange: 0 1\nterm: U Triangle 0 0.5 1\n"
-                                "\t\nRuleBlock:\nrule: if a is T then z is U   # the only rule";
+                                "term: T Triangle 0 0.5 1#t\nOutputVariable: z\nrange: 0 1\naggregation: Maximum\ndefuzzifier: Centroid\nterm: U Triangle 0 0.5 1\n"
+                                "\t\nRuleBlock:\nimplication: Minimum\nrule: if a is T then z is U   # the only rule";
   const Engine e = read_fll(commented, "c");
   EXPECT_EQ(e.name, "E");
   EXPECT_EQ(e.inputs[0].max, 1);
   EXPECT_EQ(e.rule_block.rules.size(), 1u);
-  EXPECT_EQ(e.outputs[0].defuzzifier.resolution, 100);  // no defuzzifier line: Centroid 100
+  EXPECT_EQ(e.outputs[0].defuzzifier.resolution, 100);
 }
 
 /// The smallest valid controller; the cases below change one line of it.
@@ -210,11 +210,13 @@ const std::vector<std::string> kBase{
     "  term: HIGH Trapezoid 0 1 1 1",  // 5
     "OutputVariable: z",           // 6
     "  range: 0 10",               // 7
-    "  defuzzifier: Centroid 100",  // 8
-    "  term: OFF Triangle 0 0 10",  // 9
-    "RuleBlock: rb",               // 10
-    "  conjunction: Minimum",      // 11
-    "  rule: if a is LOW then z is OFF",  // 12
+    "  aggregation: Maximum",      // 8
+    "  defuzzifier: Centroid 100",  // 9
+    "  term: OFF Triangle 0 0 10",  // 10
+    "RuleBlock: rb",               // 11
+    "  conjunction: Minimum",      // 12
+    "  implication: Minimum",      // 13
+    "  rule: if a is LOW then z is OFF",  // 14
 };
 
 std::string with_line(std::size_t line, const std::string& replacement) {
@@ -234,38 +236,44 @@ TEST(Fll, BaseIsValid) { EXPECT_NO_THROW(read_fll(with_line(0, ""), "base")); }
 
 TEST(Fll, ErrorsNameTheLine) {
   const std::vector<BadCase> cases{
-      {12, "  rule: if a is DRK then z is OFF", 12, "unknown term 'DRK' of variable 'a'"},
-      {12, "  rule: if b is LOW then z is OFF", 12, "unknown input variable 'b'"},
-      {12, "  rule: if a is LOW then y is OFF", 12, "unknown output variable 'y'"},
-      {12, "  rule: if z is OFF then z is OFF", 12, "'z' is an output variable and cannot be in a rule's if part"},
-      {12, "  rule: if a is LOW or a is HIGH then z is OFF", 12, "'or' is not supported"},
-      {12, "  rule: if a is very LOW then z is OFF", 12, "hedge 'very' is not supported"},
-      {12, "  rule: if a is not LOW then z is OFF", 12, "hedge 'not' is not supported"},
-      {12, "  rule: if a is any then z is OFF", 12, "hedge 'any' is not supported"},
-      {12, "  rule: if (a is LOW) then z is OFF", 12, "parentheses are not supported"},
-      {12, "  rule: if a is LOW", 12, "a rule without 'then'"},
-      {12, "  rule: a is LOW then z is OFF", 12, "a rule starts with 'if', found 'a'"},
-      {12, "  rule: if a is LOW then z is OFF with 2", 12, "the rule weight must be in [0, 1]"},
-      {12, "  rule: if a is LOW then z is OFF with 0.5 0.5", 12, "expected one number after 'with'"},
-      {12, "  rule:", 12, "empty rule"},
-      {12, "  rule: if a LOW then z is OFF", 12, "expected 'is' after 'a', found 'LOW'"},
-      {11, "  conjunction: none\n  rule: if a is LOW and a is HIGH then z is OFF", 12,
+      {8, "", 6, "output variable 'z' has no aggregation"},
+      {9, "", 6, "output variable 'z' has no defuzzifier"},
+      {14, "  rule: if a is DRK then z is OFF", 14, "unknown term 'DRK' of variable 'a'"},
+      {14, "  rule: if b is LOW then z is OFF", 14, "unknown input variable 'b'"},
+      {14, "  rule: if a is LOW then y is OFF", 14, "unknown output variable 'y'"},
+      {14, "  rule: if z is OFF then z is OFF", 14, "'z' is an output variable and cannot be in a rule's if part"},
+      {14, "  rule: if a is LOW or a is HIGH then z is OFF", 14, "'or' is not supported"},
+      {14, "  rule: if a is very LOW then z is OFF", 14, "hedge 'very' is not supported"},
+      {14, "  rule: if a is not LOW then z is OFF", 14, "hedge 'not' is not supported"},
+      {14, "  rule: if a is any then z is OFF", 14, "hedge 'any' is not supported"},
+      {14, "  rule: if (a is LOW) then z is OFF", 14, "parentheses are not supported"},
+      {14, "  rule: if a is LOW", 14, "a rule without 'then'"},
+      {14, "  rule: a is LOW then z is OFF", 14, "a rule starts with 'if', found 'a'"},
+      {14, "  rule: if a is LOW then z is OFF with 2", 14, "the rule weight must be in [0, 1]"},
+      {14, "  rule: if a is LOW then z is OFF with 0.5 0.5", 14, "expected one number after 'with'"},
+      {14, "  rule:", 14, "empty rule"},
+      {14, "  rule: if a LOW then z is OFF", 14, "expected 'is' after 'a', found 'LOW'"},
+      {12, "  conjunction: none\n  rule: if a is LOW and a is HIGH then z is OFF", 13,
        "the rule uses 'and' but the conjunction is none"},
-      {11, "  conjunction: EinsteinProduct", 11, "conjunction 'EinsteinProduct' is not supported"},
-      {11, "  disjunction: Foo", 11, "unknown disjunction 'Foo'"},
-      {11, "  implication: DrasticProduct", 11, "implication 'DrasticProduct' is not supported"},
-      {11, "  activation: Highest", 11, "activation 'Highest' is not supported (only General)"},
-      {11, "  enabled: false", 11, "'enabled: false' is not supported"},
-      {11, "  enabled: yes", 11, "expected true or false, found 'yes'"},
-      {10, "RuleBlock: rb\nRuleBlock: again", 11, "only one RuleBlock is supported"},
-      {8, "  defuzzifier: Bisector", 8, "defuzzifier 'Bisector' is not supported (only Centroid)"},
-      {8, "  defuzzifier: Centroid 0", 8, "resolution must be a whole number of at least 1"},
-      {8, "  defuzzifier: Centroid 2.5", 8, "resolution must be a whole number of at least 1"},
-      {8, "  aggregation: AlgebraicSum", 8, "aggregation 'AlgebraicSum' is not supported (only Maximum)"},
-      {8, "  lock-previous: true", 8, "'lock-previous: true' is not supported"},
-      {8, "  lock-valid: true", 8, "'lock-valid: true' is not supported"},
-      {8, "  default: inf", 8, "default 'inf' is neither a finite decimal number nor nan"},
-      {8, "  default: 1x", 8, "default '1x' is neither a finite decimal number nor nan"},
+      {12, "  rule: if a is LOW and a is HIGH then z is OFF", 12,  // no conjunction line means none
+       "the rule uses 'and' but the conjunction is none"},
+      {13, "", 11, "the RuleBlock has no implication"},
+      {13, "  implication: none", 13, "implication 'none' is not supported"},
+      {12, "  conjunction: EinsteinProduct", 12, "conjunction 'EinsteinProduct' is not supported"},
+      {12, "  disjunction: Foo", 12, "unknown disjunction 'Foo'"},
+      {12, "  implication: DrasticProduct", 12, "implication 'DrasticProduct' is not supported"},
+      {12, "  activation: Highest", 12, "activation 'Highest' is not supported (only General)"},
+      {12, "  enabled: false", 12, "'enabled: false' is not supported"},
+      {12, "  enabled: yes", 12, "expected true or false, found 'yes'"},
+      {11, "RuleBlock: rb\nRuleBlock: again", 12, "only one RuleBlock is supported"},
+      {9, "  defuzzifier: Bisector", 9, "defuzzifier 'Bisector' is not supported (only Centroid)"},
+      {9, "  defuzzifier: Centroid 0", 9, "resolution must be a whole number of at least 1"},
+      {9, "  defuzzifier: Centroid 2.5", 9, "resolution must be a whole number of at least 1"},
+      {9, "  aggregation: AlgebraicSum", 9, "aggregation 'AlgebraicSum' is not supported (only Maximum)"},
+      {9, "  lock-previous: true", 9, "'lock-previous: true' is not supported"},
+      {9, "  lock-valid: true", 9, "'lock-valid: true' is not supported"},
+      {9, "  default: inf", 9, "default 'inf' is neither a finite decimal number nor nan"},
+      {9, "  default: 1x", 9, "default '1x' is neither a finite decimal number nor nan"},
       {3, "  lock-range: true", 3, "'lock-range: true' is not supported"},
       {3, "  lock-range: false", 2, "variable 'a' has no range"},
       {3, "  range: 0 nan", 3, "range: 'nan' is not a finite decimal number"},
@@ -287,7 +295,7 @@ TEST(Fll, ErrorsNameTheLine) {
       {5, "  term: LOW Trapezoid 0 1 1 1", 5, "term 'LOW' of variable 'a' defined twice"},
       {6, "InputVariable: a", 6, "variable 'a' defined twice"},
       {6, "OutputVariable:", 6, "a variable without a name"},
-      {9, "", 6, "variable 'z' has no terms"},
+      {10, "", 6, "variable 'z' has no terms"},
       {1, "InputVariable: x", 1, "expected 'Engine: NAME' first, found 'InputVariable'"},
       {2, "Engine: F", 2, "a second 'Engine:' line"},
       {2, "InputVariable: a\0b"s, 2, "NUL byte in the text"},
@@ -319,7 +327,7 @@ TEST(Fll, EmptyGarbageAndValidation) {
   EXPECT_THROW(read_fll(std::string("\x7f" "ELF\x02\x01\x01\0\0\0:\xff\xfe", 14), "bin"), tk::Error);
   // No RuleBlock: validate()'s complaint, with the file name and no line.
   std::string no_rules;
-  for (std::size_t i = 0; i < 9; ++i) no_rules += kBase[i] + "\n";
+  for (std::size_t i = 0; i < 10; ++i) no_rules += kBase[i] + "\n";
   try {
     read_fll(no_rules, "norules.fll");
     ADD_FAILURE() << "accepted a controller without rules";
