@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "temp_file.hpp"
 #include "io/csv.hpp"
 #include "io/error.hpp"
 #include "io/input_file.hpp"
@@ -19,22 +20,7 @@ using namespace tk::io;
 
 namespace {
 
-/// A temporary file holding `content`, removed at scope exit.
-class TempFile {
- public:
-  explicit TempFile(const std::string& content) {
-    static int counter = 0;
-    path_ = (std::filesystem::temp_directory_path() /
-             ("tk_io_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++)))
-                .string();
-    std::ofstream(path_, std::ios::binary) << content;
-  }
-  ~TempFile() { std::filesystem::remove(path_); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
+using tk::test::TempFile;
 
 std::vector<Record> read_all(const std::string& content, NativeFormatProbe probe = {}) {
   TempFile file(content);

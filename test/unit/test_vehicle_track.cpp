@@ -9,6 +9,7 @@
 #include <fstream>
 #include <unistd.h>
 
+#include "temp_file.hpp"
 #include "io/error.hpp"
 #include "vehicle/line_track.hpp"
 
@@ -23,22 +24,7 @@ std::filesystem::path project_root() {
   return root ? std::filesystem::path(root) : std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
 }
 
-/// A temporary file holding `content`, removed at scope exit.
-class TempFile {
- public:
-  TempFile(const std::string& content, const std::string& suffix) {
-    static int counter = 0;
-    path_ = (std::filesystem::temp_directory_path() /
-             ("tk_vehicle_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + suffix))
-                .string();
-    std::ofstream(path_, std::ios::binary) << content;
-  }
-  ~TempFile() { std::filesystem::remove(path_); }
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
+using tk::test::TempFile;
 
 /// The error read_track throws for `content`, as "file:line: message" with the file name cut off.
 std::string track_error(const std::string& content, const std::string& suffix = ".csv") {
