@@ -143,6 +143,44 @@ void sweep(std::span<const Corners> shapes, double lo, double hi, double ref, Sc
   }
 }
 
+/// The value on (l, r) of a shape's piece that covers it, as a line: its
+/// ends at l and r. k is the corner the piece starts at (-1 or 3: outside).
+std::array<double, 2> piece_on(const Corners& c, int k, double l, double r) {
+  if (k < 0 || k >= 3 || !(c.x[k + 1] > c.x[k])) return {0, 0};
+  const double slope = (c.y[k + 1] - c.y[k]) / (c.x[k + 1] - c.x[k]);
+  return {c.y[k] + slope * (l - c.x[k]), c.y[k] + slope * (r - c.x[k])};
+}
+
+/// sweep() for the common case of two overlapping terms, without scratch
+/// storage: their corners merged in order, two lines per interval, at most
+/// one crossing between them.
+void sweep_pair(const Corners& f, const Corners& g, double lo, double hi, double ref, double& area, double& moment) {
+  std::array<double, 10> breaks{};
+  std::size_t n = 0, i = 0, j = 0;
+  breaks[n++] = lo;
+  while (i < 4 || j < 4) {
+    const double x = (j >= 4 || (i < 4 && f.x[i] <= g.x[j])) ? f.x[i++] : g.x[j++];
+    if (x > breaks[n - 1] && x < hi) breaks[n++] = x;
+  }
+  breaks[n++] = hi;
+  int kf = -1, kg = -1;
+  for (std::size_t b = 0; b + 1 < n; ++b) {
+    const double l = breaks[b], r = breaks[b + 1];
+    while (kf < 3 && f.x[kf + 1] <= l) ++kf;
+    while (kg < 3 && g.x[kg + 1] <= l) ++kg;
+    const auto p = piece_on(f, kf, l, r), q = piece_on(g, kg, l, r);
+    const double d0 = p[0] - q[0], d1 = p[1] - q[1];
+    if ((d0 > 0 && d1 < 0) || (d0 < 0 && d1 > 0)) {
+      const double t = d0 / (d0 - d1), xm = l + t * (r - l), ym = p[0] + t * (p[1] - p[0]);
+      integrate_piece(l, std::max(p[0], q[0]), xm, ym, ref, area, moment);
+      integrate_piece(xm, ym, r, std::max(p[1], q[1]), ref, area, moment);
+    } else {
+      const bool first = d0 + d1 >= 0;  // the same line is on top at both ends
+      integrate_piece(l, first ? p[0] : q[0], r, first ? p[1] : q[1], ref, area, moment);
+    }
+  }
+}
+
 }  // namespace
 
 void add_exact_moments(std::span<const ImpliedTerm> terms, Implication implication, double min, double max, double ref,
@@ -172,7 +210,9 @@ void add_exact_moments(std::span<const ImpliedTerm> terms, Implication implicati
     std::size_t last = first + 1;
     while (last < shapes.size() && shapes[last].x[0] < end) end = std::max(end, shapes[last++].x[3]);
     const double lo = shapes[first].x[0];
-    if (end > min && lo < max)
+    if (end > min && lo < max && last == first + 2)
+      sweep_pair(shapes[first], shapes[first + 1], std::max(lo, min), std::min(end, max), ref, area, moment);
+    else if (end > min && lo < max)
       sweep(std::span<const Corners>(shapes.data() + first, last - first), std::max(lo, min), std::min(end, max), ref,
             scratch, area, moment);
     first = last;

@@ -144,6 +144,43 @@ TEST(FuzzyCentroid, ExactAgreesWithDenseIntegration) {
   }
 }
 
+TEST(FuzzyCentroid, ExactWithVerticalEdgesAndEqualTerms) {
+  // Pairs (the fast two-term path) and triples with steps and coinciding
+  // terms, against a dense midpoint sum (O(h) near a step: looser bound).
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 120; ++trial) {
+    std::vector<ImpliedTerm> terms;
+    for (int k = 0, n = 2 + trial % 2; k < n; ++k) {
+      double v[4];
+      for (double& x : v) x = 100 * u(rng);
+      std::sort(v, v + 4);
+      if (trial % 3 == 0) v[1] = v[0];
+      if (trial % 4 == 0) v[3] = v[2];
+      terms.push_back({Trapezoid{v[0], v[1], v[2], v[3]}, 0.05 + 0.95 * u(rng)});
+    }
+    if (trial % 5 == 0) terms[1] = terms[0];  // the same term twice
+    const Implication imp = trial % 2 ? Implication::minimum : Implication::product;
+    const int n = 400000;
+    const double min = 0, max = 100, h = (max - min) / n;
+    double area = 0, moment = 0;
+    for (int i = 0; i < n; ++i) {
+      const double x = min + (i + 0.5) * h;
+      double y = 0;
+      for (const ImpliedTerm& t : terms) {
+        const double mu = mu_def(t.shape.a, t.shape.b, t.shape.c, t.shape.d, x);
+        y = std::max(y, imp == Implication::minimum ? std::min(mu, t.level) : mu * t.level);
+      }
+      area += y * h;
+      moment += x * y * h;
+    }
+    if (area < 1e-6) continue;
+    const CentroidResult r = exact_centroid(terms, imp, min, max);
+    EXPECT_NEAR(r.area, area, 1e-3) << "trial " << trial;
+    EXPECT_NEAR(r.centroid, moment / area, 1e-3 * (1 + 1 / area)) << "trial " << trial;
+  }
+}
+
 TEST(FuzzyCentroid, DiscreteConvergesToExact) {
   const ImpliedTerm terms[] = {{Trapezoid{0, 0, 2, 4}, 0.8}, {Trapezoid{3, 6, 6, 9}, 0.6}, {Trapezoid{5, 8, 9, 10}, 0.3}};
   const double exact = exact_centroid(terms, Implication::minimum, 0, 10).centroid;
