@@ -21,14 +21,6 @@ struct Corners {
   std::array<double, 4> y;
 };
 
-/// Slopes of the three pieces between corners (0 for a vertical one: never used).
-std::array<double, 3> slopes(const Corners& c) {
-  std::array<double, 3> s{};
-  for (int k = 0; k < 3; ++k)
-    if (c.x[k + 1] > c.x[k]) s[k] = (c.y[k + 1] - c.y[k]) / (c.x[k + 1] - c.x[k]);
-  return s;
-}
-
 Corners corners(const ImpliedTerm& term, Implication implication) {
   const Trapezoid& p = term.shape;
   const double h = term.level;
@@ -42,7 +34,6 @@ struct Scratch {
   std::vector<int> segment;  ///< per shape: the corner its current piece starts at (-1: before it)
   std::vector<double> breaks;
   std::vector<std::array<double, 2>> lines;
-  std::vector<std::array<double, 3>> slopes;
 };
 
 /// Adds the integrals of y and (x - ref) y over the segment (x0, y0)-(x1, y1).
@@ -105,14 +96,20 @@ CentroidResult discrete_centroid(std::span<const ImpliedTerm> terms, Implication
 
 namespace {
 
+/// The value on (l, r) of a shape's piece that covers it, as a line: its
+/// ends at l and r. k is the corner the piece starts at (-1 or 3: outside).
+std::array<double, 2> piece_on(const Corners& c, int k, double l, double r) {
+  if (k < 0 || k >= 3 || !(c.x[k + 1] > c.x[k])) return {0, 0};
+  const double slope = (c.y[k + 1] - c.y[k]) / (c.x[k + 1] - c.x[k]);
+  return {c.y[k] + slope * (l - c.x[k]), c.y[k] + slope * (r - c.x[k])};
+}
+
 /// Integrates the envelope of `shapes` over [lo, hi] by sweeping their corners.
 void sweep(std::span<const Corners> shapes, double lo, double hi, double ref, Scratch& scratch, double& area,
            double& moment) {
   std::vector<int>& segment = scratch.segment;
   std::vector<double>& breaks = scratch.breaks;
   std::vector<std::array<double, 2>>& lines = scratch.lines;
-  scratch.slopes.clear();
-  for (const Corners& c : shapes) scratch.slopes.push_back(slopes(c));
   breaks.clear();
   breaks.push_back(lo);
   breaks.push_back(hi);
@@ -133,22 +130,13 @@ void sweep(std::span<const Corners> shapes, double lo, double hi, double ref, Sc
       int& p = segment[j];
       while (p < 3 && c.x[p + 1] <= l) ++p;
       if (p < 0 || p >= 3) continue;  // outside the term: 0
-      const double slope = scratch.slopes[j][p];
-      lines.push_back({c.y[p] + slope * (l - c.x[p]), c.y[p] + slope * (r - c.x[p])});
+      lines.push_back(piece_on(c, p, l, r));
     }
     if (lines.size() == 1)
       integrate_piece(l, lines[0][0], r, lines[0][1], ref, area, moment);
     else if (!lines.empty())
       integrate_envelope(lines, l, r, ref, area, moment);
   }
-}
-
-/// The value on (l, r) of a shape's piece that covers it, as a line: its
-/// ends at l and r. k is the corner the piece starts at (-1 or 3: outside).
-std::array<double, 2> piece_on(const Corners& c, int k, double l, double r) {
-  if (k < 0 || k >= 3 || !(c.x[k + 1] > c.x[k])) return {0, 0};
-  const double slope = (c.y[k + 1] - c.y[k]) / (c.x[k + 1] - c.x[k]);
-  return {c.y[k] + slope * (l - c.x[k]), c.y[k] + slope * (r - c.x[k])};
 }
 
 /// sweep() for the common case of two overlapping terms, without scratch
@@ -183,48 +171,45 @@ void sweep_pair(const Corners& f, const Corners& g, double lo, double hi, double
 
 }  // namespace
 
-void add_exact_moments(std::span<const ImpliedTerm> terms, Implication implication, double min, double max, double ref,
-                       double& area, double& moment) {
-  if (terms.size() == 1 && terms[0].level > 0 && terms[0].shape.a >= min && terms[0].shape.d <= max) {
-    // A lone term inside the range: a trapezoid of height h with corners
-    // a, b, c, d, area h (d + c - b - a) / 2 and first moment
-    // h (d^2 + dc + c^2 - b^2 - ba - a^2) / 6, taken about ref.
-    const Corners t = corners(terms[0], implication);
-    const double a = t.x[0] - ref, b = t.x[1] - ref, c = t.x[2] - ref, d = t.x[3] - ref, h = t.y[1];
-    area += 0.5 * h * (d + c - b - a);
-    moment += h / 6 * (d * d + d * c + c * c - b * b - b * a - a * a);
-    return;
-  }
+CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication implication, double min, double max) {
+  const double ref = 0.5 * (min + max);  // moments about the middle keep their digits
+  double area = 0, moment = 0;
   // Reused between calls: evaluation allocates nothing once warm.
   thread_local Scratch scratch;
   std::vector<Corners>& shapes = scratch.shapes;
   shapes.clear();
   for (const ImpliedTerm& t : terms)
     if (t.level > 0) shapes.push_back(corners(t, implication));
-  // By where they start, so that terms whose supports overlap come together.
-  if (shapes.size() > 1)
-    std::sort(shapes.begin(), shapes.end(), [](const Corners& a, const Corners& b) { return a.x[0] < b.x[0]; });
+  // By where they start, so that terms whose supports overlap come together
+  // (a caller that keeps its terms in that order saves the sort).
+  const auto by_start = [](const Corners& a, const Corners& b) { return a.x[0] < b.x[0]; };
+  if (!std::is_sorted(shapes.begin(), shapes.end(), by_start)) std::sort(shapes.begin(), shapes.end(), by_start);
   for (std::size_t first = 0; first < shapes.size();) {
     // A cluster: the terms whose supports overlap the first one's, in a chain.
     double end = shapes[first].x[3];
     std::size_t last = first + 1;
     while (last < shapes.size() && shapes[last].x[0] < end) end = std::max(end, shapes[last++].x[3]);
     const double lo = shapes[first].x[0];
-    if (end > min && lo < max && last == first + 2)
-      sweep_pair(shapes[first], shapes[first + 1], std::max(lo, min), std::min(end, max), ref, area, moment);
-    else if (end > min && lo < max)
-      sweep(std::span<const Corners>(shapes.data() + first, last - first), std::max(lo, min), std::min(end, max), ref,
-            scratch, area, moment);
+    if (last == first + 1 && lo >= min && end <= max) {
+      // A lone term inside the range: a trapezoid of height h with corners
+      // a, b, c, d, area h (d + c - b - a) / 2 and first moment
+      // h (d^2 + dc + c^2 - b^2 - ba - a^2) / 6, taken about ref.
+      const Corners& t = shapes[first];
+      const double a = t.x[0] - ref, b = t.x[1] - ref, c = t.x[2] - ref, d = t.x[3] - ref, h = t.y[1];
+      area += 0.5 * h * (d + c - b - a);
+      moment += h / 6 * (d * d + d * c + c * c - b * b - b * a - a * a);
+    } else if (end > min && lo < max) {
+      if (last == first + 2)
+        sweep_pair(shapes[first], shapes[first + 1], std::max(lo, min), std::min(end, max), ref, area, moment);
+      else
+        sweep(std::span<const Corners>(shapes.data() + first, last - first), std::max(lo, min), std::min(end, max),
+              ref, scratch, area, moment);
+    }
     first = last;
   }
-}
-
-CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication implication, double min, double max) {
-  const double ref = 0.5 * (min + max);  // moments about the middle keep their digits
-  double area = 0, moment = 0;
-  add_exact_moments(terms, implication, min, max, ref, area, moment);
   if (!(area > 0)) return {kNaN, 0};
   return {ref + moment / area, area};
 }
+
 
 }  // namespace tk::fuzzy

@@ -35,13 +35,8 @@ CentroidResult discrete_centroid(std::span<const ImpliedTerm> terms, Implication
 
 /// The exact centre of gravity over [min, max]: the aggregate is linear
 /// between the terms' corners and the points where two terms cross, so the
-/// integrals of y and x y have closed forms piece by piece.
+/// integrals of y and x y have closed forms piece by piece. Terms given in
+/// the order of their first corner (a) are not sorted again.
 CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication implication, double min, double max);
-
-/// The building block of exact_centroid: adds the integrals of y and of
-/// (x - ref) y over [min, max] of the aggregate of `terms`. Terms whose
-/// supports cannot overlap may be passed in separate calls.
-void add_exact_moments(std::span<const ImpliedTerm> terms, Implication implication, double min, double max, double ref,
-                       double& area, double& moment);
 
 }  // namespace tk::fuzzy

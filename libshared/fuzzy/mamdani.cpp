@@ -100,21 +100,6 @@ struct Kernel<TNorm::hamacher> {
   static double inner_of_activation(double a) { return a > 0 ? 1 / a - 1 : kInf; }
 };
 
-/// Term indices grouped so that no support in one group overlaps one in another.
-std::vector<std::vector<std::size_t>> overlap_groups(const std::vector<Trapezoid>& terms) {
-  std::vector<std::size_t> order(terms.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return terms[x].a < terms[y].a; });
-  std::vector<std::vector<std::size_t>> groups;
-  double end = -kInf;
-  for (std::size_t i : order) {
-    if (groups.empty() || !(terms[i].a < end)) groups.emplace_back();
-    groups.back().push_back(i);
-    end = groups.back().size() == 1 ? terms[i].d : std::max(end, terms[i].d);
-  }
-  return groups;
-}
-
 }  // namespace
 
 Mamdani::Mamdani(const Engine& engine)
@@ -138,9 +123,11 @@ Mamdani::Mamdani(const Engine& engine)
     out.defuzzifier = v.defuzzifier;
     out.first_level = level_count;
     for (const Term& t : v.terms) out.terms.push_back(t.points);
-    out.grid = SampleGrid(v.min, v.max, v.defuzzifier.resolution);
-    for (const Trapezoid& t : out.terms) out.grid_terms.push_back(out.grid.prepare(t));
-    out.overlap_groups = overlap_groups(out.terms);
+    prepare_grid(out);
+    // The exact centroid takes its terms in the order of their first corner.
+    for (std::size_t t = 0; t < out.terms.size(); ++t) out.by_start.push_back(t);
+    std::stable_sort(out.by_start.begin(), out.by_start.end(),
+                     [&](std::size_t x, std::size_t y) { return out.terms[x].a < out.terms[y].a; });
     level_count += out.terms.size();
     level_output_.insert(level_output_.end(), out.terms.size(), o);
     outputs_.push_back(std::move(out));
@@ -166,10 +153,14 @@ void Mamdani::set_defuzzifier(const Defuzzifier& defuzzifier) {
   if (defuzzifier.resolution < 1) throw Error("the centroid's resolution must be at least 1");
   for (CompiledOutput& out : outputs_) {
     out.defuzzifier = defuzzifier;
-    out.grid = SampleGrid(out.min, out.max, defuzzifier.resolution);
-    out.grid_terms.clear();
-    for (const Trapezoid& t : out.terms) out.grid_terms.push_back(out.grid.prepare(t));
+    prepare_grid(out);
   }
+}
+
+void Mamdani::prepare_grid(CompiledOutput& out) {
+  out.grid = SampleGrid(out.min, out.max, out.defuzzifier.resolution);
+  out.grid_terms.clear();
+  for (const Trapezoid& t : out.terms) out.grid_terms.push_back(out.grid.prepare(t));
 }
 
 template <TNorm T>
@@ -195,7 +186,7 @@ void Mamdani::fire_rules() {
 void Mamdani::fire_rules_generic() {
   std::fill(levels_.begin(), levels_.end(), 0.0);
   std::fill(fired_.begin(), fired_.end(), 0u);
-  std::vector<double> mu;
+  std::vector<double>& mu = rule_degrees_;
   for (const CompiledRule& r : rules_) {
     mu.clear();
     for (std::size_t i = 0; i < r.antecedent_count; ++i) mu.push_back(degrees_[antecedents_[r.first_antecedent + i]]);
@@ -237,15 +228,10 @@ void Mamdani::evaluate(std::span<const double> inputs, std::span<double> outputs
     if (out.defuzzifier.kind == Defuzzifier::Kind::discrete) {
       c = out.grid.centroid(out.grid_terms, levels, implication_);
     } else {
-      const double ref = 0.5 * (out.min + out.max);
-      double area = 0, moment = 0;
-      for (const auto& group : out.overlap_groups) {
-        implied_.clear();
-        for (std::size_t t : group)
-          if (levels[t] > 0) implied_.push_back({out.terms[t], levels[t]});
-        if (!implied_.empty()) add_exact_moments(implied_, implication_, out.min, out.max, ref, area, moment);
-      }
-      if (area > 0) c = {ref + moment / area, area};
+      implied_.clear();
+      for (std::size_t t : out.by_start)
+        if (levels[t] > 0) implied_.push_back({out.terms[t], levels[t]});
+      if (!implied_.empty()) c = exact_centroid(implied_, implication_, out.min, out.max);
     }
     // No rule fired, or the fired terms have no area inside the range.
     outputs[o] = c.area > 0 ? c.centroid : out.default_value;

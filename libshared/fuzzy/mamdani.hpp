@@ -56,9 +56,7 @@ class Mamdani {
     std::size_t first_level = 0;  ///< index of its first term in levels_
     SampleGrid grid{0, 1, 1};
     std::vector<GridTerm> grid_terms;  ///< terms prepared for the grid
-    /// The terms in groups whose supports overlap (in a chain): apart, the
-    /// exact centroid's integrals of different groups simply add up.
-    std::vector<std::vector<std::size_t>> overlap_groups;
+    std::vector<std::size_t> by_start;  ///< term indices by first corner, as the exact centroid takes them
   };
   struct CompiledRule {
     std::size_t first_antecedent = 0, antecedent_count = 0;  ///< into antecedents_
@@ -69,6 +67,8 @@ class Mamdani {
   template <TNorm T>
   void fire_rules();
   void fire_rules_generic();
+  /// The output's sample grid and its terms prepared for it, at its resolution.
+  static void prepare_grid(CompiledOutput& out);
 
   TNorm conjunction_;
   Implication implication_;
@@ -84,6 +84,7 @@ class Mamdani {
   std::vector<double> levels_;   ///< activation of each output term
   std::vector<unsigned> fired_;
   std::vector<ImpliedTerm> implied_;
+  std::vector<double> rule_degrees_;  ///< scratch of fire_rules_generic
 };
 
 }  // namespace tk::fuzzy

@@ -1,7 +1,8 @@
 /// @file membership.hpp
-/// @brief Membership functions of fuzzy terms: the triangle and the
-/// trapezoid (the shapes the seeds' controllers use). A vertical edge (two
-/// equal vertices) is a step: the term is fully true from that vertex on.
+/// @brief The membership function of fuzzy terms: the trapezoid, and the
+/// triangle as a trapezoid with b == c (see Term in engine.hpp). A vertical
+/// edge (two equal vertices) is a step: the term is fully true from that
+/// vertex on.
 #pragma once
 
 #include <cmath>
@@ -19,13 +20,6 @@ struct Trapezoid {
     if (x <= c) return 1;
     return x < d ? (d - x) / (d - c) : (c == d ? 1 : 0);  // x == d: 0 unless the edge is vertical
   }
-};
-
-/// Rises from a to b, falls from b to c.
-struct Triangle {
-  double a = 0, b = 0, c = 0;
-
-  double operator()(double x) const { return Trapezoid{a, b, b, c}(x); }
 };
 
 }  // namespace tk::fuzzy

@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "fuzzy/engine.hpp"
 #include "fuzzy/membership.hpp"
 #include "fuzzy/tnorm.hpp"
 
@@ -105,12 +106,12 @@ TEST(Membership, TrapezoidAndTriangle) {
   EXPECT_EQ(step(5), 1);
   EXPECT_EQ(step(5.0001), 0);
   EXPECT_EQ(step(-0.0001), 0);
-  const tk::fuzzy::Triangle tri{0, 2, 6};
-  EXPECT_DOUBLE_EQ(tri(1), 0.5);
-  EXPECT_EQ(tri(2), 1);
-  EXPECT_DOUBLE_EQ(tri(5), 0.25);
-  EXPECT_EQ(tri(6), 0);
-  EXPECT_TRUE(std::isnan(tri(NAN)));
+  const tk::fuzzy::Term tri = tk::fuzzy::Term::triangle("T", 0, 2, 6);
+  EXPECT_DOUBLE_EQ(tri.membership(1), 0.5);
+  EXPECT_EQ(tri.membership(2), 1);
+  EXPECT_DOUBLE_EQ(tri.membership(5), 0.25);
+  EXPECT_EQ(tri.membership(6), 0);
+  EXPECT_TRUE(std::isnan(tri.membership(NAN)));
 }
 
 }  // namespace
