@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <random>
 
 namespace tk::fuzzy {
 namespace {
@@ -26,13 +27,8 @@ double median(std::vector<double> v) {
 std::vector<std::array<double, 3>> protocol_triples(int adc_bits) {
   const std::uint64_t scale = (std::uint64_t{1} << adc_bits);
   std::vector<std::array<double, 3>> triples(1024);
-  std::uint64_t state = 0x9E3779B97F4A7C15ull;  // splitmix64: the same numbers everywhere
-  auto next = [&] {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return static_cast<double>((z ^ (z >> 31)) % scale);
-  };
+  std::mt19937_64 random(2020);  // its output is fixed by the standard: the same triples everywhere
+  auto next = [&] { return static_cast<double>(random() % scale); };
   for (auto& t : triples) t = {next(), next(), next()};
   return triples;
 }

@@ -6,43 +6,13 @@
 
 #include <algorithm>
 #include <numbers>
-#include <random>
 
 #include "io/error.hpp"
+#include "sim/gaussian_noise.hpp"
 
 namespace tk::machining {
 
 namespace {
-
-/// Gaussian noise from the Box-Muller transform over mt19937_64, whose
-/// output the standard fixes: the same seed gives the same noise with any
-/// standard library (std::normal_distribution's algorithm is unspecified).
-class GaussianNoise {
- public:
-  GaussianNoise(double sigma, std::uint64_t seed) : sigma_(sigma), random_(seed) {}
-
-  double next() {
-    if (sigma_ == 0) return 0;
-    if (has_spare_) {
-      has_spare_ = false;
-      return sigma_ * spare_;
-    }
-    const double u1 = 1.0 - uniform();  // (0, 1]: log is finite
-    const double u2 = uniform();
-    const double radius = std::sqrt(-2.0 * std::log(u1));
-    spare_ = radius * std::sin(2 * std::numbers::pi * u2);
-    has_spare_ = true;
-    return sigma_ * radius * std::cos(2 * std::numbers::pi * u2);
-  }
-
- private:
-  double uniform() { return static_cast<double>(random_() >> 11) * 0x1.0p-53; }  // [0, 1)
-
-  double sigma_;
-  std::mt19937_64 random_;
-  double spare_ = 0;
-  bool has_spare_ = false;
-};
 
 /// The override samples of one segment, summarised when the tool leaves it.
 class SegmentRecorder {
@@ -174,7 +144,7 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
   };
 
   RunStats run;
-  GaussianNoise noise(params.noise_pct, params.seed);
+  sim::GaussianNoise noise(params.noise_pct, params.seed);
   FirstOrderLag signal(params.lag_s, params.ipo_s);
   double override_pct = control ? control->override_pct() : 100;
   double z = params.profile.front().z_from_mm;

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "io/error.hpp"
+#include "sim/gaussian_noise.hpp"
 
 namespace tk::vehicle {
 
@@ -19,36 +20,6 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kCommandLimit = 255;
 constexpr double kLostCoverage = 0.1, kFoundCoverage = 0.5;  // excursion hysteresis
 constexpr double kStillMm = 1.0, kStillRad = 0.02;
-
-/// splitmix64 and Box-Muller: the same noise for a seed on every platform
-/// (std::normal_distribution is not specified bit for bit).
-class Noise {
- public:
-  explicit Noise(std::uint64_t seed) : state_(seed) {}
-  double gaussian() {
-    if (has_spare_) {
-      has_spare_ = false;
-      return spare_;
-    }
-    const double u1 = (static_cast<double>(next() >> 11) + 1.0) * 0x1.0p-53;  // (0, 1]
-    const double u2 = static_cast<double>(next() >> 11) * 0x1.0p-53;
-    const double r = std::sqrt(-2.0 * std::log(u1)), a = 2 * kPi * u2;
-    spare_ = r * std::sin(a);
-    has_spare_ = true;
-    return r * std::cos(a);
-  }
-
- private:
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  std::uint64_t state_;
-  double spare_ = 0;
-  bool has_spare_ = false;
-};
 
 /// A point followed along the track: the running piece index keeps queries
 /// cheap and progress continuous; a scan of the whole line settles it when
@@ -81,7 +52,7 @@ struct Sample {
   double max_coverage = 0;
 };
 
-Sample sense(const Track& track, const CarParameters& car, const Pose& pose, Noise& noise) {
+Sample sense(const Track& track, const CarParameters& car, const Pose& pose, sim::GaussianNoise& noise) {
   // Beyond 6 sigma past the edge the spot sees no line (coverage < 1e-9).
   const double reach = track.line_width_mm() / 2 + 6 * car.spot_sigma_mm + 1e-9;
   const std::array<Point, 3> spots = sensor_positions(car, pose);
@@ -91,7 +62,7 @@ Sample sense(const Track& track, const CarParameters& car, const Pose& pose, Noi
     const double d = track.distance_within(spots[i], reach);
     const double coverage = std::isfinite(d) ? spot_coverage(d, track.line_width_mm(), car.spot_sigma_mm) : 0.0;
     out.max_coverage = std::max(out.max_coverage, coverage);
-    const double raw = car.floor_counts + (car.line_counts - car.floor_counts) * coverage + car.noise_counts * noise.gaussian();
+    const double raw = car.floor_counts + (car.line_counts - car.floor_counts) * coverage + noise.next();
     counts[i] = std::round(std::clamp(raw, 0.0, car.full_scale()));  // an ADC gives integers within its range
   }
   out.readings = {counts[0], counts[1], counts[2]};
@@ -205,7 +176,7 @@ LapResult run_laps(const Track& track, const CarParameters& car, const LapOption
 
   DriveBody body(car, Pose{track.start().x, track.start().y, track.start_heading()});
   Follower axle(track), bar(track);
-  Noise noise(options.seed);
+  sim::GaussianNoise noise(car.noise_counts, options.seed);
   std::deque<std::pair<double, MotorCommand>> pending;  // commands on their way to the motors
   MotorCommand active;
   SensorReadings last_readings;

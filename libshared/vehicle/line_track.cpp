@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cad/segment_geometry.hpp"
 #include "io/error.hpp"
 #include "io/record_fields.hpp"
 #include "io/record_reader.hpp"
@@ -18,15 +19,13 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double cross(Point o, Point a, Point b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-
 bool within_box(Point a, Point b, Point p) {
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
 }
 
 /// Segments ab and cd touch or cross (end points included).
 bool segments_meet(Point a, Point b, Point c, Point d) {
-  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
+  const double d1 = cad::orient(c, d, a), d2 = cad::orient(c, d, b), d3 = cad::orient(a, b, c), d4 = cad::orient(a, b, d);
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
   return (d1 == 0 && within_box(c, d, a)) || (d2 == 0 && within_box(c, d, b)) || (d3 == 0 && within_box(a, b, c)) ||
          (d4 == 0 && within_box(a, b, d));

@@ -13,11 +13,11 @@
 #include <utility>
 #include <vector>
 
+#include "cad/drawing.hpp"
+
 namespace tk::vehicle {
 
-struct Point {
-  double x = 0, y = 0;
-};
+using cad::Point;
 
 /// Black electrical tape, the usual line of hobby tracks.
 inline constexpr double kTapeWidthMm = 19.0;
