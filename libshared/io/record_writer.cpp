@@ -128,3 +128,43 @@ void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t i
 }
 
 }  // namespace tk::io
+
+namespace tk::io {
+
+RecordFile::RecordFile(const std::string& path, OutputFormat format) : path_(path), file_(std::fopen(path.c_str(), "w")) {
+  if (!file_) throw Error(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
+  writer_ = std::make_unique<RecordWriter>(format, file_);
+}
+
+RecordFile::~RecordFile() {
+  if (file_) std::fclose(file_);
+}
+
+void RecordFile::write(const Record& record) {
+  try {
+    writer_->write(record);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", path_, e.what()));
+  }
+}
+
+void RecordFile::write_numbers(std::span<const double> values, std::uint64_t integers) {
+  try {
+    writer_->write_numbers(values, integers);
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", path_, e.what()));
+  }
+}
+
+void RecordFile::close() {
+  try {
+    writer_->flush();
+  } catch (const Error& e) {
+    throw Error(fmt::format("{}: {}", path_, e.what()));
+  }
+  const int status = std::fclose(file_);
+  file_ = nullptr;
+  if (status != 0) throw Error(fmt::format("cannot write {}: {}", path_, std::strerror(errno)));
+}
+
+}  // namespace tk::io

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -48,6 +49,28 @@ class RecordWriter {
   std::string line_;
   bool numbers_header_done_ = false;
   double last_flush_ = 0;  ///< seconds, CLOCK_MONOTONIC_COARSE
+};
+
+/// Records in a file of their own beside the main output (a trace of a
+/// simulation): the same formats, every error naming the file.
+class RecordFile {
+ public:
+  /// Creates or truncates `path`; Error when it cannot be written.
+  RecordFile(const std::string& path, OutputFormat format);
+  ~RecordFile();
+  RecordFile(const RecordFile&) = delete;
+  RecordFile& operator=(const RecordFile&) = delete;
+
+  void declare_fields(std::vector<std::string> names) { writer_->declare_fields(std::move(names)); }
+  void write(const Record& record);
+  void write_numbers(std::span<const double> values, std::uint64_t integers);
+  /// Flushes and closes the file; Error naming it on a write failure.
+  void close();
+
+ private:
+  std::string path_;
+  std::FILE* file_;
+  std::unique_ptr<RecordWriter> writer_;
 };
 
 /// A record field as CSV cell text: strings raw, numbers and booleans as in

@@ -4,10 +4,7 @@
 /// cycle) and as a closed-loop simulation of a turning pass (--simulate).
 #include <fmt/format.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <limits>
 #include <memory>
 
@@ -60,45 +57,25 @@ void filter_records(const std::vector<std::string>& inputs, const FeedOverridePa
 class TraceFile {
  public:
   TraceFile(const std::string& path, tk::io::OutputFormat format, bool modified, double programmed_feed)
-      : path_(path), file_(std::fopen(path.c_str(), "w")), modified_(modified), feed_(programmed_feed) {
-    if (!file_) throw tk::Error(fmt::format("cannot write the trace '{}': {}", path, std::strerror(errno)));
-    writer_ = std::make_unique<tk::io::RecordWriter>(format, file_);
+      : file_(path, format), modified_(modified), feed_(programmed_feed) {
     std::vector<std::string> fields{"t", "z", "depth", "load_true", "load"};
     if (modified) fields.push_back("load_avg");
     fields.insert(fields.end(), {"wk", "override", "feed", "feed_out"});
-    writer_->declare_fields(fields);
-  }
-  ~TraceFile() {
-    if (file_) std::fclose(file_);
+    file_.declare_fields(fields);
   }
   void add(const TraceSample& s) {
     std::vector<double>& v = values_;
     v.assign({s.t_s, s.z_mm, s.depth_mm, s.load_true_pct, s.load_pct});
     if (modified_) v.push_back(s.step.load_used);
     v.insert(v.end(), {s.step.factor, s.step.override_pct, feed_, feed_ * s.step.override_pct / 100});
-    try {
-      writer_->write_numbers(v, 0);
-    } catch (const tk::Error& e) {
-      throw tk::Error(fmt::format("the trace '{}': {}", path_, e.what()));
-    }
+    file_.write_numbers(v, 0);
   }
-  void close() {
-    try {
-      writer_->flush();
-    } catch (const tk::Error& e) {
-      throw tk::Error(fmt::format("the trace '{}': {}", path_, e.what()));
-    }
-    const int status = std::fclose(file_);
-    file_ = nullptr;
-    if (status != 0) throw tk::Error(fmt::format("cannot write the trace '{}': {}", path_, std::strerror(errno)));
-  }
+  void close() { file_.close(); }
 
  private:
-  std::string path_;
-  std::FILE* file_;
+  tk::io::RecordFile file_;
   bool modified_;
   double feed_;
-  std::unique_ptr<tk::io::RecordWriter> writer_;
   std::vector<double> values_;
 };
 

@@ -117,16 +117,10 @@ struct ControllerOptions {
       o.speed_factor = speed_factor;
       o.implication = implication == "product" ? fuzzy::Implication::product : fuzzy::Implication::minimum;
       o.conjunction = t.value_or(TNorm::minimum);
-      std::vector<double> corners;
-      try {
-        corners = cli::parse_numbers(backward_slowly, "--backward-slowly", 4);
-        e = fuzzy::line_follower_engine(
-            [&] {
-              o.backward_slowly = {corners[0], corners[1], corners[2], corners[3]};
-              return o;
-            }());
-      } catch (const UsageError&) {
-        throw;
+      try {  // a bad option value, or corners out of order: both usage errors
+        const std::vector<double> c = cli::parse_numbers(backward_slowly, "--backward-slowly", 4);
+        o.backward_slowly = {c[0], c[1], c[2], c[3]};
+        e = fuzzy::line_follower_engine(o);
       } catch (const Error& err) {
         throw UsageError(err.what());
       }
@@ -183,11 +177,11 @@ void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
 void run_bench(cli::ToolApp& tool, const ControllerOptions& options, double seconds) {
   if (!(seconds > 0) || seconds > 3600) throw UsageError("--seconds must be above 0 and at most 3600");
   io::RecordWriter writer(tool.output_format());
+  const auto triples = fuzzy::protocol_triples(options.adc_bits);
   for (TNorm t : options.chosen_tnorms(true)) {
     const fuzzy::Engine engine = options.engine(t);
     if (engine.inputs.size() != 3) throw Error("bench needs a controller with three inputs (the sensors)");
     fuzzy::Mamdani controller = options.controller(engine);
-    const auto triples = fuzzy::protocol_triples(options.adc_bits);
     const fuzzy::InferenceTiming timing = fuzzy::time_inferences(controller, triples, seconds);
     const fuzzy::Defuzzifier& d = engine.outputs[0].defuzzifier;
     Record r;
@@ -247,12 +241,10 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
 
   io::RecordWriter writer(tool.output_format());
   std::vector<vehicle::LapRun> runs;
-  std::FILE* trace_file = nullptr;
-  std::unique_ptr<io::RecordWriter> trace_writer;
+  std::unique_ptr<io::RecordFile> trace_file;
   if (!laps.trace_path.empty()) {
-    trace_file = std::fopen(laps.trace_path.c_str(), "w");
-    if (!trace_file) throw Error("cannot write " + laps.trace_path);
-    trace_writer = std::make_unique<io::RecordWriter>(tool.output_format(), trace_file);
+    trace_file = std::make_unique<io::RecordFile>(laps.trace_path, tool.output_format());
+    trace_file->declare_fields({"tnorm", "t", "x", "y", "heading", "left", "mid", "right", "left_motor", "right_motor"});
   }
   for (TNorm t : options.chosen_tnorms(false)) {
     const fuzzy::Engine engine = options.engine(t);
@@ -266,7 +258,7 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
       return vehicle::MotorCommand{out[0], out[1]};
     };
     std::vector<vehicle::TracePoint> trace;
-    const bool tracing = !laps.svg_path.empty() || trace_writer;
+    const bool tracing = !laps.svg_path.empty() || trace_file;
     const vehicle::LapResult result = vehicle::run_laps(track, car, run, drive, tracing ? &trace : nullptr);
     const std::string label = tnorm_label(engine);
     Record r;
@@ -283,14 +275,9 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
     r["readings_at_end"] = {s.left, s.mid, s.right};
     r["distance_mm"] = result.distance_mm;
     r["latency_ms"] = laps.latency_ms;
-    if (tool.common().csv) {
-      r["lap_times_s"] = r["lap_times_s"].dump();
-      r["readings_at_end"] = r["readings_at_end"].dump();
-    }
-    writer.write(r);
+    writer.write(r);  // in CSV the arrays are JSON text in one cell
     writer.flush();
-    if (trace_writer) {
-      trace_writer->declare_fields({"tnorm", "t", "x", "y", "heading", "left", "mid", "right", "left_motor", "right_motor"});
+    if (trace_file) {
       for (const auto& p : trace) {
         Record tr;
         tr["tnorm"] = label;
@@ -303,15 +290,12 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
         tr["right"] = p.readings.right;
         tr["left_motor"] = p.command.left;
         tr["right_motor"] = p.command.right;
-        trace_writer->write(tr);
+        trace_file->write(tr);
       }
     }
     if (!laps.svg_path.empty()) runs.emplace_back(label, std::move(trace));
   }
-  if (trace_writer) {
-    trace_writer->flush();
-    if (std::fclose(trace_file) != 0) throw Error("cannot write " + laps.trace_path);
-  }
+  if (trace_file) trace_file->close();
   if (!laps.svg_path.empty()) vehicle::write_lap_svg(laps.svg_path, track, runs);
 }
 
