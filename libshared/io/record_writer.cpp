@@ -100,13 +100,13 @@ void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t i
       fmt::format_to(std::back_inserter(line_), "{}", values[i]);
   };
   if (format_ == OutputFormat::csv) {
-    if (!numbers_header_done_) {
-      for (std::size_t i = 0; i < declared_.size(); ++i) {
+    if (columns_.empty()) {  // the header, once, whichever of write() and write_numbers() comes first
+      columns_ = declared_;
+      for (std::size_t i = 0; i < columns_.size(); ++i) {
         if (i) line_ += ',';
-        append_csv_field(line_, declared_[i]);
+        append_csv_field(line_, columns_[i]);
       }
       line_ += '\n';
-      numbers_header_done_ = true;
     }
     for (std::size_t i = 0; i < values.size(); ++i) {
       if (i) line_ += ',';

@@ -47,7 +47,6 @@ class RecordWriter {
   std::vector<std::string> declared_;
   std::vector<std::string> columns_;
   std::string line_;
-  bool numbers_header_done_ = false;
   double last_flush_ = 0;  ///< seconds, CLOCK_MONOTONIC_COARSE
 };
 

@@ -247,3 +247,29 @@ TEST(RecordFields, NumbersFromJsonAndCsvText) {
   EXPECT_EQ(message("nan"), "pos.csv:7: field 'nan' is not finite");
   EXPECT_EQ(message("big"), "pos.csv:7: field 'big' is out of range: '1e400'");
 }
+
+namespace {
+
+TEST(RecordFile, WritesBothFormatsAndNamesTheFileOnErrors) {
+  const std::string path = (std::filesystem::temp_directory_path() / "tk_record_file_test.csv").string();
+  {
+    tk::io::RecordFile file(path, tk::io::OutputFormat::csv);
+    file.declare_fields({"t", "x"});
+    const double values[] = {0.5, 3};
+    file.write_numbers(values, 0b10);
+    file.write(tk::Record{{"t", 1}, {"x", "a,b"}});
+    file.close();
+  }
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "t,x\n0.5,3\n1,\"a,b\"\n");
+  std::filesystem::remove(path);
+  try {
+    tk::io::RecordFile bad("/nonexistent-dir/trace.jsonl", tk::io::OutputFormat::json_lines);
+    FAIL() << "no error";
+  } catch (const tk::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/trace.jsonl"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
