@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <optional>
 #include <cmath>
 #include <string>
 
@@ -77,6 +78,17 @@ std::pair<unsigned, unsigned> parse_shard(std::string_view text, std::string_vie
   return {static_cast<unsigned>(index - 1), static_cast<unsigned>(count)};
 }
 
+namespace {
+/// One finite decimal number (a leading '+' allowed), or nullopt.
+std::optional<double> finite_number(std::string_view part) {
+  if (part.starts_with('+')) part.remove_prefix(1);
+  double value = 0;
+  const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+  if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+}  // namespace
+
 std::vector<double> parse_numbers(std::string_view text, std::string_view option, std::size_t count) {
   const auto bad = [&] {
     return Error(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' is not " + std::to_string(count) +
@@ -85,15 +97,34 @@ std::vector<double> parse_numbers(std::string_view text, std::string_view option
   std::vector<double> values;
   for (std::size_t at = 0; at <= text.size();) {
     const std::size_t comma = std::min(text.find(',', at), text.size());
-    std::string_view part = text.substr(at, comma - at);
-    if (part.starts_with('+')) part.remove_prefix(1);
-    double value = 0;
-    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
-    if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value)) throw bad();
-    values.push_back(value);
+    const std::optional<double> value = finite_number(text.substr(at, comma - at));
+    if (!value) throw bad();
+    values.push_back(*value);
     at = comma + 1;
   }
   if (values.size() != count) throw bad();
+  return values;
+}
+
+std::vector<double> parse_grid(std::string_view text, std::string_view option, std::size_t max_values) {
+  const auto bad = [&](const std::string& why) {
+    return Error(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' " + why);
+  };
+  std::vector<std::optional<double>> parts;
+  for (std::size_t at = 0; at <= text.size();) {
+    const std::size_t colon = std::min(text.find(':', at), text.size());
+    parts.push_back(finite_number(text.substr(at, colon - at)));
+    at = colon + 1;
+  }
+  if ((parts.size() != 1 && parts.size() != 3) || std::find(parts.begin(), parts.end(), std::nullopt) != parts.end())
+    throw bad("is not a number or FROM:TO:STEP");
+  if (parts.size() == 1) return {*parts[0]};
+  const double from = *parts[0], to = *parts[1], step = *parts[2];
+  if (!(step > 0) || to < from) throw bad("needs FROM <= TO and a positive STEP");
+  const double count = std::floor((to - from) / step * (1 + 1e-12)) + 1;  // TO itself when the steps land on it
+  if (count > static_cast<double>(max_values)) throw bad("has more than " + std::to_string(max_values) + " values");
+  std::vector<double> values;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) values.push_back(from + static_cast<double>(i) * step);
   return values;
 }
 

@@ -25,4 +25,9 @@ std::pair<unsigned, unsigned> parse_shard(std::string_view text, std::string_vie
 /// naming `option` for anything else.
 std::vector<double> parse_numbers(std::string_view text, std::string_view option, std::size_t count);
 
+/// A number, or "FROM:TO:STEP" for FROM, FROM+STEP, ... up to TO (included
+/// when a step lands on it), as a sweep's grids take them. Throws Error
+/// naming `option` for anything else or more than `max_values` values.
+std::vector<double> parse_grid(std::string_view text, std::string_view option, std::size_t max_values = 1000000);
+
 }  // namespace tk::cli

@@ -1,0 +1,103 @@
+/// @file reference.cpp
+#include "control/reference.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/error.hpp"
+#include "io/record_fields.hpp"
+#include "io/record_reader.hpp"
+
+namespace tk::control {
+
+namespace {
+void require_finite(double v, const char* what) {
+  if (!std::isfinite(v)) throw Error(fmt::format("the reference {} must be a finite number, not {}", what, v));
+}
+}  // namespace
+
+Reference Reference::sine(double amplitude_mm, double omega_rad_s) {
+  require_finite(amplitude_mm, "amplitude");
+  require_finite(omega_rad_s, "frequency");
+  Reference r;
+  r.kind_ = Kind::sine, r.p1_ = amplitude_mm, r.p2_ = omega_rad_s;
+  r.description_ = fmt::format("{:g} mm sin({:g} rad/s t)", amplitude_mm, omega_rad_s);
+  return r;
+}
+
+Reference Reference::step(double height_mm, double at_s) {
+  require_finite(height_mm, "step height");
+  require_finite(at_s, "step time");
+  Reference r;
+  r.kind_ = Kind::step, r.p1_ = height_mm, r.p2_ = at_s;
+  r.description_ = fmt::format("{:g} mm step at {:g} s", height_mm, at_s);
+  return r;
+}
+
+Reference Reference::ramp(double slope_mm_s, double at_s) {
+  require_finite(slope_mm_s, "ramp slope");
+  require_finite(at_s, "ramp start");
+  Reference r;
+  r.kind_ = Kind::ramp, r.p1_ = slope_mm_s, r.p2_ = at_s;
+  r.description_ = fmt::format("{:g} mm/s ramp from {:g} s", slope_mm_s, at_s);
+  return r;
+}
+
+Reference Reference::from_records(const std::string& path) {
+  Reference r;
+  r.kind_ = Kind::samples;
+  io::RecordReader reader({path});
+  Record record;
+  bool have_v = true, have_a = true;
+  std::vector<bool> v_given, a_given;
+  while (reader.next(record)) {
+    const Location where = reader.where();
+    const double t = io::number_field(record, "t", where), x = io::number_field(record, "x", where);
+    if (!std::isfinite(t) || !std::isfinite(x)) throw Error("t and x must be finite numbers", where);
+    if (!r.t_.empty() && !(t > r.t_.back())) throw Error(fmt::format("t must increase strictly: {} after {}", t, r.t_.back()), where);
+    const std::optional<double> v = io::optional_number_field(record, "v", where), a = io::optional_number_field(record, "a", where);
+    if ((v && !std::isfinite(*v)) || (a && !std::isfinite(*a))) throw Error("v and a must be finite numbers", where);
+    r.t_.push_back(t), r.x_.push_back(x), r.v_.push_back(v.value_or(0)), r.a_.push_back(a.value_or(0));
+    have_v = have_v && v.has_value(), have_a = have_a && a.has_value();
+  }
+  const std::size_t n = r.t_.size();
+  if (n < 2) throw Error(fmt::format("{}: a reference needs at least two samples, found {}", path, n));
+  // Finite differences (one-sided at the ends) where a column is missing.
+  const auto derivative = [&](const std::vector<double>& f, std::vector<double>& out) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t lo = i == 0 ? 0 : i - 1, hi = i + 1 == n ? n - 1 : i + 1;
+      out[i] = (f[hi] - f[lo]) / (r.t_[hi] - r.t_[lo]);
+    }
+  };
+  if (!have_v) derivative(r.x_, r.v_);
+  if (!have_a) derivative(r.v_, r.a_);
+  r.description_ = fmt::format("{} samples from {}", n, path);
+  return r;
+}
+
+ReferenceSample Reference::at(double t) const {
+  switch (kind_) {
+    case Kind::sine: {
+      const double s = std::sin(p2_ * t), c = std::cos(p2_ * t);
+      return {p1_ * s, p1_ * p2_ * c, -p1_ * p2_ * p2_ * s};
+    }
+    case Kind::step:
+      return {t >= p2_ ? p1_ : 0, 0, 0};
+    case Kind::ramp:
+      return {t > p2_ ? p1_ * (t - p2_) : 0, t > p2_ ? p1_ : 0, 0};
+    case Kind::samples: break;
+  }
+  if (t <= t_.front()) return {x_.front(), 0, 0};
+  if (t >= t_.back()) return {x_.back(), 0, 0};
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin()) - 1;
+  const double h = t_[i + 1] - t_[i], u = (t - t_[i]) / h;
+  // Cubic Hermite between (x_i, v_i) and (x_{i+1}, v_{i+1}); a interpolated linearly.
+  const double h00 = (1 + 2 * u) * (1 - u) * (1 - u), h10 = u * (1 - u) * (1 - u), h01 = u * u * (3 - 2 * u), h11 = u * u * (u - 1);
+  const double d00 = 6 * u * u - 6 * u, d10 = 3 * u * u - 4 * u + 1, d01 = -d00, d11 = 3 * u * u - 2 * u;
+  return {h00 * x_[i] + h10 * h * v_[i] + h01 * x_[i + 1] + h11 * h * v_[i + 1],
+          (d00 * x_[i] + d01 * x_[i + 1]) / h + d10 * v_[i] + d11 * v_[i + 1], a_[i] + u * (a_[i + 1] - a_[i])};
+}
+
+}  // namespace tk::control
