@@ -48,6 +48,16 @@ print("   %-8s %.1f s against %.1f s at 100 %% override, override oscillation +-
 done
 
 echo
+echo "== Rubio, Ibeas & Kollar's feed drive: sliding-mode control against PID, 10 s of 1 mm sin 3t"
+echo "   under a micro-milling cut (smcsim(1)):"
+for setting in "smc --Lambda 40" "smc --Lambda 400" "sta --alpha 200 --beta 200" "pid" "ppd"; do
+  smcsim --controller $setting --summary | python3 -c '
+import json, sys
+r = json.load(sys.stdin)
+print("   %-28s rms error %.5f mm, chattering %7.0f N/s" % (sys.argv[1], r["rms_error_mm"], r["chattering"]))' "$setting"
+done
+
+echo
 echo "== The main job, a search from scratch: sieve | mrtest | riesel finds and proves"
 echo "   twin primes k*2^3300-1, k*2^3300+1 of 1,000 digits (examples/search-twins.sh):"
 bash "$here/search-twins.sh"
