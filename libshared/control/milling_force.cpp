@@ -11,7 +11,6 @@
 namespace tk::control {
 
 namespace {
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 double wrap_angle(double a) {
   a = std::fmod(a, kTwoPi);
@@ -28,7 +27,7 @@ void MillingCut::validate() const {
   positive(spindle_rpm, "the spindle speed");
   positive(axial_depth_mm, "the axial depth");
   if (!(feed_mm_min >= 0 && std::isfinite(feed_mm_min))) throw Error(fmt::format("the feed must be >= 0, not {}", feed_mm_min));
-  if (radial_depth_mm >= 0 && !(radial_depth_mm > 0 && radial_depth_mm <= diameter_mm))
+  if ((radial_depth_mm >= 0 || std::isnan(radial_depth_mm)) && !(radial_depth_mm > 0 && radial_depth_mm <= diameter_mm))
     throw Error(fmt::format("the radial depth {} mm must be above 0 and at most the diameter {} mm", radial_depth_mm, diameter_mm));
   for (const double k : {ktc_n_mm2, krc_n_mm2, kte_n_mm, kre_n_mm})
     if (!std::isfinite(k)) throw Error("cutting coefficients must be finite numbers");
@@ -48,40 +47,17 @@ MillingForce::MillingForce(const MillingCut& cut) : enabled_(cut.enabled) {
   }
 }
 
-double MillingForce::from_angle(double angle, double c, double s) const {
-  if (!enabled_) return 0;
-  double fx = 0;
-  for (std::size_t j = 0; j < pitch_angle_.size(); ++j) {
-    double phi = angle + pitch_angle_[j];
-    if (phi >= kTwoPi) phi -= kTwoPi;
-    if (phi > exit_angle_) continue;
-    const double cj = c * pitch_cos_[j] - s * pitch_sin_[j], sj = s * pitch_cos_[j] + c * pitch_sin_[j];
-    const double h_sin = sj > 0 ? sj : 0;  // h = f_z sin φ, folded into shear_*
-    const double ft = shear_t_ * h_sin + edge_t_, fr = shear_r_ * h_sin + edge_r_;
-    fx += -ft * cj - fr * sj;
-  }
-  return -fx;
-}
-
 double MillingForce::at(double t_s) const {
   const double angle = wrap_angle(omega_rad_s_ * t_s);
   return from_angle(angle, std::cos(angle), std::sin(angle));
 }
 
 MillingForce::Stepper::Stepper(const MillingForce& force, double step_s)
-    : force_(&force), step_angle_(force.omega_rad_s_ * step_s), step_cos_(std::cos(step_angle_)), step_sin_(std::sin(step_angle_)) {}
+    : force_(&force), step_angle_(wrap_angle(force.omega_rad_s_ * step_s)), step_cos_(std::cos(step_angle_)), step_sin_(std::sin(step_angle_)) {}
 
 void MillingForce::Stepper::start(double t_s) {
   angle_ = wrap_angle(force_->omega_rad_s_ * t_s);
   cos_ = std::cos(angle_), sin_ = std::sin(angle_);
-}
-
-void MillingForce::Stepper::advance() {
-  angle_ += step_angle_;
-  if (angle_ >= kTwoPi) angle_ -= kTwoPi;
-  const double c = cos_ * step_cos_ - sin_ * step_sin_;
-  sin_ = sin_ * step_cos_ + cos_ * step_sin_;
-  cos_ = c;
 }
 
 }  // namespace tk::control

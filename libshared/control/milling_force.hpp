@@ -8,6 +8,7 @@
 /// The drive feels F_d = −Σ F_x (positive when it opposes feed along +x).
 #pragma once
 
+#include <numbers>
 #include <vector>
 
 namespace tk::control {
@@ -37,6 +38,8 @@ struct MillingCut {
   void validate() const;
 };
 
+inline constexpr double kTwoPi = 2 * std::numbers::pi;
+
 /// F_d(t) for one cut; `at(t)` evaluates from scratch, `Stepper` walks a
 /// uniform time grid by rotation (no trigonometry per step).
 class MillingForce {
@@ -53,7 +56,13 @@ class MillingForce {
     Stepper(const MillingForce& force, double step_s);
     void start(double t_s);
     double value() const { return force_->from_angle(angle_, cos_, sin_); }
-    void advance();
+    void advance() {
+      angle_ += step_angle_;
+      if (angle_ >= kTwoPi) angle_ -= kTwoPi;
+      const double c = cos_ * step_cos_ - sin_ * step_sin_;
+      sin_ = sin_ * step_cos_ + cos_ * step_sin_;
+      cos_ = c;
+    }
 
    private:
     const MillingForce* force_;
@@ -62,7 +71,22 @@ class MillingForce {
   };
 
  private:
-  double from_angle(double angle, double cos_angle, double sin_angle) const;
+  // Inline (with advance()): a call per plant step kept the axis state in
+  // memory and cost about half the loop's time.
+  double from_angle(double angle, double c, double s) const {
+    if (!enabled_) return 0;
+    double fx = 0;
+    for (std::size_t j = 0; j < pitch_angle_.size(); ++j) {
+      double phi = angle + pitch_angle_[j];
+      if (phi >= kTwoPi) phi -= kTwoPi;
+      if (phi > exit_angle_) continue;
+      const double cj = c * pitch_cos_[j] - s * pitch_sin_[j], sj = s * pitch_cos_[j] + c * pitch_sin_[j];
+      const double h_sin = sj > 0 ? sj : 0;  // h = f_z sin φ, f_z folded into shear_*
+      const double ft = shear_t_ * h_sin + edge_t_, fr = shear_r_ * h_sin + edge_r_;
+      fx += -ft * cj - fr * sj;
+    }
+    return -fx;
+  }
 
   bool enabled_;
   double omega_rad_s_, exit_angle_;

@@ -51,7 +51,6 @@ Reference Reference::from_records(const std::string& path) {
   io::RecordReader reader({path});
   Record record;
   bool have_v = true, have_a = true;
-  std::vector<bool> v_given, a_given;
   while (reader.next(record)) {
     const Location where = reader.where();
     const double t = io::number_field(record, "t", where), x = io::number_field(record, "x", where);
@@ -63,7 +62,7 @@ Reference Reference::from_records(const std::string& path) {
     have_v = have_v && v.has_value(), have_a = have_a && a.has_value();
   }
   const std::size_t n = r.t_.size();
-  if (n < 2) throw Error(fmt::format("{}: a reference needs at least two samples, found {}", path, n));
+  if (n < 2) throw Error(fmt::format("a reference needs at least two samples, found {}", n), Location{path == "-" ? "<stdin>" : path});
   // Finite differences (one-sided at the ends) where a column is missing.
   const auto derivative = [&](const std::vector<double>& f, std::vector<double>& out) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -73,6 +72,9 @@ Reference Reference::from_records(const std::string& path) {
   };
   if (!have_v) derivative(r.x_, r.v_);
   if (!have_a) derivative(r.v_, r.a_);
+  for (std::size_t i = 0; i < n; ++i)  // samples so close in time that a difference overflows
+    if (!std::isfinite(r.v_[i]) || !std::isfinite(r.a_[i]))
+      throw Error(fmt::format("the derivatives of the reference are not finite near t = {} s", r.t_[i]), Location{path});
   r.description_ = fmt::format("{} samples from {}", n, path);
   return r;
 }
@@ -89,7 +91,8 @@ ReferenceSample Reference::at(double t) const {
       return {t > p2_ ? p1_ * (t - p2_) : 0, t > p2_ ? p1_ : 0, 0};
     case Kind::samples: break;
   }
-  if (t <= t_.front()) return {x_.front(), 0, 0};
+  if (t < t_.front()) return {x_.front(), 0, 0};
+  if (t == t_.front()) return {x_.front(), v_.front(), a_.front()};
   if (t >= t_.back()) return {x_.back(), 0, 0};
   const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin()) - 1;
   const double h = t_[i + 1] - t_[i], u = (t - t_[i]) / h;

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cerrno>
 #include <cstring>
 
@@ -94,6 +95,10 @@ void RecordWriter::write_csv(const Record& record) {
 void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t integers) {
   line_.clear();
   auto append = [&](std::size_t i) {
+    if (!std::isfinite(values[i])) {  // as write() does: JSON null, an empty CSV cell
+      if (format_ == OutputFormat::json_lines) line_ += "null";
+      return;
+    }
     if (integers >> i & 1)
       fmt::format_to(std::back_inserter(line_), "{}", static_cast<long long>(values[i]));
     else

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "io/atomic_file.hpp"
+#include "sim/time_panels_svg.hpp"
 
 namespace tk::vehicle {
 
@@ -17,20 +18,6 @@ namespace {
 // Distinct on white and against the grey tape (Tableau 10, without grey).
 constexpr std::array<const char*, 9> kColours{"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
                                               "#8c564b", "#e377c2", "#17becf", "#bcbd22"};
-
-std::string xml_text(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 struct Box {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -83,7 +70,7 @@ void write_lap_svg(const std::string& path, const Track& track, const std::vecto
     svg += fmt::format("<line x1=\"{:.6g}\" y1=\"{:.6g}\" x2=\"{:.6g}\" y2=\"{:.6g}\" stroke=\"{}\" stroke-width=\"{:.6g}\"/>\n",
                        margin, y - legend_row / 3, margin + 2 * legend_row, y - legend_row / 3, colour, 3 * stroke);
     svg += fmt::format("<text x=\"{:.6g}\" y=\"{:.6g}\" font-family=\"sans-serif\" font-size=\"{:.6g}\">{}</text>\n",
-                       margin + 2.5 * legend_row, y, 0.7 * legend_row, xml_text(runs[r].first));
+                       margin + 2.5 * legend_row, y, 0.7 * legend_row, sim::xml_escape(runs[r].first));
   }
   svg += "</svg>\n";
   io::write_file_atomically(path, svg, path + ".tmp");

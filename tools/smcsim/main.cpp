@@ -5,9 +5,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 #include <thread>
 
 #include "cli/number_option.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "concurrency/ordered_pool.hpp"
 #include "control/feed_drive_plot.hpp"
@@ -19,13 +21,18 @@ namespace {
 
 using namespace tk::control;
 
+/// Gains lie within ±cli::kMaxOptionMagnitude, positive ones at or above
+/// cli::kMinPositiveOption (see cli/option_checks.hpp).
+constexpr double kMaxMagnitude = tk::cli::kMaxOptionMagnitude, kMinPositive = tk::cli::kMinPositiveOption;
+/// One run's length: about 5 s of work and 300 MB (the force samples and
+/// their spectrum for hf_share) at the default 10 substeps.
+constexpr double kMaxPeriods = 1e7, kMaxPlantSteps = 1e8;
+/// Settings in one sweep (for sta, the product of the --alpha and --beta grids).
+constexpr std::size_t kMaxSweepPoints = 100000;
+
 /// The gains a sweep may vary; one value each outside a sweep.
 struct GainGrids {
   std::string lambda = "40", alpha = "200", beta = "200";
-};
-
-struct SweepPoint {
-  FeedDriveConfig config;
 };
 
 const std::vector<std::string> kSummaryFields{
@@ -45,35 +52,86 @@ tk::Record summary_record(const FeedDriveConfig& c, const FeedDriveSummary& s) {
   return r;
 }
 
+/// A summary with an inf or NaN figure (a reference file's huge values) is
+/// an error, not a record with nulls in it.
+const FeedDriveSummary& checked(const FeedDriveSummary& s) {
+  for (const double v : {s.rms_error_mm, s.max_error_mm, s.rms_velocity_error_mm_s, s.rms_s, s.chattering_n_s, s.hf_share,
+                         s.effort_rms_n, s.max_force_n, s.saturated_share})
+    if (!std::isfinite(v)) throw tk::Error("the run's figures overflowed (is the reference beyond 1e12 mm?)");
+  return s;
+}
+
+/// --Lambda, --alpha or --beta: a number or FROM:TO:STEP, each value a usable gain.
+std::vector<double> gain_grid(const std::string& text, const char* option) {
+  std::vector<double> values;
+  try {
+    values = tk::cli::parse_grid(text, option, kMaxSweepPoints);
+  } catch (const tk::Error& e) {
+    throw tk::UsageError(e.what());
+  }
+  for (const double v : values)
+    if (!(v == 0 || (v >= kMinPositive && v <= kMaxMagnitude)))
+      throw tk::UsageError(fmt::format("{}: must be 0 or a number from 1e-12 to 1e12, not {}", option, v));
+  return values;
+}
+
 double single_value(const std::string& text, const char* option) {
-  const std::vector<double> values = tk::cli::parse_grid(text, option);
+  const std::vector<double> values = gain_grid(text, option);
   if (values.size() != 1) throw tk::UsageError(fmt::format("{} takes one value here; ranges are for 'smcsim sweep'", option));
   return values[0];
 }
 
-void run_sweep(FeedDriveConfig base, const GainGrids& grids, unsigned threads, tk::io::OutputFormat format) {
-  std::vector<SweepPoint> points;
+/// Option combinations the per-option checks cannot see, named as options.
+void check_combination(const FeedDriveConfig& c) {
+  if (c.period_s > c.duration_s)
+    throw tk::UsageError(fmt::format("--period {} s is longer than --duration {} s", c.period_s, c.duration_s));
+  const double periods = c.duration_s / c.period_s;
+  if (periods > kMaxPeriods)
+    throw tk::UsageError(fmt::format("--duration {} s at --period {} s is {:.3g} control periods; at most {:g}", c.duration_s,
+                                     c.period_s, periods, kMaxPeriods));
+  if (periods * c.substeps > kMaxPlantSteps)
+    throw tk::UsageError(fmt::format("--substeps {} over {:.3g} control periods is {:.3g} plant steps; at most {:g}", c.substeps,
+                                     periods, periods * c.substeps, kMaxPlantSteps));
+  if (c.settle_s >= c.duration_s)
+    throw tk::UsageError(fmt::format("--settle {} s leaves nothing of --duration {} s", c.settle_s, c.duration_s));
+  if (c.cut.radial_depth_mm > c.cut.diameter_mm)
+    throw tk::UsageError(
+        fmt::format("--radial-depth {} mm is more than --tool-diameter {} mm", c.cut.radial_depth_mm, c.cut.diameter_mm));
+  c.validate();  // anything left is the library's to name
+}
+
+void run_sweep(const FeedDriveConfig& base, const GainGrids& grids, unsigned threads, tk::io::OutputFormat format) {
+  // The points carry only their gains: the base configuration (a reference
+  // file's samples) is copied per running simulation, not per point.
+  std::vector<ControllerGains> points;
+  ControllerGains gains = base.gains;
   if (base.gains.kind == ControllerKind::smc) {
-    for (const double lambda : tk::cli::parse_grid(grids.lambda, "--Lambda")) {
-      base.gains.switching = lambda;
-      points.push_back({base});
+    for (const double lambda : gain_grid(grids.lambda, "--Lambda")) {
+      gains.switching = lambda;
+      points.push_back(gains);
     }
-  } else if (base.gains.kind == ControllerKind::sta) {
-    for (const double alpha : tk::cli::parse_grid(grids.alpha, "--alpha"))
-      for (const double beta : tk::cli::parse_grid(grids.beta, "--beta")) {
-        base.gains.alpha = alpha, base.gains.beta = beta;
-        points.push_back({base});
-      }
   } else {
-    throw tk::UsageError("a sweep varies --Lambda (smc) or --alpha and --beta (sta)");
+    const std::vector<double> alphas = gain_grid(grids.alpha, "--alpha"), betas = gain_grid(grids.beta, "--beta");
+    if (alphas.size() * betas.size() > kMaxSweepPoints)
+      throw tk::UsageError(fmt::format("--alpha and --beta make {} × {} settings; a sweep takes at most {}", alphas.size(),
+                                       betas.size(), kMaxSweepPoints));
+    for (const double alpha : alphas)
+      for (const double beta : betas) {
+        gains.alpha = alpha, gains.beta = beta;
+        points.push_back(gains);
+      }
   }
-  for (const SweepPoint& p : points) p.config.validate();  // every setting checked before any runs
   tk::io::RecordWriter writer(format);
   writer.declare_fields(kSummaryFields);
-  tk::OrderedPool<SweepPoint, tk::Record> pool(
-      threads, [](SweepPoint& p) { return summary_record(p.config, simulate_feed_drive(p.config)); },
+  tk::OrderedPool<ControllerGains, tk::Record> pool(
+      threads,
+      [&base](ControllerGains& g) {
+        FeedDriveConfig c = base;
+        c.gains = g;
+        return summary_record(c, checked(simulate_feed_drive(c)));
+      },
       [&](tk::Record& r) { writer.write(r); });
-  for (SweepPoint& p : points) pool.submit(std::move(p));
+  for (ControllerGains& p : points) pool.submit(p);
   pool.finish();
   writer.flush();
 }
@@ -95,13 +153,16 @@ void run_single(const FeedDriveConfig& config, bool summary_only, std::uint64_t 
           if (plotting) plot.add(s);
           if (summary_only) return;
           values = {s.t_s, s.x_ref_mm, s.x_mm, s.error_mm, s.error_rate_mm_s, s.surface_mm_s, s.force_n, s.disturbance_n};
+          for (const double v : values)  // the records stay JSON: no inf or nan in them
+            if (!std::isfinite(v))
+              throw tk::Error(fmt::format("the run overflowed at t = {} s (is the reference beyond 1e12 mm?)", s.t_s));
           writer.write_numbers(values, 0);
         },
         every);
   }
   if (summary_only) {
     writer.declare_fields(kSummaryFields);
-    writer.write(summary_record(config, summary));
+    writer.write(summary_record(config, checked(summary)));
   }
   writer.flush();
   if (plotting) plot.write(svg_path, fmt::format("smcsim --controller {}: {}", controller_name(config.gains.kind), config.reference.describe()));
@@ -117,7 +178,9 @@ int main(int argc, char** argv) {
                         "P-PD cascade: simulates the sampled loop with a micro-milling cutting force and writes a time "
                         "series (t, x_ref, x, e, e_dot, S, F, F_d), a --summary record, or, with 'sweep', one summary "
                         "per gain setting.",
-                        "Lengths in mm, forces in N; gains Lambda, alpha, beta in the --units force unit. See smcsim(1).");
+                        "Lengths in mm, forces in N; gains Lambda, alpha, beta in the --units force unit. Real values "
+                        "lie within ±1e12 (positive ones from 1e-12); a run is at most 1e7 control periods and 1e8 "
+                        "plant steps. See smcsim(1).");
   tool.add_threads_option();
   FeedDriveConfig c;
   GainGrids grids;
@@ -125,70 +188,73 @@ int main(int argc, char** argv) {
   double amplitude = 1, omega = 3, step_at = 0, slope = 1;
   bool summary_only = false, seed_sign = false, no_cut = false;
   std::uint64_t every = 10;
+  const CLI::Validator finite_value = tk::cli::number_check(tk::cli::NumberDomain::finite), non_negative = tk::cli::number_check(tk::cli::NumberDomain::non_negative),
+                       positive = tk::cli::number_check(tk::cli::NumberDomain::positive), fraction = tk::cli::number_check(tk::cli::NumberDomain::fraction);
   CLI::App& app = tool.app();
   const std::string ctl = "Controllers", plant = "Plant", ref = "Reference", cut = "Cutting force", sim = "Simulation", out = "Output";
   app.add_option("--controller", controller, "smc, sta, pid or ppd")->check(CLI::IsMember({"smc", "sta", "pid", "ppd"}))->capture_default_str()->group(ctl);
   app.add_option("--Lambda", grids.lambda, "smc: switching gain Λ (force unit; a range in a sweep)")->capture_default_str()->type_name("F")->group(ctl);
-  app.add_option("--alpha", grids.alpha, "sta: α (a range in a sweep)")->capture_default_str()->group(ctl);
-  app.add_option("--beta", grids.beta, "sta: β (a range in a sweep)")->capture_default_str()->group(ctl);
-  app.add_option("--mu", c.gains.mu, "surface S = ė + μ e + λ ∫e: μ, 1/s")->capture_default_str()->group(ctl);
-  app.add_option("--lambda", c.gains.lambda, "surface: λ, 1/s²")->capture_default_str()->group(ctl);
-  app.add_option("--boundary-layer", c.gains.boundary_layer, "smc: sat(S/φ) instead of sign(S), φ in mm/s... (0: sign)")->capture_default_str()->type_name("PHI")->group(ctl);
+  app.add_option("--alpha", grids.alpha, "sta: α (a range in a sweep)")->capture_default_str()->type_name("F")->group(ctl);
+  app.add_option("--beta", grids.beta, "sta: β (a range in a sweep)")->capture_default_str()->type_name("F")->group(ctl);
+  app.add_option("--mu", c.gains.mu, "surface S = ė + μ e + λ ∫e: μ, 1/s")->check(non_negative)->capture_default_str()->group(ctl);
+  app.add_option("--lambda", c.gains.lambda, "surface: λ, 1/s²")->check(non_negative)->capture_default_str()->group(ctl);
+  app.add_option("--boundary-layer", c.gains.boundary_layer, "smc: sat(S/φ) instead of sign(S), φ in mm/s... (0: sign)")->check(non_negative)->capture_default_str()->type_name("PHI")->group(ctl);
   app.add_flag("--seed-sign", seed_sign, "switch with −Λ sign(S) as the seed writes it (destabilises: see smcsim(1))")->group(ctl);
-  app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")->capture_default_str()->type_name("HZ")->group(ctl);
-  app.add_option("--kp", c.gains.kp, "pid: proportional gain, kg/s² (N/m)")->group(ctl);
-  app.add_option("--ki", c.gains.ki, "pid: integral gain, kg/s³")->group(ctl);
-  app.add_option("--kd", c.gains.kd, "pid: derivative gain, kg/s")->group(ctl);
-  app.add_option("--pid-ff", c.gains.pid_feedforward, "pid: share of m̂ ẍ_ref + b̂ ẋ_ref fed forward, 0-1")->capture_default_str()->group(ctl);
-  app.add_option("--kv", c.gains.position_gain, "ppd: position loop gain K_v, 1/s")->capture_default_str()->group(ctl);
-  app.add_option("--velocity-bandwidth", c.gains.velocity_bandwidth_hz, "ppd: velocity P gain = m̂·2π·this, Hz")->capture_default_str()->type_name("HZ")->group(ctl);
-  app.add_option("--kvp", c.gains.velocity_p, "ppd: velocity loop P gain, kg/s (overrides the bandwidth)")->group(ctl);
-  app.add_option("--kvd", c.gains.velocity_d, "ppd: velocity loop D gain, kg")->capture_default_str()->group(ctl);
-  app.add_option("--velocity-ff", c.gains.velocity_feedforward, "ppd: share of the reference velocity fed forward, 0-1")->capture_default_str()->group(ctl);
+  app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")->check(positive)->capture_default_str()->type_name("HZ")->group(ctl);
+  app.add_option("--kp", c.gains.kp, "pid: proportional gain, kg/s² (N/m)")->check(non_negative)->group(ctl);
+  app.add_option("--ki", c.gains.ki, "pid: integral gain, kg/s³")->check(non_negative)->group(ctl);
+  app.add_option("--kd", c.gains.kd, "pid: derivative gain, kg/s")->check(non_negative)->group(ctl);
+  app.add_option("--pid-ff", c.gains.pid_feedforward, "pid: share of m̂ ẍ_ref + b̂ ẋ_ref fed forward, 0-1")->check(fraction)->capture_default_str()->group(ctl);
+  app.add_option("--kv", c.gains.position_gain, "ppd: position loop gain K_v, 1/s")->check(non_negative)->capture_default_str()->group(ctl);
+  app.add_option("--velocity-bandwidth", c.gains.velocity_bandwidth_hz, "ppd: velocity P gain = m̂·2π·this, Hz")->check(positive)->capture_default_str()->type_name("HZ")->group(ctl);
+  app.add_option("--kvp", c.gains.velocity_p, "ppd: velocity loop P gain, kg/s (overrides the bandwidth)")->check(non_negative)->group(ctl);
+  app.add_option("--kvd", c.gains.velocity_d, "ppd: velocity loop D gain, kg")->check(non_negative)->capture_default_str()->group(ctl);
+  app.add_option("--velocity-ff", c.gains.velocity_feedforward, "ppd: share of the reference velocity fed forward, 0-1")->check(fraction)->capture_default_str()->group(ctl);
 
-  app.add_option("--mass", c.plant.mass_kg, "the axis's mass m, kg")->capture_default_str()->group(plant);
-  app.add_option("--damping", c.plant.damping_kg_s, "viscous damping b, kg/s")->capture_default_str()->group(plant);
-  app.add_option("--mass-end", c.plant.mass_end_kg, "the mass drifts linearly to this by the end (material removal)")->group(plant);
-  app.add_option("--damping-end", c.plant.damping_end_kg_s, "the damping drifts linearly to this by the end (lubricant)")->group(plant);
-  app.add_option("--mass-estimate", c.mass_estimate_kg, "m̂, the controller's mass")->capture_default_str()->group(plant);
-  app.add_option("--damping-estimate", c.damping_estimate_kg_s, "b̂, the controller's damping")->capture_default_str()->group(plant);
-  app.add_option("--kt", c.amplifier_a_v, "current amplifier gain K_t, A/V")->capture_default_str()->group(plant);
-  app.add_option("--ka", c.force_constant_n_a, "motor force constant K_a, N/A")->capture_default_str()->group(plant);
-  app.add_option("--voltage-limit", c.voltage_limit_v, "the amplifier's input saturates at ± this, V")->capture_default_str()->group(plant);
+  app.add_option("--mass", c.plant.mass_kg, "the axis's mass m, kg")->check(positive)->capture_default_str()->group(plant);
+  app.add_option("--damping", c.plant.damping_kg_s, "viscous damping b, kg/s")->check(non_negative)->capture_default_str()->group(plant);
+  app.add_option("--mass-end", c.plant.mass_end_kg, "the mass drifts linearly to this by the end (material removal)")->check(positive)->group(plant);
+  app.add_option("--damping-end", c.plant.damping_end_kg_s, "the damping drifts linearly to this by the end (lubricant)")->check(non_negative)->group(plant);
+  app.add_option("--mass-estimate", c.mass_estimate_kg, "m̂, the controller's mass")->check(positive)->capture_default_str()->group(plant);
+  app.add_option("--damping-estimate", c.damping_estimate_kg_s, "b̂, the controller's damping")->check(non_negative)->capture_default_str()->group(plant);
+  app.add_option("--kt", c.amplifier_a_v, "current amplifier gain K_t, A/V")->check(positive)->capture_default_str()->group(plant);
+  app.add_option("--ka", c.force_constant_n_a, "motor force constant K_a, N/A")->check(positive)->capture_default_str()->group(plant);
+  app.add_option("--voltage-limit", c.voltage_limit_v, "the amplifier's input saturates at ± this, V")->check(positive)->capture_default_str()->group(plant);
 
-  app.add_option("--reference", reference, "sine, step or ramp")->check(CLI::IsMember({"sine", "step", "ramp"}))->capture_default_str()->group(ref);
-  app.add_option("--reference-file", reference_file, "records t, x (mm), optionally v, a: the reference from samples")->type_name("FILE")->group(ref);
-  app.add_option("--amplitude", amplitude, "sine amplitude or step height, mm")->capture_default_str()->type_name("MM")->group(ref);
-  app.add_option("--omega", omega, "sine frequency, rad/s")->capture_default_str()->group(ref);
-  app.add_option("--slope", slope, "ramp speed, mm/s")->capture_default_str()->group(ref);
-  app.add_option("--start", step_at, "step or ramp start, s")->capture_default_str()->type_name("S")->group(ref);
+  CLI::Option* reference_option = app.add_option("--reference", reference, "sine, step or ramp")->check(CLI::IsMember({"sine", "step", "ramp"}))->capture_default_str()->group(ref);
+  CLI::Option* file_option = app.add_option("--reference-file", reference_file, "records t, x (mm), optionally v, a: the reference from samples ('-': stdin)")->type_name("FILE")->group(ref);
+  CLI::Option* amplitude_option = app.add_option("--amplitude", amplitude, "sine amplitude or step height, mm")->check(finite_value)->capture_default_str()->type_name("MM")->group(ref);
+  CLI::Option* omega_option = app.add_option("--omega", omega, "sine frequency, rad/s")->check(finite_value)->capture_default_str()->group(ref);
+  CLI::Option* slope_option = app.add_option("--slope", slope, "ramp speed, mm/s")->check(finite_value)->capture_default_str()->group(ref);
+  CLI::Option* start_option = app.add_option("--start", step_at, "step or ramp start, s")->check(finite_value)->capture_default_str()->type_name("S")->group(ref);
+  for (CLI::Option* shape : {reference_option, amplitude_option, omega_option, slope_option, start_option}) file_option->excludes(shape);
 
   app.add_flag("--no-cut", no_cut, "no cutting force")->group(cut);
-  app.add_option("--teeth", c.cut.teeth, "flutes")->capture_default_str()->group(cut);
-  app.add_option("--tool-diameter", c.cut.diameter_mm, "mm")->capture_default_str()->group(cut);
-  app.add_option("--spindle", c.cut.spindle_rpm, "spindle speed, rpm")->capture_default_str()->group(cut);
-  app.add_option("--axial-depth", c.cut.axial_depth_mm, "mm")->capture_default_str()->group(cut);
-  app.add_option("--radial-depth", c.cut.radial_depth_mm, "mm (up-milling); default a full slot")->group(cut);
-  app.add_option("--feed", c.cut.feed_mm_min, "mm/min")->capture_default_str()->group(cut);
-  app.add_option("--ktc", c.cut.ktc_n_mm2, "tangential shear coefficient, N/mm²")->capture_default_str()->group(cut);
-  app.add_option("--krc", c.cut.krc_n_mm2, "radial shear coefficient, N/mm²")->capture_default_str()->group(cut);
-  app.add_option("--kte", c.cut.kte_n_mm, "tangential edge coefficient, N/mm")->capture_default_str()->group(cut);
-  app.add_option("--kre", c.cut.kre_n_mm, "radial edge coefficient, N/mm")->capture_default_str()->group(cut);
+  app.add_option("--teeth", c.cut.teeth, "flutes")->check(tk::cli::count_check(1, 64))->capture_default_str()->group(cut);
+  app.add_option("--tool-diameter", c.cut.diameter_mm, "mm")->check(positive)->capture_default_str()->group(cut);
+  app.add_option("--spindle", c.cut.spindle_rpm, "spindle speed, rpm")->check(positive)->capture_default_str()->group(cut);
+  app.add_option("--axial-depth", c.cut.axial_depth_mm, "mm")->check(positive)->capture_default_str()->group(cut);
+  app.add_option("--radial-depth", c.cut.radial_depth_mm, "mm (up-milling); default a full slot")->check(positive)->group(cut);
+  app.add_option("--feed", c.cut.feed_mm_min, "mm/min")->check(non_negative)->capture_default_str()->group(cut);
+  app.add_option("--ktc", c.cut.ktc_n_mm2, "tangential shear coefficient, N/mm²")->check(finite_value)->capture_default_str()->group(cut);
+  app.add_option("--krc", c.cut.krc_n_mm2, "radial shear coefficient, N/mm²")->check(finite_value)->capture_default_str()->group(cut);
+  app.add_option("--kte", c.cut.kte_n_mm, "tangential edge coefficient, N/mm")->check(finite_value)->capture_default_str()->group(cut);
+  app.add_option("--kre", c.cut.kre_n_mm, "radial edge coefficient, N/mm")->check(finite_value)->capture_default_str()->group(cut);
 
-  app.add_option("--duration", c.duration_s, "simulated time, s")->capture_default_str()->type_name("S")->group(sim);
-  app.add_option("--period", c.period_s, "control period, s")->capture_default_str()->type_name("S")->group(sim);
-  app.add_option("--substeps", c.substeps, "exact plant steps per control period")->capture_default_str()->type_name("N")->group(sim);
-  app.add_option("--encoder", c.encoder_mm, "encoder resolution, mm (0: none)")->capture_default_str()->type_name("MM")->group(sim);
-  app.add_option("--position-filter", c.position_filter_hz, "low-pass on the position estimate, Hz (0: none)")->capture_default_str()->type_name("HZ")->group(sim);
-  app.add_option("--velocity-filter", c.velocity_filter_hz, "low-pass on the velocity estimate, Hz (0: none)")->capture_default_str()->type_name("HZ")->group(sim);
+  app.add_option("--duration", c.duration_s, "simulated time, s")->check(positive)->capture_default_str()->type_name("S")->group(sim);
+  app.add_option("--period", c.period_s, "control period, s")->check(positive)->capture_default_str()->type_name("S")->group(sim);
+  app.add_option("--substeps", c.substeps, "exact plant steps per control period")->check(tk::cli::count_check(1, 100000))->capture_default_str()->type_name("N")->group(sim);
+  app.add_option("--encoder", c.encoder_mm, "encoder resolution, mm (0: none)")->check(non_negative)->capture_default_str()->type_name("MM")->group(sim);
+  app.add_option("--position-filter", c.position_filter_hz, "low-pass on the position estimate, Hz (0: none)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(sim);
+  app.add_option("--velocity-filter", c.velocity_filter_hz, "low-pass on the velocity estimate, Hz (0: none)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(sim);
   app.add_option("--units", units, "mm: gains in kg·mm/s² (the seed's scale); m: in newtons")->check(CLI::IsMember({"mm", "m"}))->capture_default_str()->group(sim);
-  app.add_option("--initial-position", c.initial_position_mm, "x(0), mm (default: on the reference)")->type_name("MM")->group(sim);
-  app.add_option("--initial-velocity", c.initial_velocity_mm_s, "ẋ(0), mm/s (default: the reference's)")->type_name("MM/S")->group(sim);
+  app.add_option("--initial-position", c.initial_position_mm, "x(0), mm (default: on the reference)")->check(finite_value)->type_name("MM")->group(sim);
+  app.add_option("--initial-velocity", c.initial_velocity_mm_s, "ẋ(0), mm/s (default: the reference's)")->check(finite_value)->type_name("MM/S")->group(sim);
 
   app.add_flag("--summary", summary_only, "one summary record instead of the time series")->group(out);
-  app.add_option("--every", every, "a time-series record every N control periods")->capture_default_str()->type_name("N")->group(out);
-  app.add_option("--settle", c.settle_s, "summary figures from this time on, s")->capture_default_str()->type_name("S")->group(out);
-  app.add_option("--hf-cutoff", c.hf_cutoff_hz, "hf_share: share of F's power above this, Hz")->capture_default_str()->type_name("HZ")->group(out);
+  app.add_option("--every", every, "a time-series record every N control periods")->check(tk::cli::count_check(1, 1000000000000))->capture_default_str()->type_name("N")->group(out);
+  app.add_option("--settle", c.settle_s, "summary figures from this time on, s")->check(non_negative)->capture_default_str()->type_name("S")->group(out);
+  app.add_option("--hf-cutoff", c.hf_cutoff_hz, "hf_share: share of F's power above this, Hz (0: not computed)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(out);
   app.add_option("--svg", svg_path, "the seed's four panels (position, errors, control) as SVG")->type_name("FILE")->group(out);
   CLI::App* sweep = app.add_subcommand("sweep", "one summary record per gain setting (--Lambda, or --alpha and --beta, as FROM:TO:STEP), on -j threads");
   sweep->fallthrough();
@@ -198,7 +264,21 @@ int main(int argc, char** argv) {
     c.gains.switching_sign = seed_sign ? -1 : 1;
     c.length_unit_m = units == "m" ? 1 : 1e-3;
     c.cut.enabled = !no_cut;
-    if (every < 1) throw tk::UsageError("--every must be at least 1");
+    const auto given = [&](const char* option) { return app.get_option(option)->count() > 0; };
+    if (sweep->parsed()) {
+      if (!svg_path.empty()) throw tk::UsageError("--svg draws one run, not a sweep");
+      if (c.gains.kind == ControllerKind::pid || c.gains.kind == ControllerKind::ppd)
+        throw tk::UsageError(fmt::format("a sweep varies --Lambda (smc) or --alpha and --beta (sta), not {} gains", controller));
+      if (c.gains.kind == ControllerKind::smc && (given("--alpha") || given("--beta")))
+        throw tk::UsageError("--alpha and --beta are sta gains; a sweep of smc varies --Lambda");
+      if (c.gains.kind == ControllerKind::sta && given("--Lambda"))
+        throw tk::UsageError("--Lambda is an smc gain; a sweep of sta varies --alpha and --beta");
+    } else {
+      c.gains.switching = single_value(grids.lambda, "--Lambda");
+      c.gains.alpha = single_value(grids.alpha, "--alpha");
+      c.gains.beta = single_value(grids.beta, "--beta");
+    }
+    check_combination(c);  // before a reference file is read
     if (!reference_file.empty())
       c.reference = Reference::from_records(reference_file);
     else if (reference == "step")
@@ -208,15 +288,11 @@ int main(int argc, char** argv) {
     else
       c.reference = Reference::sine(amplitude, omega);
     if (sweep->parsed()) {
-      if (!svg_path.empty()) throw tk::UsageError("--svg draws one run, not a sweep");
       unsigned threads = tool.common().threads;
-      if (app.get_option("--threads")->count() == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+      if (!given("--threads")) threads = std::max(1u, std::thread::hardware_concurrency());
       run_sweep(c, grids, threads, tool.output_format());
       return;
     }
-    c.gains.switching = single_value(grids.lambda, "--Lambda");
-    c.gains.alpha = single_value(grids.alpha, "--alpha");
-    c.gains.beta = single_value(grids.beta, "--beta");
     run_single(c, summary_only, every, svg_path, tool.output_format());
   });
 }

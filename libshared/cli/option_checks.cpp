@@ -1,0 +1,53 @@
+/// @file option_checks.cpp
+#include "cli/option_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace tk::cli {
+
+CLI::Validator number_check(NumberDomain domain) {
+  return CLI::Validator(
+      [domain](std::string& text) -> std::string {
+        errno = 0;
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || end != text.c_str() + text.size()) return fmt::format("'{}' is not a number", text);
+        const bool finite = std::isfinite(v) && errno != ERANGE;
+        const bool positive = finite && v >= kMinPositiveOption && v <= kMaxOptionMagnitude;
+        switch (domain) {
+          case NumberDomain::finite:
+            if (!finite || std::abs(v) > kMaxOptionMagnitude) return fmt::format("must be a number from -1e12 to 1e12, not {}", text);
+            break;
+          case NumberDomain::non_negative:
+            if (!(v == 0 || positive)) return fmt::format("must be 0 or a number from 1e-12 to 1e12, not {}", text);
+            break;
+          case NumberDomain::positive:
+            if (!positive) return fmt::format("must be a positive number from 1e-12 to 1e12, not {}", text);
+            break;
+          case NumberDomain::fraction:
+            if (!finite || !(v >= 0 && v <= 1)) return fmt::format("must be a number from 0 to 1, not {}", text);
+            break;
+        }
+        return {};
+      },
+      "");
+}
+
+CLI::Validator count_check(std::uint64_t low, std::uint64_t high) {
+  return CLI::Validator(
+      [low, high](std::string& text) -> std::string {
+        std::uint64_t v = 0;
+        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits || text.size() > 19 || (v = std::stoull(text)) < low || v > high)
+          return fmt::format("must be a whole number from {} to {}, not {}", low, high, text);
+        return {};
+      },
+      "");
+}
+
+}  // namespace tk::cli
