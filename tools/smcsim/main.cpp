@@ -165,7 +165,13 @@ void run_single(const FeedDriveConfig& config, bool summary_only, std::uint64_t 
     writer.write(summary_record(config, checked(summary)));
   }
   writer.flush();
-  if (plotting) plot.write(svg_path, fmt::format("smcsim --controller {}: {}", controller_name(config.gains.kind), config.reference.describe()));
+  if (plotting) {
+    const ControllerGains& g = config.gains;
+    const std::string gains = g.kind == ControllerKind::smc   ? fmt::format(" --Lambda {:g}", g.switching)
+                              : g.kind == ControllerKind::sta ? fmt::format(" --alpha {:g} --beta {:g}", g.alpha, g.beta)
+                                                              : std::string();
+    plot.write(svg_path, fmt::format("smcsim --controller {}{}: {}", controller_name(g.kind), gains, config.reference.describe()));
+  }
   if (summary.diverged && !summary_only)
     throw tk::Error(fmt::format("the loop diverged at t = {} s (error beyond {} mm)", summary.diverged_at_s, config.divergence_mm));
 }
