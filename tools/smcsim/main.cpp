@@ -204,7 +204,7 @@ int main(int argc, char** argv) {
   app.add_option("--beta", grids.beta, "sta: β (a range in a sweep)")->capture_default_str()->type_name("F")->group(ctl);
   app.add_option("--mu", c.gains.mu, "surface S = ė + μ e + λ ∫e: μ, 1/s")->check(non_negative)->capture_default_str()->group(ctl);
   app.add_option("--lambda", c.gains.lambda, "surface: λ, 1/s²")->check(non_negative)->capture_default_str()->group(ctl);
-  app.add_option("--boundary-layer", c.gains.boundary_layer, "smc: sat(S/φ) instead of sign(S), φ in mm/s... (0: sign)")->check(non_negative)->capture_default_str()->type_name("PHI")->group(ctl);
+  app.add_option("--boundary-layer", c.gains.boundary_layer, "smc: sat(S/φ) instead of sign(S); φ in length units per second (0: sign)")->check(non_negative)->capture_default_str()->type_name("PHI")->group(ctl);
   app.add_flag("--seed-sign", seed_sign, "switch with −Λ sign(S) as the seed writes it (destabilises: see smcsim(1))")->group(ctl);
   app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")->check(positive)->capture_default_str()->type_name("HZ")->group(ctl);
   app.add_option("--kp", c.gains.kp, "pid: proportional gain, kg/s² (N/m)")->check(non_negative)->group(ctl);
