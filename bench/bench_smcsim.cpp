@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,7 +25,6 @@
 #include "bench_common.hpp"
 #include "concurrency/ordered_pool.hpp"
 #include "control/drive_plant.hpp"
-#include "control/feed_controllers.hpp"
 #include "control/feed_drive_sim.hpp"
 #include "control/milling_force.hpp"
 
@@ -34,104 +32,44 @@ namespace {
 
 using namespace tk::control;
 
-/// The peer: simulate_feed_drive's loop line for line, except that between
-/// samples the plant m ẍ + b ẋ = F − F_d(t) is integrated by classical RK4
-/// with the force held and F_d evaluated where the stages need it, as a
-/// Simulink model with the ode4 solver at a fixed step of h would. Generous
-/// to the peer: F_d(t) is reused from the previous step's end, so it costs
-/// two evaluations per step, not four.
-FeedDriveSummary simulate_rk4(const FeedDriveConfig& c) {
-  c.validate();
-  const double L = c.length_unit_m, from_mm = 1e-3 / L, to_mm = L / 1e-3, from_n = 1 / L, to_n = L;
-  const double T = c.period_s, h = T / c.substeps;
-  const std::uint64_t periods = c.periods();
-  const double force_limit = c.amplifier_a_v * c.force_constant_n_a * c.voltage_limit_v * from_n;
-  const double quantum = c.encoder_mm * from_mm;
-  const auto low_pass_alpha = [T](double cutoff_hz) { return cutoff_hz > 0 ? -std::expm1(-2 * std::numbers::pi * cutoff_hz * T) : 1.0; };
-  const double position_alpha = low_pass_alpha(c.position_filter_hz), velocity_alpha = low_pass_alpha(c.velocity_filter_hz);
+/// The peer: simulate_feed_drive's own loop, with the plant
+/// m ẍ + b ẋ = F − F_d(t) integrated between samples by classical RK4 at the
+/// same step, the force held and F_d evaluated where the stages need it, as
+/// a Simulink model with the ode4 solver at a fixed step of h would.
+/// Generous to the peer: F_d(t) is reused from the previous step's end, so
+/// it costs two evaluations per step, not four.
+class Rk4Integrator final : public PeriodIntegrator {
+ public:
+  explicit Rk4Integrator(const FeedDriveConfig& c)
+      : cutting_(c.cut), h_(c.period_s / c.substeps), from_n_(1 / c.length_unit_m), substeps_(c.substeps) {}
 
-  FeedController controller(c.gains, c.mass_estimate_kg, c.damping_estimate_kg_s, T);
-  const MillingForce cutting(c.cut);
-  double mass = c.plant.mass_at(0.5 / periods), damping = c.plant.damping_at(0.5 / periods);
+  void configure(double mass_kg, double damping_kg_s) override { inv_m_ = 1 / mass_kg, damping_ = damping_kg_s; }
 
-  const ReferenceSample start = c.reference.at(0);
-  double x = (std::isnan(c.initial_position_mm) ? start.x_mm : c.initial_position_mm) * from_mm;
-  double v = (std::isnan(c.initial_velocity_mm_s) ? start.v_mm_s : c.initial_velocity_mm_s) * from_mm;
-  const auto measure = [&](double position) { return quantum > 0 ? std::nearbyint(position / quantum) * quantum : position; };
-  double previous_reading = measure(x), x_hat = previous_reading, v_hat = v;
-  double error_integral = 0;
-
-  FeedDriveSummary sum;
-  double sum_e2 = 0, sum_ev2 = 0, sum_s2 = 0, sum_f2 = 0, variation = 0, previous_force_n = 0;
-  std::uint64_t measured = 0, saturated = 0;
-  std::vector<double> forces;
-  const bool want_spectrum = c.hf_cutoff_hz > 0;
-  if (want_spectrum) forces.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(periods, 1u << 26)));
-
-  for (std::uint64_t k = 0; k < periods; ++k) {
-    const double t = static_cast<double>(k) * T;
-    if (c.plant.varies()) mass = c.plant.mass_at((k + 0.5) / periods), damping = c.plant.damping_at((k + 0.5) / periods);
-    if (k > 0) {
-      const double reading = measure(x);
-      x_hat += position_alpha * (reading - x_hat);
-      v_hat += velocity_alpha * ((reading - previous_reading) / T - v_hat);
-      previous_reading = reading;
-    }
-    const ReferenceSample r_mm = c.reference.at(t);
-    const double xr = r_mm.x_mm * from_mm, vr = r_mm.v_mm_s * from_mm, ar = r_mm.a_mm_s2 * from_mm;
-    const double e = xr - x_hat, e_rate = vr - v_hat;
-    const double surface = e_rate + c.gains.mu * e + c.gains.lambda * error_integral;
-    double force = controller.force({xr, vr, ar, x_hat, v_hat, e, e_rate, error_integral, surface});
-    if (!(std::abs(force) <= force_limit)) {
-      force = std::isnan(force) ? 0 : std::copysign(force_limit, force);
-      ++saturated;
-    }
-    double fd = cutting.at(t) * from_n;
-    const double true_error = xr - x, true_rate = vr - v;
-    if (!(std::abs(true_error) * to_mm <= c.divergence_mm)) {
-      sum.diverged = true, sum.diverged_at_s = t;
-      break;
-    }
-    const double force_n = force * to_n;
-    if (t >= c.settle_s) {
-      const double e_mm = true_error * to_mm, ev_mm = true_rate * to_mm, s_mm = surface * to_mm;
-      sum_e2 += e_mm * e_mm, sum_ev2 += ev_mm * ev_mm, sum_s2 += s_mm * s_mm, sum_f2 += force_n * force_n;
-      sum.max_error_mm = std::max(sum.max_error_mm, std::abs(e_mm));
-      sum.max_force_n = std::max(sum.max_force_n, std::abs(force_n));
-      if (measured > 0) variation += std::abs(force_n - previous_force_n);
-      previous_force_n = force_n;
-      if (want_spectrum && forces.size() < forces.capacity()) forces.push_back(force_n);
-      ++measured;
-    }
-    // RK4 on (x, v)' = (v, (F − F_d(τ) − b v)/m), F held over the period.
-    const double inv_m = 1 / mass;
-    for (int j = 0; j < c.substeps; ++j) {
-      const double tj = t + j * h;
-      const double fd_mid = cutting.at(tj + h / 2) * from_n, fd_end = cutting.at(tj + h) * from_n;
-      const double k1x = v, k1v = (force - fd - damping * v) * inv_m;
-      const double v2 = v + h / 2 * k1v;
-      const double k2x = v2, k2v = (force - fd_mid - damping * v2) * inv_m;
-      const double v3 = v + h / 2 * k2v;
-      const double k3x = v3, k3v = (force - fd_mid - damping * v3) * inv_m;
-      const double v4 = v + h * k3v;
-      const double k4x = v4, k4v = (force - fd_end - damping * v4) * inv_m;
-      x += h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x);
-      v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
+  void advance(AxisState& axis, double force, double t) override {
+    double x = axis.x, v = axis.v, fd = cutting_.at(t) * from_n_;
+    for (int j = 0; j < substeps_; ++j) {
+      const double tj = t + j * h_;
+      const double fd_mid = cutting_.at(tj + h_ / 2) * from_n_, fd_end = cutting_.at(tj + h_) * from_n_;
+      const double k1v = (force - fd - damping_ * v) * inv_m_;
+      const double v2 = v + h_ / 2 * k1v, k2v = (force - fd_mid - damping_ * v2) * inv_m_;
+      const double v3 = v + h_ / 2 * k2v, k3v = (force - fd_mid - damping_ * v3) * inv_m_;
+      const double v4 = v + h_ * k3v, k4v = (force - fd_end - damping_ * v4) * inv_m_;
+      x += h_ / 6 * (v + 2 * v2 + 2 * v3 + v4);
+      v += h_ / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
       fd = fd_end;
     }
-    sum.plant_steps += static_cast<std::uint64_t>(c.substeps);
-    error_integral += e * T;
+    axis = {x, v};
   }
-  if (measured > 0) {
-    const double n = static_cast<double>(measured);
-    sum.measured_s = n * T;
-    sum.rms_error_mm = std::sqrt(sum_e2 / n), sum.rms_velocity_error_mm_s = std::sqrt(sum_ev2 / n);
-    sum.rms_s = std::sqrt(sum_s2 / n), sum.effort_rms_n = std::sqrt(sum_f2 / n);
-    sum.chattering_n_s = variation / sum.measured_s;
-    sum.saturated_share = static_cast<double>(saturated) / static_cast<double>(std::max<std::uint64_t>(1, sum.plant_steps / c.substeps));
-    if (want_spectrum) sum.hf_share = high_frequency_share(forces, T, c.hf_cutoff_hz);
-  }
-  return sum;
+
+ private:
+  const MillingForce cutting_;
+  double h_, from_n_, inv_m_ = 0, damping_ = 0;
+  int substeps_;
+};
+
+FeedDriveSummary simulate_rk4(const FeedDriveConfig& c) {
+  Rk4Integrator rk4(c);
+  return simulate_feed_drive(c, rk4);
 }
 
 FeedDriveConfig default_run(ControllerKind kind) {
@@ -184,20 +122,11 @@ struct BarePlant {
   }
 
   double peer() const {
-    const double m = c.plant.mass_kg, b = c.plant.damping_kg_s, inv_m = 1 / m;
-    double x = 0, v = 0, fd = cutting.at(0) * from_n;
-    for (std::uint64_t i = 0; i < steps; ++i) {
-      const double t = static_cast<double>(i) * h, force = force_at(i / 10);  // a division against the step's ~90 ns
-      const double fd_mid = cutting.at(t + h / 2) * from_n, fd_end = cutting.at(t + h) * from_n;
-      const double k1v = (force - fd - b * v) * inv_m;
-      const double v2 = v + h / 2 * k1v, k2v = (force - fd_mid - b * v2) * inv_m;
-      const double v3 = v + h / 2 * k2v, k3v = (force - fd_mid - b * v3) * inv_m;
-      const double v4 = v + h * k3v, k4v = (force - fd_end - b * v4) * inv_m;
-      x += h / 6 * (v + 2 * v2 + 2 * v3 + v4);
-      v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
-      fd = fd_end;
-    }
-    return x;
+    Rk4Integrator rk4(c);
+    rk4.configure(c.plant.mass_kg, c.plant.damping_kg_s);
+    AxisState axis;
+    for (std::uint64_t period = 0; period < steps / 10; ++period) rk4.advance(axis, force_at(period), static_cast<double>(period) * c.period_s);
+    return axis.x;
   }
 };
 

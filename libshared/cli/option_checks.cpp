@@ -6,34 +6,41 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 namespace tk::cli {
+
+std::string out_of_domain(double v, NumberDomain domain) {
+  const bool finite = std::isfinite(v);
+  const bool positive = finite && v >= kMinPositiveOption && v <= kMaxOptionMagnitude;
+  switch (domain) {
+    case NumberDomain::finite:
+      if (!finite || std::abs(v) > kMaxOptionMagnitude) return "must be a number from -1e12 to 1e12";
+      break;
+    case NumberDomain::non_negative:
+      if (!(v == 0 || positive)) return "must be 0 or a number from 1e-12 to 1e12";
+      break;
+    case NumberDomain::positive:
+      if (!positive) return "must be a positive number from 1e-12 to 1e12";
+      break;
+    case NumberDomain::fraction:
+      if (!finite || !(v >= 0 && v <= 1)) return "must be a number from 0 to 1";
+      break;
+  }
+  return {};
+}
 
 CLI::Validator number_check(NumberDomain domain) {
   return CLI::Validator(
       [domain](std::string& text) -> std::string {
         errno = 0;
         char* end = nullptr;
-        const double v = std::strtod(text.c_str(), &end);
+        double v = std::strtod(text.c_str(), &end);
         if (text.empty() || end != text.c_str() + text.size()) return fmt::format("'{}' is not a number", text);
-        const bool finite = std::isfinite(v) && errno != ERANGE;
-        const bool positive = finite && v >= kMinPositiveOption && v <= kMaxOptionMagnitude;
-        switch (domain) {
-          case NumberDomain::finite:
-            if (!finite || std::abs(v) > kMaxOptionMagnitude) return fmt::format("must be a number from -1e12 to 1e12, not {}", text);
-            break;
-          case NumberDomain::non_negative:
-            if (!(v == 0 || positive)) return fmt::format("must be 0 or a number from 1e-12 to 1e12, not {}", text);
-            break;
-          case NumberDomain::positive:
-            if (!positive) return fmt::format("must be a positive number from 1e-12 to 1e12, not {}", text);
-            break;
-          case NumberDomain::fraction:
-            if (!finite || !(v >= 0 && v <= 1)) return fmt::format("must be a number from 0 to 1, not {}", text);
-            break;
-        }
-        return {};
+        if (errno == ERANGE) v = std::numeric_limits<double>::quiet_NaN();  // overflow or underflow: out of every domain
+        const std::string problem = out_of_domain(v, domain);
+        return problem.empty() ? problem : fmt::format("{}, not {}", problem, text);
       },
       "");
 }

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <string>
 
 namespace tk::cli {
 
@@ -16,6 +17,8 @@ inline constexpr double kMaxOptionMagnitude = 1e12, kMinPositiveOption = 1e-12;
 
 enum class NumberDomain { finite, non_negative, positive, fraction };
 
+/// What is wrong with `v` for the domain ("must be ..."), empty when nothing.
+std::string out_of_domain(double v, NumberDomain domain);
 /// A finite number in the domain (non_negative: 0 or positive; fraction: 0 to 1).
 CLI::Validator number_check(NumberDomain domain);
 /// A whole number from `low` to `high` (CLI11 itself would wrap "-1" round to 2^64 − 1).

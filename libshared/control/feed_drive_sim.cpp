@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <numbers>
 #include <vector>
 
+#include "concurrency/fftw_planner.hpp"
 #include "io/error.hpp"
 
 namespace tk::control {
@@ -27,9 +27,6 @@ void require(bool ok, const std::string& message) {
 
 /// hf_share is taken over at most this many samples after --settle (128 MB).
 constexpr std::uint64_t kSpectrumSamples = 1u << 24;
-
-/// FFTW's planner is not thread-safe; sweeps run simulations on several threads.
-std::mutex fftw_planner_mutex;
 
 }  // namespace
 
@@ -61,19 +58,18 @@ void FeedDriveConfig::validate() const {
 
 std::uint64_t FeedDriveConfig::periods() const { return static_cast<std::uint64_t>(std::llround(duration_s / period_s)); }
 
-double high_frequency_share(const std::vector<double>& samples, double period_s, double cutoff_hz) {
+double high_frequency_share(std::vector<double> samples, double period_s, double cutoff_hz) {
   const std::size_t n = samples.size();
   if (n < 2) return 0;
-  std::vector<double> input(samples);
   std::vector<fftw_complex> spectrum(n / 2 + 1);
   fftw_plan plan;
   {
-    std::lock_guard lock(fftw_planner_mutex);
-    plan = fftw_plan_dft_r2c_1d(static_cast<int>(n), input.data(), spectrum.data(), FFTW_ESTIMATE);
+    std::lock_guard lock(fftw_planner_mutex());
+    plan = fftw_plan_dft_r2c_1d(static_cast<int>(n), samples.data(), spectrum.data(), FFTW_ESTIMATE);
   }
   fftw_execute(plan);
   {
-    std::lock_guard lock(fftw_planner_mutex);
+    std::lock_guard lock(fftw_planner_mutex());
     fftw_destroy_plan(plan);
   }
   // One-sided periodogram: bins other than DC and Nyquist stand for two.
@@ -87,21 +83,57 @@ double high_frequency_share(const std::vector<double>& samples, double period_s,
   return total > 0 ? above / total : 0;
 }
 
-FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, const std::function<void(const FeedDriveSample&)>& on_sample,
+namespace {
+
+/// The exact step of drive_plant.hpp, the cutting force linear across each
+/// of the period's substeps and walked by rotation.
+class ExactIntegrator final : public PeriodIntegrator {
+ public:
+  explicit ExactIntegrator(const FeedDriveConfig& c)
+      : cutting_(c.cut), disturbance_(cutting_, c.period_s / c.substeps), step_s_(c.period_s / c.substeps),
+        from_n_(1 / c.length_unit_m), substeps_(c.substeps) {}
+
+  void configure(double mass_kg, double damping_kg_s) override { plant_.configure(mass_kg, damping_kg_s, step_s_); }
+
+  void advance(AxisState& axis, double force, double t_s) override {
+    disturbance_.start(t_s);  // re-anchored every period, so the rotation cannot drift
+    double fd = disturbance_.value() * from_n_;
+    for (int j = 0; j < substeps_; ++j) {
+      disturbance_.advance();
+      const double fd_next = disturbance_.value() * from_n_;
+      plant_.step(axis, force, fd, fd_next);
+      fd = fd_next;
+    }
+  }
+
+ private:
+  const MillingForce cutting_;  // before disturbance_, which points at it
+  MillingForce::Stepper disturbance_;
+  DrivePlant plant_;
+  double step_s_, from_n_;
+  int substeps_;
+};
+
+}  // namespace
+
+FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, const FeedDriveSampleSink& on_sample, std::uint64_t every) {
+  ExactIntegrator integrator(c);  // the loop validates c; the cut validates itself first
+  return simulate_feed_drive(c, integrator, on_sample, every);
+}
+
+FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, PeriodIntegrator& integrator, const FeedDriveSampleSink& on_sample,
                                      std::uint64_t every) {
   c.validate();
   const double L = c.length_unit_m, from_mm = 1e-3 / L, to_mm = L / 1e-3, from_n = 1 / L, to_n = L;
-  const double T = c.period_s, h = T / c.substeps;
+  const double T = c.period_s;
   const std::uint64_t periods = c.periods();
   const double force_limit = c.amplifier_a_v * c.force_constant_n_a * c.voltage_limit_v * from_n;
   const double quantum = c.encoder_mm * from_mm;
   const double position_alpha = low_pass_alpha(c.position_filter_hz, T), velocity_alpha = low_pass_alpha(c.velocity_filter_hz, T);
 
   FeedController controller(c.gains, c.mass_estimate_kg, c.damping_estimate_kg_s, T);
-  const MillingForce cutting(c.cut);
-  MillingForce::Stepper disturbance(cutting, h);
-  DrivePlant plant;
-  plant.configure(c.plant.mass_at(0.5 / periods), c.plant.damping_at(0.5 / periods), h);
+  const MillingForce cutting(c.cut);  // F_d for the samples; the integrator has its own
+  integrator.configure(c.plant.mass_at(0.5 / periods), c.plant.damping_at(0.5 / periods));
 
   const ReferenceSample start = c.reference.at(0);
   AxisState axis{(std::isnan(c.initial_position_mm) ? start.x_mm : c.initial_position_mm) * from_mm,
@@ -119,7 +151,7 @@ FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, const std::functi
 
   for (std::uint64_t k = 0; k < periods; ++k) {
     const double t = static_cast<double>(k) * T;
-    if (c.plant.varies()) plant.configure(c.plant.mass_at((k + 0.5) / periods), c.plant.damping_at((k + 0.5) / periods), h);
+    if (c.plant.varies()) integrator.configure(c.plant.mass_at((k + 0.5) / periods), c.plant.damping_at((k + 0.5) / periods));
     if (k > 0) {  // the encoder, differenced for velocity, each through its filter
       const double reading = measure(axis.x);
       x_hat += position_alpha * (reading - x_hat);
@@ -136,15 +168,11 @@ FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, const std::functi
     const double e = xr - x_hat, e_rate = vr - v_hat;
     const double surface = e_rate + c.gains.mu * e + c.gains.lambda * error_integral;
     double force = controller.force({xr, vr, ar, x_hat, v_hat, e, e_rate, error_integral, surface});
-    if (!(std::abs(force) <= force_limit)) {  // also catches NaN
-      force = std::isnan(force) ? 0 : std::copysign(force_limit, force);
-      ++saturated;
-    }
-    disturbance.start(t);
-    double fd = disturbance.value() * from_n;
+    const bool saturating = !(std::abs(force) <= force_limit);  // also catches NaN
+    if (saturating) force = std::isnan(force) ? 0 : std::copysign(force_limit, force);
     const double force_n = force * to_n;
     if (on_sample && k % every == 0)
-      on_sample({t, r_mm.x_mm, axis.x * to_mm, true_error * to_mm, true_rate * to_mm, surface * to_mm, force_n, fd * to_n});
+      on_sample({t, r_mm.x_mm, axis.x * to_mm, true_error * to_mm, true_rate * to_mm, surface * to_mm, force_n, cutting.at(t)});
     if (t >= c.settle_s) {
       const double e_mm = true_error * to_mm, ev_mm = true_rate * to_mm, s_mm = surface * to_mm;
       sum_e2 += e_mm * e_mm, sum_ev2 += ev_mm * ev_mm, sum_s2 += s_mm * s_mm, sum_f2 += force_n * force_n;
@@ -152,15 +180,11 @@ FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, const std::functi
       sum.max_force_n = std::max(sum.max_force_n, std::abs(force_n));
       if (measured > 0) variation += std::abs(force_n - previous_force_n);
       previous_force_n = force_n;
-      if (want_spectrum && forces.size() < forces.capacity()) forces.push_back(force_n);
+      if (want_spectrum && forces.size() < kSpectrumSamples) forces.push_back(force_n);
+      saturated += saturating;
       ++measured;
     }
-    for (int j = 0; j < c.substeps; ++j) {
-      disturbance.advance();
-      const double fd_next = disturbance.value() * from_n;
-      plant.step(axis, force, fd, fd_next);
-      fd = fd_next;
-    }
+    integrator.advance(axis, force, t);
     sum.plant_steps += static_cast<std::uint64_t>(c.substeps);
     error_integral += e * T;
   }
@@ -170,8 +194,8 @@ FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, const std::functi
     sum.rms_error_mm = std::sqrt(sum_e2 / n), sum.rms_velocity_error_mm_s = std::sqrt(sum_ev2 / n);
     sum.rms_s = std::sqrt(sum_s2 / n), sum.effort_rms_n = std::sqrt(sum_f2 / n);
     sum.chattering_n_s = variation / sum.measured_s;
-    sum.saturated_share = static_cast<double>(saturated) / static_cast<double>(std::max<std::uint64_t>(1, sum.plant_steps / c.substeps));
-    if (want_spectrum) sum.hf_share = high_frequency_share(forces, T, c.hf_cutoff_hz);
+    sum.saturated_share = static_cast<double>(saturated) / n;
+    if (want_spectrum) sum.hf_share = high_frequency_share(std::move(forces), T, c.hf_cutoff_hz);
   }
   return sum;
 }

@@ -61,14 +61,31 @@ struct FeedDriveSummary {
   double diverged_at_s = 0;
 };
 
-/// Runs one simulation; `on_sample` (may be empty) gets every `every`-th
-/// control sample.
-FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& config,
-                                     const std::function<void(const FeedDriveSample&)>& on_sample = {},
+/// Moves the axis across one control period with the drive force held: the
+/// loop's one point of variation (the benchmark puts classical RK4 here to
+/// time the same loop against it). Lengths and forces in the model's units.
+class PeriodIntegrator {
+ public:
+  virtual ~PeriodIntegrator() = default;
+  /// The plant's m and b from now on.
+  virtual void configure(double mass_kg, double damping_kg_s) = 0;
+  /// From t to t + period, `force` held, the cutting force acting.
+  virtual void advance(AxisState& axis, double force, double t_s) = 0;
+};
+
+using FeedDriveSampleSink = std::function<void(const FeedDriveSample&)>;
+
+/// Runs one simulation with the exact plant step; `on_sample` (may be
+/// empty) gets every `every`-th control sample.
+FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& config, const FeedDriveSampleSink& on_sample = {},
                                      std::uint64_t every = 1);
+/// The same loop with another integrator between samples.
+FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& config, PeriodIntegrator& integrator,
+                                     const FeedDriveSampleSink& on_sample = {}, std::uint64_t every = 1);
 
 /// Share of the power of `samples` (taken every `period_s`) at frequencies
 /// above `cutoff_hz`, from the periodogram; 0 for an all-zero signal.
-double high_frequency_share(const std::vector<double>& samples, double period_s, double cutoff_hz);
+/// By value: FFTW wants a writable input, and the caller is done with it.
+double high_frequency_share(std::vector<double> samples, double period_s, double cutoff_hz);
 
 }  // namespace tk::control

@@ -18,31 +18,25 @@ void require_finite(double v, const char* what) {
 }
 }  // namespace
 
-Reference Reference::sine(double amplitude_mm, double omega_rad_s) {
-  require_finite(amplitude_mm, "amplitude");
-  require_finite(omega_rad_s, "frequency");
+Reference Reference::analytic(Kind kind, std::pair<double, const char*> p1, std::pair<double, const char*> p2, const char* description) {
+  require_finite(p1.first, p1.second);
+  require_finite(p2.first, p2.second);
   Reference r;
-  r.kind_ = Kind::sine, r.p1_ = amplitude_mm, r.p2_ = omega_rad_s;
-  r.description_ = fmt::format("{:g} mm sin({:g} rad/s t)", amplitude_mm, omega_rad_s);
+  r.kind_ = kind, r.p1_ = p1.first, r.p2_ = p2.first;
+  r.description_ = fmt::format(fmt::runtime(description), p1.first, p2.first);
   return r;
+}
+
+Reference Reference::sine(double amplitude_mm, double omega_rad_s) {
+  return analytic(Kind::sine, {amplitude_mm, "amplitude"}, {omega_rad_s, "frequency"}, "{:g} mm sin({:g} rad/s t)");
 }
 
 Reference Reference::step(double height_mm, double at_s) {
-  require_finite(height_mm, "step height");
-  require_finite(at_s, "step time");
-  Reference r;
-  r.kind_ = Kind::step, r.p1_ = height_mm, r.p2_ = at_s;
-  r.description_ = fmt::format("{:g} mm step at {:g} s", height_mm, at_s);
-  return r;
+  return analytic(Kind::step, {height_mm, "step height"}, {at_s, "step time"}, "{:g} mm step at {:g} s");
 }
 
 Reference Reference::ramp(double slope_mm_s, double at_s) {
-  require_finite(slope_mm_s, "ramp slope");
-  require_finite(at_s, "ramp start");
-  Reference r;
-  r.kind_ = Kind::ramp, r.p1_ = slope_mm_s, r.p2_ = at_s;
-  r.description_ = fmt::format("{:g} mm/s ramp from {:g} s", slope_mm_s, at_s);
-  return r;
+  return analytic(Kind::ramp, {slope_mm_s, "ramp slope"}, {at_s, "ramp start"}, "{:g} mm/s ramp from {:g} s");
 }
 
 Reference Reference::from_records(const std::string& path) {

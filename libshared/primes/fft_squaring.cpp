@@ -3,6 +3,7 @@
 
 #include <fftw3.h>
 
+#include "concurrency/fftw_planner.hpp"
 #include "io/error.hpp"
 
 #include <algorithm>
@@ -52,7 +53,6 @@ int max_digit_bits(std::size_t length) {
   return std::min(exact, safe);
 }
 
-std::mutex planner_mutex;  // FFTW's planner is not thread-safe; execution is
 
 // FFTW_MEASURE times candidate plans: up to a few seconds at the largest
 // lengths, worth it for proofs of minutes, where it is 10-30% faster than
@@ -76,7 +76,7 @@ struct PlanCache {
 const Plans* plans_for(std::size_t length) {
   static PlanCache plan_cache;
   auto& cache = plan_cache.plans;
-  std::lock_guard lock(planner_mutex);
+  std::lock_guard lock(fftw_planner_mutex());
   static const bool system_wisdom = fftw_import_system_wisdom() != 0;  // /etc/fftw/wisdom, if the admin made one
   (void)system_wisdom;
   auto found = cache.find(length);

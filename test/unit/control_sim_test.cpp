@@ -159,6 +159,12 @@ TEST(FeedDriveSim, ForceSaturatesAtTheAmplifierLimit) {
   const FeedDriveSummary sum = simulate_feed_drive(c);
   EXPECT_GT(sum.saturated_share, 0.05);
   EXPECT_DOUBLE_EQ(sum.max_force_n, 1000);
+  // A share of the measured samples: the saturated ones among those after --settle.
+  std::size_t saturated_after = 0, after = 0;
+  c.settle_s = 0.02;
+  for (const FeedDriveSample& s : samples)
+    if (s.t_s >= c.settle_s) ++after, saturated_after += std::abs(s.force_n) >= 1000 * (1 - 1e-15);
+  EXPECT_DOUBLE_EQ(simulate_feed_drive(c).saturated_share, static_cast<double>(saturated_after) / after);
 }
 
 /// The summary figures recomputed from the time series (every sample).

@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <optional>
 #include <thread>
 
 #include "cli/number_option.hpp"
@@ -21,9 +20,6 @@ namespace {
 
 using namespace tk::control;
 
-/// Gains lie within ±cli::kMaxOptionMagnitude, positive ones at or above
-/// cli::kMinPositiveOption (see cli/option_checks.hpp).
-constexpr double kMaxMagnitude = tk::cli::kMaxOptionMagnitude, kMinPositive = tk::cli::kMinPositiveOption;
 /// One run's length: about 5 s of work and 300 MB (the force samples and
 /// their spectrum for hf_share) at the default 10 substeps.
 constexpr double kMaxPeriods = 1e7, kMaxPlantSteps = 1e8;
@@ -70,8 +66,8 @@ std::vector<double> gain_grid(const std::string& text, const char* option) {
     throw tk::UsageError(e.what());
   }
   for (const double v : values)
-    if (!(v == 0 || (v >= kMinPositive && v <= kMaxMagnitude)))
-      throw tk::UsageError(fmt::format("{}: must be 0 or a number from 1e-12 to 1e12, not {}", option, v));
+    if (const std::string problem = tk::cli::out_of_domain(v, tk::cli::NumberDomain::non_negative); !problem.empty())
+      throw tk::UsageError(fmt::format("{}: {}, not {}", option, problem, v));
   return values;
 }
 
