@@ -1,0 +1,42 @@
+#include "quality/student_t.hpp"
+
+#include <fmt/format.h>
+
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
+#include <cmath>
+
+#include "io/error.hpp"
+
+namespace tk::quality {
+
+double student_t_upper_quantile(double tail, double df) {
+  if (!(tail > 0 && tail < 0.5)) throw Error(fmt::format("a t quantile's tail probability must lie in (0, 0.5), not {}", tail));
+  if (!(df > 0) || !std::isfinite(df)) throw Error(fmt::format("a t distribution needs positive degrees of freedom, not {}", df));
+  return boost::math::quantile(boost::math::complement(boost::math::students_t_distribution<double>(df), tail));
+}
+
+StudentCriticalValues::StudentCriticalValues(double alpha, Sidedness sidedness)
+    : alpha_(alpha), sidedness_(sidedness), tail_(sidedness == Sidedness::two ? alpha / 2 : alpha) {
+  if (!(alpha > 0 && alpha < (sidedness == Sidedness::two ? 1.0 : 0.5)))
+    throw Error(fmt::format("alpha must lie in (0, {}) for a {}-sided test, not {}", sidedness == Sidedness::two ? 1 : 0.5,
+                            sidedness == Sidedness::two ? "two" : "one", alpha));
+  normal_quantile_ = boost::math::quantile(boost::math::complement(boost::math::normal_distribution<double>(), tail_));
+}
+
+double StudentCriticalValues::compute(std::size_t df) const {
+  if (df == 0) throw Error("a t test needs at least one degree of freedom");
+  if (df < kTableLimit) {
+    if (table_.size() <= df) table_.resize(std::max(df + 1, 2 * table_.size()), 0.0);
+    return table_[df] = student_t_upper_quantile(tail_, static_cast<double>(df));
+  }
+  // Hill's series (Abramowitz & Stegun 26.7.5) in powers of 1/ν.
+  const double z = normal_quantile_, z2 = z * z, v = 1.0 / static_cast<double>(df);
+  const double g1 = (z2 + 1) * z / 4;
+  const double g2 = ((5 * z2 + 16) * z2 + 3) * z / 96;
+  const double g3 = (((3 * z2 + 19) * z2 + 17) * z2 - 15) * z / 384;
+  const double g4 = ((((79 * z2 + 776) * z2 + 1482) * z2 - 1920) * z2 - 945) * z / 92160;
+  return z + v * (g1 + v * (g2 + v * (g3 + v * g4)));
+}
+
+}  // namespace tk::quality

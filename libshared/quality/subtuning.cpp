@@ -1,0 +1,85 @@
+#include "quality/subtuning.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+
+#include "io/error.hpp"
+
+namespace tk::quality {
+
+std::string_view decision_name(Decision d) {
+  switch (d) {
+    case Decision::insufficient: return "insufficient";
+    case Decision::none: return "none";
+    case Decision::subtune: return "subtune";
+  }
+  return "?";
+}
+
+SubTuner::SubTuner(const SubTuneSettings& settings)
+    : settings_(settings),
+      critical_(settings.alpha, settings.alternative == Alternative::two_sided ? Sidedness::two : Sidedness::one),
+      spread_floor_sq_(settings.resolution * settings.resolution / 12) {
+  const std::size_t least = settings.statistic == TrendStatistic::slope ? 3 : 2;
+  if (settings.min_parts < least)
+    throw Error(fmt::format("the {} test needs at least {} parts in a run, not {}",
+                            settings.statistic == TrendStatistic::slope ? "slope" : "seed's", least, settings.min_parts));
+  if (std::isinf(settings.target)) throw Error("the sub-tuning target must be finite");
+  if (!(settings.resolution >= 0) || !std::isfinite(settings.resolution))
+    throw Error(fmt::format("the gauge resolution must be 0 or positive, not {}", settings.resolution));
+}
+
+void SubTuner::start_run() {
+  ++run_;
+  n_ = 0;
+  mean_i_ = mean_size_ = co_moment_ = moment_i_ = moment_size_ = 0;
+}
+
+SubTuneStep SubTuner::observe(double size) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  ++n_;
+  const double n = static_cast<double>(n_), inv_n = 1 / n;
+  const double di = n - mean_i_, dsize = size - mean_size_;
+  mean_i_ += di * inv_n;
+  mean_size_ += dsize * inv_n;
+  const double dsize_after = size - mean_size_;
+  co_moment_ += di * dsize_after;
+  moment_i_ += di * (n - mean_i_);
+  moment_size_ += dsize * dsize_after;
+
+  SubTuneStep step;
+  step.run = run_, step.n = n_, step.offset = offset_;
+  step.a = step.b = step.s = step.t = step.t_crit = nan;
+  if (n_ >= 2) {
+    step.b = co_moment_ / moment_i_;
+    step.a = mean_size_ - step.b * mean_i_;
+  }
+  if (n_ < settings_.min_parts) return step;
+
+  const double sse = std::max(0.0, moment_size_ - step.b * co_moment_);
+  const bool seed = settings_.statistic == TrendStatistic::seed;
+  const double spread_sq = std::max(sse / (seed ? n - 1 : n - 2), spread_floor_sq_);
+  step.s = std::sqrt(spread_sq);
+  const double rise = std::abs(step.b) * (seed ? n : std::sqrt(moment_i_));  // |ã − A_TN| = n |b̃|
+  const double scale = seed ? std::sqrt(n / 2) : 1.0;
+  step.t = step.s > 0 ? rise / step.s * scale : (rise > 0 ? std::numeric_limits<double>::infinity() : 0.0);
+  step.df = seed ? 2 * (n_ - 1) : n_ - 2;
+  step.t_crit = critical_.at(step.df);
+  const bool right_way = settings_.alternative == Alternative::two_sided ||
+                         (settings_.alternative == Alternative::greater ? step.b > 0 : step.b < 0);
+  const bool significant = right_way && step.t > step.t_crit;
+  if (!significant) {
+    step.decision = Decision::none;
+    return step;
+  }
+  step.decision = Decision::subtune;
+  step.correction = std::isnan(settings_.target) ? -step.b * n : settings_.target - (step.a + step.b * n);
+  offset_ += step.correction;
+  step.offset = offset_;
+  start_run();
+  return step;
+}
+
+}  // namespace tk::quality
