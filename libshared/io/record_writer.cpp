@@ -92,20 +92,11 @@ void RecordWriter::write_csv(const Record& record) {
   emit(line_);
 }
 
-void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t integers) {
+template <class AppendCell>
+void RecordWriter::write_declared(std::size_t count, const AppendCell& append) {
   line_.clear();
-  auto append = [&](std::size_t i) {
-    if (!std::isfinite(values[i])) {  // as write() does: JSON null, an empty CSV cell
-      if (format_ == OutputFormat::json_lines) line_ += "null";
-      return;
-    }
-    if (integers >> i & 1)
-      fmt::format_to(std::back_inserter(line_), "{}", static_cast<long long>(values[i]));
-    else
-      fmt::format_to(std::back_inserter(line_), "{}", values[i]);
-  };
   if (format_ == OutputFormat::csv) {
-    if (columns_.empty()) {  // the header, once, whichever of write() and write_numbers() comes first
+    if (columns_.empty()) {  // the header, once, whichever of write() and the fast paths comes first
       columns_ = declared_;
       for (std::size_t i = 0; i < columns_.size(); ++i) {
         if (i) line_ += ',';
@@ -113,23 +104,62 @@ void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t i
       }
       line_ += '\n';
     }
-    for (std::size_t i = 0; i < values.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
       if (i) line_ += ',';
-      append(i);
+      append(i, line_);
     }
   } else {
     line_ += '{';
-    for (std::size_t i = 0; i < values.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
       if (i) line_ += ',';
       line_ += '"';
       line_ += declared_[i];
       line_ += "\":";
-      append(i);
+      append(i, line_);
     }
     line_ += '}';
   }
   line_ += '\n';
   emit(line_);
+}
+
+namespace {
+
+void append_number(std::string& line, double v, bool json) {
+  if (!std::isfinite(v)) {  // as write() does: JSON null, an empty CSV cell
+    if (json) line += "null";
+    return;
+  }
+  fmt::format_to(std::back_inserter(line), "{}", v);
+}
+
+}  // namespace
+
+void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t integers) {
+  const bool json = format_ == OutputFormat::json_lines;
+  write_declared(values.size(), [&](std::size_t i, std::string& line) {
+    if (integers >> i & 1 && std::isfinite(values[i]))
+      fmt::format_to(std::back_inserter(line), "{}", static_cast<long long>(values[i]));
+    else
+      append_number(line, values[i], json);
+  });
+}
+
+void RecordWriter::write_row(std::span<const Cell> cells) {
+  const bool json = format_ == OutputFormat::json_lines;
+  write_declared(cells.size(), [&](std::size_t i, std::string& line) {
+    const Cell& c = cells[i];
+    switch (c.kind) {
+      case Cell::Kind::number: append_number(line, c.number, json); break;
+      case Cell::Kind::integer: fmt::format_to(std::back_inserter(line), "{}", c.whole); break;
+      case Cell::Kind::boolean: line += c.whole ? "true" : "false"; break;
+      case Cell::Kind::word:
+        if (json) line += '"';
+        line += c.word;
+        if (json) line += '"';
+        break;
+    }
+  });
 }
 
 }  // namespace tk::io

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 #include <span>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,21 @@
 namespace tk::io {
 
 enum class OutputFormat { json_lines, csv };
+
+/// One value of RecordWriter::write_row(): a number (non-finite: null), a
+/// whole number, a word (a JSON string; it must need no escaping), or true/false.
+struct Cell {
+  enum class Kind : std::uint8_t { number, integer, word, boolean };
+  Kind kind = Kind::number;
+  double number = 0;
+  long long whole = 0;
+  std::string_view word = {};
+
+  static Cell real(double v) { return {Kind::number, v, 0, {}}; }
+  static Cell integer(long long v) { return {Kind::integer, 0, v, {}}; }
+  static Cell text(std::string_view w) { return {Kind::word, 0, 0, w}; }
+  static Cell boolean(bool b) { return {Kind::boolean, 0, b, {}}; }
+};
 
 /// One writer for every tool. JSON Lines writes each record as one compact
 /// object. CSV takes its columns from the first record plus the fields the
@@ -34,11 +50,16 @@ class RecordWriter {
   /// integer. The same output as write() of the equivalent record, without
   /// building one.
   void write_numbers(std::span<const double> values, std::uint64_t integers);
+  /// The fast path for records of mixed cells: one per declared field, in order.
+  void write_row(std::span<const Cell> cells);
   /// Flushes and reports a write error as Error.
   void flush();
 
  private:
   void write_csv(const Record& record);
+  /// One line of `count` declared fields, cell i written by append(i, line).
+  template <class AppendCell>
+  void write_declared(std::size_t count, const AppendCell& append);
   void emit(const std::string& text);
 
   OutputFormat format_;

@@ -34,27 +34,30 @@ SubTuner::SubTuner(const SubTuneSettings& settings)
 void SubTuner::start_run() {
   ++run_;
   n_ = 0;
-  mean_i_ = mean_size_ = co_moment_ = moment_i_ = moment_size_ = 0;
+  mean_size_ = co_moment_ = moment_size_ = 0;
 }
 
 SubTuneStep SubTuner::observe(double size) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   ++n_;
-  const double n = static_cast<double>(n_), inv_n = 1 / n;
-  const double di = n - mean_i_, dsize = size - mean_size_;
-  mean_i_ += di * inv_n;
-  mean_size_ += dsize * inv_n;
+  // The x's are 1..n, so their mean and moment are exact closed forms, and the
+  // previous mean of x is n/2: only the sizes need Welford's update.
+  const double n = static_cast<double>(n_);
+  if (n_ == 1) origin_ = size;
+  size -= origin_;  // sizes near the run's first keep their digits: 40.0012 − 40.0007, not 40.0012
+  const double dsize = size - mean_size_;
+  mean_size_ += dsize / n;
   const double dsize_after = size - mean_size_;
-  co_moment_ += di * dsize_after;
-  moment_i_ += di * (n - mean_i_);
+  co_moment_ += n / 2 * dsize_after;
   moment_size_ += dsize * dsize_after;
+  const double mean_i = (n + 1) / 2, moment_i = n * (n * n - 1) / 12;
 
   SubTuneStep step;
   step.run = run_, step.n = n_, step.offset = offset_;
   step.a = step.b = step.s = step.t = step.t_crit = nan;
   if (n_ >= 2) {
-    step.b = co_moment_ / moment_i_;
-    step.a = mean_size_ - step.b * mean_i_;
+    step.b = co_moment_ / moment_i;
+    step.a = origin_ + (mean_size_ - step.b * mean_i);
   }
   if (n_ < settings_.min_parts) return step;
 
@@ -62,7 +65,7 @@ SubTuneStep SubTuner::observe(double size) {
   const bool seed = settings_.statistic == TrendStatistic::seed;
   const double spread_sq = std::max(sse / (seed ? n - 1 : n - 2), spread_floor_sq_);
   step.s = std::sqrt(spread_sq);
-  const double rise = std::abs(step.b) * (seed ? n : std::sqrt(moment_i_));  // |ã − A_TN| = n |b̃|
+  const double rise = std::abs(step.b) * (seed ? n : std::sqrt(moment_i));  // |ã − A_TN| = n |b̃|
   const double scale = seed ? std::sqrt(n / 2) : 1.0;
   step.t = step.s > 0 ? rise / step.s * scale : (rise > 0 ? std::numeric_limits<double>::infinity() : 0.0);
   step.df = seed ? 2 * (n_ - 1) : n_ - 2;

@@ -78,7 +78,8 @@ class SubTuner {
   // Welford-style co-moments of (i, size) over the run: stable over runs of
   // any length, where raw sums of squares would cancel.
   std::uint64_t n_ = 0;
-  double mean_i_ = 0, mean_size_ = 0, co_moment_ = 0, moment_i_ = 0, moment_size_ = 0;
+  double origin_ = 0;  ///< the run's first size; the moments are of size − origin_
+  double mean_size_ = 0, co_moment_ = 0, moment_size_ = 0;
   double offset_ = 0;
 };
 

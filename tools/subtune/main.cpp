@@ -43,31 +43,44 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
   SubTuner tuner(settings);
   tk::io::RecordReader reader(inputs_or_stdin(inputs), tk::io::number_column_probe(field));
   tk::io::RecordWriter writer(tool.output_format());
-  std::vector<std::string> fields{"run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"};
-  if (limits.lower || limits.upper) fields.push_back("in_tolerance");
+  std::vector<std::string> fields{field, "run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"};
+  const bool option_limits = limits.lower || limits.upper;
+  if (option_limits) fields.push_back("in_tolerance");
   writer.declare_fields(fields);
   SizePlot plot;
   SizePlotInfo info;
   info.lower = limits.lower.value_or(info.lower), info.upper = limits.upper.value_or(info.upper);
   std::uint64_t parts = 0;
+  std::vector<tk::io::Cell> row;
   tk::Record record;
   while (reader.next(record)) {
     const tk::Location where = reader.where();
     const double size = tk::io::number_field(record, field, where);
     const SubTuneStep step = tuner.observe(size);
     ++parts;
-    record["run"] = step.run, record["n"] = step.n;
-    record["a"] = number_or_null(step.a), record["b"] = number_or_null(step.b), record["s"] = number_or_null(step.s);
-    record["t"] = number_or_null(step.t), record["t_crit"] = number_or_null(step.t_crit);
-    record["df"] = step.df > 0 ? tk::Record(step.df) : tk::Record(nullptr);
-    record["decision"] = decision_name(step.decision);
-    record["correction"] = step.correction, record["offset"] = step.offset;
     std::optional<double> lower = tk::io::optional_number_field(record, "lower", where);
     std::optional<double> upper = tk::io::optional_number_field(record, "upper", where);
     if (!lower) lower = limits.lower;
     if (!upper) upper = limits.upper;
-    if (lower || upper) record["in_tolerance"] = (!lower || size >= *lower) && (!upper || size <= *upper);
-    writer.write(record);
+    const bool in_tolerance = (!lower || size >= *lower) && (!upper || size <= *upper);
+    if (record.size() == 1) {  // a bare size (a number column): the writer's fast path, no record built
+      using tk::io::Cell;
+      const auto count = [](std::uint64_t v) { return v > 0 ? Cell::integer(static_cast<long long>(v)) : Cell::real(NAN); };
+      row.assign({Cell::real(size), Cell::integer(static_cast<long long>(step.run)), Cell::integer(static_cast<long long>(step.n)),
+                  Cell::real(step.a), Cell::real(step.b), Cell::real(step.s), Cell::real(step.t), Cell::real(step.t_crit),
+                  count(step.df), Cell::text(decision_name(step.decision)), Cell::real(step.correction), Cell::real(step.offset)});
+      if (option_limits) row.push_back(Cell::boolean(in_tolerance));
+      writer.write_row(row);
+    } else {
+      record["run"] = step.run, record["n"] = step.n;
+      record["a"] = number_or_null(step.a), record["b"] = number_or_null(step.b), record["s"] = number_or_null(step.s);
+      record["t"] = number_or_null(step.t), record["t_crit"] = number_or_null(step.t_crit);
+      record["df"] = step.df > 0 ? tk::Record(step.df) : tk::Record(nullptr);
+      record["decision"] = decision_name(step.decision);
+      record["correction"] = step.correction, record["offset"] = step.offset;
+      if (lower || upper) record["in_tolerance"] = in_tolerance;
+      writer.write(record);
+    }
     if (!svg_path.empty()) plot.add(static_cast<double>(parts), size, step.a + step.b * static_cast<double>(step.n), step.offset);
   }
   writer.flush();
