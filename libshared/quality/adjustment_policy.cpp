@@ -24,7 +24,7 @@ class SubTunePolicy final : public AdjustmentPolicy {
   PolicyKind kind() const override { return PolicyKind::subtune; }
   PolicyStep observe(double size) override {
     const SubTuneStep step = tuner_.observe(size);
-    return {step.decision == Decision::subtune, step.correction};
+    return {step.decision == Decision::subtune, step.correction, step.a + step.b * static_cast<double>(step.n)};
   }
   void reset() override { tuner_ = SubTuner(settings_); }
 
@@ -56,8 +56,8 @@ class EwmaPolicy final : public AdjustmentPolicy {
   PolicyKind kind() const override { return PolicyKind::ewma; }
   PolicyStep observe(double size) override {
     z_ += c_.ewma_lambda * (size - c_.target - z_);  // z as a deviation from the target
-    if (std::abs(z_) <= limit_) return {};
-    const PolicyStep step{true, -z_};
+    if (std::abs(z_) <= limit_) return {false, 0, c_.target + z_};
+    const PolicyStep step{true, -z_, c_.target + z_};
     z_ = 0;
     return step;
   }

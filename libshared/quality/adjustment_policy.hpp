@@ -5,6 +5,7 @@
 /// simulation and the ARL runs treat them alike.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -30,6 +31,9 @@ struct ChartSettings {
 struct PolicyStep {
   bool alarm = false;
   double correction = 0;  ///< mm to add to the set-up (0 without an alarm)
+  /// The policy's estimate of the current size level before any correction
+  /// (sub-tuning: the run's line at this part; EWMA: target + z); NaN when it has none.
+  double level = std::numeric_limits<double>::quiet_NaN();
 };
 
 class AdjustmentPolicy {

@@ -76,6 +76,7 @@ LatheOutcome simulate_lathe(const LatheSettings& s, AdjustmentPolicy& policy, co
     const PolicyStep step = policy.observe(r.measured_mm);
     r.alarm = step.alarm;
     r.correction_mm = step.correction;
+    r.level_mm = step.level;
     if (step.alarm) ++out.corrections, offset += step.correction;
     r.offset_mm = offset;
 

@@ -44,6 +44,7 @@ struct PartRecord {
   bool alarm = false;
   double correction_mm = 0;
   double offset_mm = 0;           ///< the sum of the policy's corrections, this part's included
+  double level_mm = 0;            ///< the policy's estimate of the size level (NaN: none)
 };
 
 struct LatheOutcome {

@@ -10,6 +10,7 @@
 #include "io/csv.hpp"
 #include "io/error.hpp"
 #include "io/input_file.hpp"
+#include "io/number_column.hpp"
 #include "io/record_fields.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
@@ -192,6 +193,46 @@ TEST(RecordReader, ReadsSeveralFilesEachWithItsOwnFormat) {
   EXPECT_EQ(r["n"], "2");
   EXPECT_EQ(reader.where().file, csv.path());
   EXPECT_FALSE(reader.next(r));
+}
+
+TEST(NumberColumn, BareNumbersBecomeOneFieldRecords) {
+  const auto records = read_all("40.012\n\n# gauge 2\n+39.998\n", number_column_probe("size"));
+  ASSERT_EQ(records.size(), 2u);
+  EXPECT_EQ(records[0]["size"].get<double>(), 40.012);
+  EXPECT_EQ(records[1]["size"].get<double>(), 39.998);
+  EXPECT_EQ(read_all("size\n40.1\n", number_column_probe("size"))[0]["size"], "40.1");  // a CSV header: not claimed
+  try {
+    read_all("40.0\ninf\n", number_column_probe("size"));
+    FAIL() << "inf was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.where().line, 2u);
+    EXPECT_NE(std::string(e.what()).find("not a finite number"), std::string::npos);
+  }
+}
+
+TEST(RecordWriter, RowCellsMatchTheRecordPath) {
+  struct Stream {
+    char* buffer = nullptr;
+    size_t size = 0;
+    std::FILE* file = open_memstream(&buffer, &size);
+    ~Stream() { std::free(buffer); }
+  };
+  for (const OutputFormat format : {OutputFormat::json_lines, OutputFormat::csv}) {
+    Stream stream;
+    {
+      RecordWriter writer(format, stream.file);
+      writer.declare_fields({"x", "n", "word", "flag", "gap"});
+      const Cell row[] = {Cell::real(0.1), Cell::integer(-7), Cell::text("subtune"), Cell::boolean(true), Cell::real(NAN)};
+      writer.write_row(row);
+      writer.flush();
+    }
+    std::fclose(stream.file);
+    const std::string text(stream.buffer, stream.size);
+    if (format == OutputFormat::json_lines)
+      EXPECT_EQ(text, "{\"x\":0.1,\"n\":-7,\"word\":\"subtune\",\"flag\":true,\"gap\":null}\n");
+    else
+      EXPECT_EQ(text, "x,n,word,flag,gap\n0.1,-7,subtune,true,\n");
+  }
 }
 
 TEST(RecordWriter, JsonLinesAreCompactAndRoundTripDoubles) {

@@ -30,6 +30,16 @@ std::vector<std::string> inputs_or_stdin(const std::vector<std::string>& inputs)
   return inputs.empty() ? std::vector<std::string>{"-"} : inputs;
 }
 
+/// Sizes and allowances beyond a kilometre are a unit or parsing mistake; the
+/// bound also keeps the run's sums of squares far inside double range.
+constexpr double kMaxLengthMm = 1e6;
+
+double length_field(const tk::Record& record, const std::string& key, const tk::Location& where) {
+  const double v = tk::io::number_field(record, key, where);
+  if (std::abs(v) > kMaxLengthMm) throw tk::Error(fmt::format("{} = {} mm is beyond ±{:g} mm", key, v, kMaxLengthMm), where);
+  return v;
+}
+
 /// A record's number, or null for NaN (a figure the run cannot give yet).
 tk::Record number_or_null(double v) { return std::isfinite(v) ? tk::Record(v) : tk::Record(nullptr); }
 
@@ -55,7 +65,7 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
   tk::Record record;
   while (reader.next(record)) {
     const tk::Location where = reader.where();
-    const double size = tk::io::number_field(record, field, where);
+    const double size = length_field(record, field, where);
     const SubTuneStep step = tuner.observe(size);
     ++parts;
     std::optional<double> lower = tk::io::optional_number_field(record, "lower", where);
@@ -104,8 +114,7 @@ void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::O
   tk::Record record;
   while (reader.next(record)) {
     const tk::Location where = reader.where();
-    points.push_back({tk::io::number_field(record, "a", where), tk::io::number_field(record, "f", where),
-                      tk::io::number_field(record, "y", where)});
+    points.push_back({length_field(record, "a", where), length_field(record, "f", where), length_field(record, "y", where)});
     if (residuals) records.push_back(std::move(record));
   }
   if (points.empty()) throw tk::Error("no calibration records (a, f, y) in the input");
@@ -170,7 +179,7 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
   tk::Record record;
   while (reader.next(record)) {
     const tk::Location where = reader.where();
-    const double a = tk::io::number_field(record, "a", where);
+    const double a = length_field(record, "a", where);
     if (a < 0) throw tk::Error(fmt::format("allowance a = {} mm is negative", a), where);
     if (feed_range) {
       const tk::machining::FeedChoice choice = tk::machining::feed_for_error(m, a, feed_range->target, feed_range->f_min, feed_range->f_max);
@@ -237,7 +246,7 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
         trace->write({{"policy", name}, {"part", p.part}, {"allowance", p.allowance_mm}, {"size", p.size_mm}, {"measured", p.measured_mm},
                       {"alarm", p.alarm}, {"correction", p.correction_mm}, {"offset", p.offset_mm}});
       }
-      if (!o.svg_path.empty()) plot.add(static_cast<double>(p.part), p.measured_mm, std::numeric_limits<double>::quiet_NaN(), p.offset_mm, p.size_mm);
+      if (!o.svg_path.empty()) plot.add(static_cast<double>(p.part), p.measured_mm, p.level_mm, p.offset_mm, p.size_mm);
     });
     const LatheOutcome stable = simulate_lathe(stable_process(lathe), *policy);
     tk::Record r{{"policy", name},
@@ -268,6 +277,7 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
       if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} parts only", SizePlot::kMaxParts));
       plot.write(o.svg_path, {.title = fmt::format("subtune --simulate --policy {}: {} parts, {} corrections, {:.1f} % in tolerance", name,
                                                    run.parts, run.corrections, 100.0 * static_cast<double>(run.in_tolerance) / static_cast<double>(run.parts)),
+                              .level_label = kind == PolicyKind::ewma ? "EWMA level (target + z)" : "regression A_T at the part",
                               .nominal = lathe.nominal_mm, .lower = lathe.lower_mm, .upper = lathe.upper_mm});
     }
   }
