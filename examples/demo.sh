@@ -58,6 +58,16 @@ print("   %-28s rms error %.5f mm, chattering %7.0f N/s" % (sys.argv[1], r["rms_
 done
 
 echo
+echo "== Georgiev et al.'s sub-tuning of a lathe: 1000 simulated parts, 40 +- 0.02 mm, a wearing tool;"
+echo "   the seed's trend test against the SPC charts (subtune(1)):"
+subtune --simulate --arl-runs 500 | python3 -c '
+import json, sys
+for r in map(json.loads, sys.stdin):
+    arl0 = "" if r["arl0"] is None else ", in-control ARL %.0f parts" % r["arl0"]
+    print("   %-9s %5.1f %% in tolerance, %3d corrections (%3d with no drift)%s" % (
+        r["policy"], 100 * r["in_tolerance_share"], r["corrections"], r["false_alarms"], arl0))'
+
+echo
 echo "== The main job, a search from scratch: sieve | mrtest | riesel finds and proves"
 echo "   twin primes k*2^3300-1, k*2^3300+1 of 1,000 digits (examples/search-twins.sh):"
 bash "$here/search-twins.sh"

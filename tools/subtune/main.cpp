@@ -147,7 +147,12 @@ void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::O
 ForceErrorModel load_model(const std::string& path, const std::string& coefficient_text) {
   ForceErrorModel m;
   if (!coefficient_text.empty()) {
-    const std::vector<double> values = tk::cli::parse_numbers(coefficient_text, "--coefficients", 6);
+    std::vector<double> values;
+    try {
+      values = tk::cli::parse_numbers(coefficient_text, "--coefficients", 6);
+    } catch (const tk::Error& e) {
+      throw tk::UsageError(e.what());
+    }
     for (std::size_t k = 0; k < 6; ++k) *coefficients(m)[k] = values[k];
     return m;
   }
@@ -188,7 +193,9 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
       record["error_min"] = choice.error_min, record["error_max"] = choice.error_max;
       if (choice.status == tk::machining::FeedStatus::none) ++unsolved;
     } else {
-      const double f = tk::io::optional_number_field(record, "f", where).value_or(fixed_feed);
+      const std::optional<double> record_feed = tk::io::optional_number_field(record, "f", where);
+      if (!record_feed && std::isnan(fixed_feed)) throw tk::Error("no feed: give --feed or an f field in the record", where);
+      const double f = record_feed.value_or(fixed_feed);
       if (!(f > 0)) throw tk::Error(fmt::format("feed f = {} mm/rev must be positive", f), where);
       const double y = m.error_at(a, f);
       record["predicted_error"] = y, record["correction"] = tk::machining::setup_correction(m, a, f);
@@ -267,7 +274,7 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
       r["arl_drift"] = drifting.mean, r["arl_drift_se"] = drifting.standard_error;
       const std::uint64_t censored = in_control.censored + shifted.censored + drifting.censored;
       if (censored > 0)
-        tool.warn(fmt::format("{}: {} ARL run(s) reached --arl-cap {} without an alarm; those ARLs are lower bounds", name, censored, o.arl_cap));
+        tool.warn(fmt::format("policy {}: {} ARL run(s) reached --arl-cap {} without an alarm; those ARLs are lower bounds", name, censored, o.arl_cap));
     } else {
       for (const char* f : {"arl0", "arl0_se", "arl_shift", "arl_shift_se", "arl_drift", "arl_drift_se"}) r[f] = nullptr;
     }
@@ -306,10 +313,16 @@ int main(int argc, char** argv) {
   using tk::cli::NumberDomain, tk::cli::number_check, tk::cli::count_check;
   const CLI::Validator finite = number_check(NumberDomain::finite), non_negative = number_check(NumberDomain::non_negative),
                        positive = number_check(NumberDomain::positive);
+  const CLI::Validator alpha_check(
+      [](std::string& text) {
+        double v = 0;
+        return CLI::detail::lexical_cast(text, v) && v >= 1e-12 && v < 1 ? std::string() : "must be a number from 1e-12 to below 1, not " + text;
+      },
+      "in [1e-12, 1)");
   CLI::App& app = tool.app();
   const std::string test = "The sub-tuning test", out = "Output", lathe_group = "Simulated lathe (with --simulate)",
                     chart_group = "Charts (with --simulate)";
-  app.add_option("--alpha", tuning.alpha, "significance level of the trend test")->check(CLI::Range(1e-12, 0.5))->capture_default_str()->group(test);
+  app.add_option("--alpha", tuning.alpha, "significance level of the trend test")->check(alpha_check)->capture_default_str()->group(test);
   app.add_option("--alternative", alternative, "two-sided (either drift, the default), greater (growing sizes only) or less")
       ->check(CLI::IsMember({"two-sided", "greater", "less"}))->capture_default_str()->group(test);
   app.add_option("--statistic", statistic, "seed: the paper's t at 2(N-1) df; slope: the textbook slope t at N-2 df")
@@ -380,6 +393,8 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&] {
     tuning.alternative = alternative == "greater" ? Alternative::greater : alternative == "less" ? Alternative::less : Alternative::two_sided;
     tuning.statistic = statistic == "slope" ? TrendStatistic::slope : TrendStatistic::seed;
+    if (tuning.alternative != Alternative::two_sided && tuning.alpha >= 0.5)
+      throw tk::UsageError(fmt::format("--alpha {} with --alternative {}: a one-sided test needs alpha below 0.5", tuning.alpha, alternative));
     if (correct_to == "nominal") {
       if (!simulate_flag && nominal_option->count() == 0) throw tk::UsageError("--correct-to nominal needs --nominal");
       tuning.target = lathe.nominal_mm;
