@@ -30,13 +30,17 @@ std::vector<std::string> inputs_or_stdin(const std::vector<std::string>& inputs)
   return inputs.empty() ? std::vector<std::string>{"-"} : inputs;
 }
 
-/// Sizes and allowances beyond a kilometre are a unit or parsing mistake; the
-/// bound also keeps the run's sums of squares far inside double range.
-constexpr double kMaxLengthMm = 1e6;
+/// Lengths beyond a kilometre, or nonzero ones below 1e-100 mm, are a unit
+/// or parsing mistake; the bounds also keep the run's sums of squares inside
+/// double range (squares of differences below ~1e-154 would underflow to 0
+/// and make the spread vanish).
+constexpr double kMaxLengthMm = 1e6, kMinLengthMm = 1e-100;
 
 double length_field(const tk::Record& record, const std::string& key, const tk::Location& where) {
   const double v = tk::io::number_field(record, key, where);
   if (std::abs(v) > kMaxLengthMm) throw tk::Error(fmt::format("{} = {} mm is beyond ±{:g} mm", key, v, kMaxLengthMm), where);
+  if (v != 0 && std::abs(v) < kMinLengthMm)
+    throw tk::Error(fmt::format("{} = {} mm is below {:g} mm in magnitude (and not 0)", key, v, kMinLengthMm), where);
   return v;
 }
 
@@ -53,10 +57,12 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
   SubTuner tuner(settings);
   tk::io::RecordReader reader(inputs_or_stdin(inputs), tk::io::number_column_probe(field));
   tk::io::RecordWriter writer(tool.output_format());
-  std::vector<std::string> fields{field, "run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"};
+  // CSV always has an in_tolerance column (empty where no limits apply), since
+  // any record may bring limits of its own; JSON has the field only where one does.
+  const bool csv = tool.output_format() == tk::io::OutputFormat::csv;
   const bool option_limits = limits.lower || limits.upper;
-  if (option_limits) fields.push_back("in_tolerance");
-  writer.declare_fields(fields);
+  std::vector<std::string> fields{"run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"};
+  if (csv || option_limits) fields.push_back("in_tolerance");
   SizePlot plot;
   SizePlotInfo info;
   info.lower = limits.lower.value_or(info.lower), info.upper = limits.upper.value_or(info.upper);
@@ -66,20 +72,26 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
   while (reader.next(record)) {
     const tk::Location where = reader.where();
     const double size = length_field(record, field, where);
+    const bool bare = record.size() == 1;  // a number column: the writer's fast path, no record built
+    if (parts == 0) {
+      // A bare size is a field the writer must be told of; other inputs carry it in place.
+      if (bare) fields.insert(fields.begin(), field);
+      writer.declare_fields(fields);
+    }
     const SubTuneStep step = tuner.observe(size);
     ++parts;
     std::optional<double> lower = tk::io::optional_number_field(record, "lower", where);
     std::optional<double> upper = tk::io::optional_number_field(record, "upper", where);
     if (!lower) lower = limits.lower;
     if (!upper) upper = limits.upper;
-    const bool in_tolerance = (!lower || size >= *lower) && (!upper || size <= *upper);
-    if (record.size() == 1) {  // a bare size (a number column): the writer's fast path, no record built
+    const bool judged = lower || upper, in_tolerance = (!lower || size >= *lower) && (!upper || size <= *upper);
+    if (bare) {
       using tk::io::Cell;
       const auto count = [](std::uint64_t v) { return v > 0 ? Cell::integer(static_cast<long long>(v)) : Cell::real(NAN); };
       row.assign({Cell::real(size), Cell::integer(static_cast<long long>(step.run)), Cell::integer(static_cast<long long>(step.n)),
                   Cell::real(step.a), Cell::real(step.b), Cell::real(step.s), Cell::real(step.t), Cell::real(step.t_crit),
                   count(step.df), Cell::text(decision_name(step.decision)), Cell::real(step.correction), Cell::real(step.offset)});
-      if (option_limits) row.push_back(Cell::boolean(in_tolerance));
+      if (csv || option_limits) row.push_back(judged ? Cell::boolean(in_tolerance) : Cell::real(NAN));
       writer.write_row(row);
     } else {
       record["run"] = step.run, record["n"] = step.n;
@@ -88,7 +100,7 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
       record["df"] = step.df > 0 ? tk::Record(step.df) : tk::Record(nullptr);
       record["decision"] = decision_name(step.decision);
       record["correction"] = step.correction, record["offset"] = step.offset;
-      if (lower || upper) record["in_tolerance"] = in_tolerance;
+      if (judged) record["in_tolerance"] = in_tolerance;
       writer.write(record);
     }
     if (!svg_path.empty()) plot.add(static_cast<double>(parts), size, step.a + step.b * static_cast<double>(step.n), step.offset);
