@@ -24,7 +24,7 @@ class SubTunePolicy final : public AdjustmentPolicy {
   PolicyKind kind() const override { return PolicyKind::subtune; }
   PolicyStep observe(double size) override {
     const SubTuneStep step = tuner_.observe(size);
-    return {step.decision == Decision::subtune, step.correction, step.a + step.b * static_cast<double>(step.n)};
+    return {step.decision == Decision::subtune, step.correction, step.a + step.b * static_cast<double>(step.n), step.t, step.t_crit};
   }
   void reset() override { tuner_ = SubTuner(settings_); }
 
@@ -39,8 +39,8 @@ class ShewhartPolicy final : public AdjustmentPolicy {
   PolicyKind kind() const override { return PolicyKind::shewhart; }
   PolicyStep observe(double size) override {
     const double deviation = size - c_.target;
-    if (std::abs(deviation) <= limit_) return {};
-    return {true, -deviation};
+    const bool alarm = std::abs(deviation) > limit_;
+    return {alarm, alarm ? -deviation : 0.0, size, deviation, limit_};
   }
   void reset() override {}
 
@@ -56,9 +56,9 @@ class EwmaPolicy final : public AdjustmentPolicy {
   PolicyKind kind() const override { return PolicyKind::ewma; }
   PolicyStep observe(double size) override {
     z_ += c_.ewma_lambda * (size - c_.target - z_);  // z as a deviation from the target
-    if (std::abs(z_) <= limit_) return {false, 0, c_.target + z_};
-    const PolicyStep step{true, -z_, c_.target + z_};
-    z_ = 0;
+    const bool alarm = std::abs(z_) > limit_;
+    const PolicyStep step{alarm, alarm ? -z_ : 0.0, c_.target + z_, z_, limit_};
+    if (alarm) z_ = 0;
     return step;
   }
   void reset() override { z_ = 0; }
@@ -79,12 +79,12 @@ class CusumPolicy final : public AdjustmentPolicy {
     lower_ = std::max(0.0, lower_ - x - k_);
     upper_run_ = upper_ > 0 ? upper_run_ + 1 : 0;
     lower_run_ = lower_ > 0 ? lower_run_ + 1 : 0;
-    PolicyStep step;
-    if (upper_ > h_)
-      step = {true, -(k_ + upper_ / static_cast<double>(upper_run_))};
-    else if (lower_ > h_)
-      step = {true, k_ + lower_ / static_cast<double>(lower_run_)};
-    if (step.alarm) reset();
+    // Montgomery's estimate of the mean while a sum is above 0: target ± (K + C/N).
+    const bool up = upper_ >= lower_;
+    const double shift = up ? (upper_ > 0 ? k_ + upper_ / static_cast<double>(upper_run_) : 0.0)
+                            : -(k_ + lower_ / static_cast<double>(lower_run_));
+    PolicyStep step{std::max(upper_, lower_) > h_, 0, target_ + shift, up ? upper_ : -lower_, h_};
+    if (step.alarm) step.correction = -shift, reset();
     return step;
   }
   void reset() override { upper_ = lower_ = 0, upper_run_ = lower_run_ = 0; }

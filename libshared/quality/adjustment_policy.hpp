@@ -34,6 +34,11 @@ struct PolicyStep {
   /// The policy's estimate of the current size level before any correction
   /// (sub-tuning: the run's line at this part; EWMA: target + z); NaN when it has none.
   double level = std::numeric_limits<double>::quiet_NaN();
+  /// What the policy compares with its limit, before any restart: t and
+  /// t_crit (sub-tuning); x − target and L σ (Shewhart); z and L σ_z
+  /// (EWMA); C+, or −C− when that is larger, and H (CUSUM). NaN when none.
+  double statistic = std::numeric_limits<double>::quiet_NaN();
+  double limit = std::numeric_limits<double>::quiet_NaN();
 };
 
 class AdjustmentPolicy {

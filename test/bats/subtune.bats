@@ -529,3 +529,64 @@ assert near(rows[0]["predicted_error"], 0.021, 1e-15) and near(rows[0]["correcti
 assert near(rows[1]["predicted_error"], 0.0275, 1e-15) and near(rows[1]["correction"], -0.0275, 1e-15), rows[1]' < out.jsonl
   assert_output "ok"
 }
+
+@test "the filter under a chart: each part's statistic, limit, decision and offset as the chart's definition gives them" {
+  # An independent recursion in Python over the wear fixture (0.4 µm/part drift):
+  # Shewhart x − μ0 against 3σ; EWMA z = λ(x − μ0) + (1 − λ)z against
+  # 3σ√(λ/(2 − λ)); tabular CUSUM C± with k = 0.5σ, h = 5σ; each restarts after
+  # an alarm and corrects by −(x − μ0), −z, or −(±(K + C/N)) (Montgomery).
+  local policy
+  for policy in shewhart ewma cusum; do
+    subtune --policy $policy --nominal 40 --sigma 0.003 "$FIXTURES/subtune/wear.txt" > $policy.jsonl
+    run py '
+import json, math, sys
+policy = sys.argv[1]
+rows = [json.loads(l) for l in open(policy + ".jsonl")]
+mu, sigma, lam = 40.0, 0.003, 0.2
+z = cp = cm = 0.0
+np_ = nm = n = 0
+offset = 0.0
+alarms = 0
+for r in rows:
+    x = r["size"] - mu
+    n += 1
+    if policy == "shewhart":
+        stat, limit = x, 3 * sigma
+        alarm = abs(x) > limit
+        corr = -x if alarm else 0.0
+    elif policy == "ewma":
+        z = lam * x + (1 - lam) * z
+        stat, limit = z, 3 * sigma * math.sqrt(lam / (2 - lam))
+        alarm = abs(z) > limit
+        corr = -z if alarm else 0.0
+        if alarm: z = 0.0
+    else:
+        K, H = 0.5 * sigma, 5 * sigma
+        cp, cm = max(0.0, cp + x - K), max(0.0, cm - x - K)
+        np_ = np_ + 1 if cp > 0 else 0
+        nm = nm + 1 if cm > 0 else 0
+        stat, limit = (cp if cp >= cm else -cm), H
+        alarm = max(cp, cm) > H
+        corr = (-(K + cp / np_) if cp >= cm else K + cm / nm) if alarm else 0.0
+        if alarm: cp = cm = 0.0; np_ = nm = 0
+    offset += corr
+    assert abs(r["statistic"] - stat) < 1e-12 and abs(r["limit"] - limit) < 1e-15, (r, stat, limit)
+    assert r["decision"] == ("adjust" if alarm else "none") and abs(r["correction"] - corr) < 1e-12, (r, corr)
+    assert abs(r["offset"] - offset) < 1e-9 and r["n"] == n, (r, offset, n)
+    if alarm: n = 0; alarms += 1
+assert len(rows) == 300 and alarms > 0, alarms
+print("ok", alarms)' $policy
+    echo "$policy: $output"
+    assert_output --regexp '^ok [0-9]+$'
+  done
+}
+
+@test "the filter under a chart needs --nominal and --sigma; chart options need a chart" {
+  printf '40\n' > one.txt
+  for args in "--policy ewma" "--policy cusum --nominal 40" "--policy shewhart --sigma 0.003" "--policy all" "--policy none" "--sigma 0.003" "--cusum-h 4"; do
+    # shellcheck disable=SC2086
+    run --separate-stderr subtune $args one.txt
+    echo "$args -> $status: $stderr"
+    [ "$status" -eq 2 ]
+  done
+}

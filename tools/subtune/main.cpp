@@ -52,6 +52,16 @@ struct Limits {
   std::optional<double> lower, upper;
 };
 
+/// The record's own limits, else the options'.
+Limits limits_of(const tk::Record& record, const Limits& options, const tk::Location& where) {
+  Limits l{tk::io::optional_number_field(record, "lower", where), tk::io::optional_number_field(record, "upper", where)};
+  if (!l.lower) l.lower = options.lower;
+  if (!l.upper) l.upper = options.upper;
+  return l;
+}
+
+bool within(double size, const Limits& l) { return (!l.lower || size >= *l.lower) && (!l.upper || size <= *l.upper); }
+
 void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings& settings, const std::string& field,
                   const Limits& limits, const std::string& svg_path, const tk::cli::ToolApp& tool) {
   SubTuner tuner(settings);
@@ -80,11 +90,8 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
     }
     const SubTuneStep step = tuner.observe(size);
     ++parts;
-    std::optional<double> lower = tk::io::optional_number_field(record, "lower", where);
-    std::optional<double> upper = tk::io::optional_number_field(record, "upper", where);
-    if (!lower) lower = limits.lower;
-    if (!upper) upper = limits.upper;
-    const bool judged = lower || upper, in_tolerance = (!lower || size >= *lower) && (!upper || size <= *upper);
+    const Limits l = limits_of(record, limits, where);
+    const bool judged = l.lower || l.upper, in_tolerance = within(size, l);
     if (bare) {
       using tk::io::Cell;
       const auto count = [](std::uint64_t v) { return v > 0 ? Cell::integer(static_cast<long long>(v)) : Cell::real(NAN); };
@@ -110,6 +117,50 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
     if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} parts only", SizePlot::kMaxParts));
     info.title = fmt::format("subtune: {} parts, alpha {:g}", parts, settings.alpha);
     plot.write(svg_path, info);
+  }
+}
+
+/// The filter under a chart instead of sub-tuning: per part the chart's
+/// statistic and limit, its level, and whether to adjust.
+void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& chart, const std::string& field, const Limits& limits,
+                  const std::string& svg_path, const tk::cli::ToolApp& tool) {
+  tk::io::RecordReader reader(inputs_or_stdin(inputs), tk::io::number_column_probe(field));
+  tk::io::RecordWriter writer(tool.output_format());
+  std::vector<std::string> fields{"n", "statistic", "limit", "level", "decision", "correction", "offset"};
+  const bool csv = tool.output_format() == tk::io::OutputFormat::csv;
+  if (csv || limits.lower || limits.upper) fields.push_back("in_tolerance");
+  SizePlot plot;
+  std::uint64_t parts = 0, since_adjustment = 0;
+  double offset = 0;
+  tk::Record record;
+  while (reader.next(record)) {
+    const tk::Location where = reader.where();
+    const double size = length_field(record, field, where);
+    if (parts++ == 0) {
+      if (record.size() == 1) fields.insert(fields.begin(), field);
+      writer.declare_fields(fields);
+    }
+    const PolicyStep step = chart.observe(size);
+    ++since_adjustment;
+    if (step.alarm) offset += step.correction;
+    record["n"] = since_adjustment;
+    record["statistic"] = number_or_null(step.statistic), record["limit"] = number_or_null(step.limit);
+    record["level"] = number_or_null(step.level);
+    record["decision"] = step.alarm ? "adjust" : "none";
+    record["correction"] = step.correction, record["offset"] = offset;
+    if (const Limits l = limits_of(record, limits, where); l.lower || l.upper) record["in_tolerance"] = within(size, l);
+    writer.write(record);
+    if (step.alarm) since_adjustment = 0;
+    if (!svg_path.empty()) plot.add(static_cast<double>(parts), size, step.level, offset);
+  }
+  writer.flush();
+  if (!svg_path.empty()) {
+    if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} parts only", SizePlot::kMaxParts));
+    const std::string name(policy_name(chart.kind()));
+    plot.write(svg_path, {.title = fmt::format("subtune --policy {}: {} parts", name, parts),
+                          .level_label = fmt::format("{} level", name),
+                          .lower = limits.lower.value_or(NAN),
+                          .upper = limits.upper.value_or(NAN)});
   }
 }
 
@@ -224,7 +275,7 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
 // ---- the simulated batch ---------------------------------------------------
 
 struct SimulationOptions {
-  std::string policy = "all";
+  std::string policy;  ///< empty: all
   std::uint64_t arl_runs = 2000, arl_cap = 100000;
   double shift_sigma = 1, drift_sigma = 0.1;
   std::optional<double> sigma;
@@ -238,7 +289,7 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
   charts.sigma = o.sigma.value_or(in_control_sigma(lathe));
   if (!(charts.sigma > 0)) throw tk::UsageError("the stable process has no spread (all noise 0): give --sigma for the charts");
   std::vector<PolicyKind> kinds;
-  if (o.policy == "all")
+  if (o.policy.empty() || o.policy == "all")
     kinds = {PolicyKind::none, PolicyKind::subtune, PolicyKind::shewhart, PolicyKind::ewma, PolicyKind::cusum};
   else
     kinds = {parse_policy(o.policy)};
@@ -333,7 +384,7 @@ int main(int argc, char** argv) {
       "in [1e-12, 1)");
   CLI::App& app = tool.app();
   const std::string test = "The sub-tuning test", out = "Output", lathe_group = "Simulated lathe (with --simulate)",
-                    chart_group = "Charts (with --simulate)";
+                    chart_group = "Charts (--simulate, or the filter with a chart --policy)";
   app.add_option("--alpha", tuning.alpha, "significance level of the trend test")->check(alpha_check)->capture_default_str()->group(test);
   app.add_option("--alternative", alternative, "two-sided (either drift, the default), greater (growing sizes only) or less")
       ->check(CLI::IsMember({"two-sided", "greater", "less"}))->capture_default_str()->group(test);
@@ -350,9 +401,11 @@ int main(int argc, char** argv) {
 
   CLI::Option* nominal_option = app.add_option("--nominal", lathe.nominal_mm, "nominal size, mm (the simulated part's; --correct-to nominal's)")->check(finite)->capture_default_str()->type_name("MM")->group(out);
   app.add_flag("--simulate", simulate_flag, "simulate a batch and write one summary record per policy")->group(lathe_group);
+  app.add_option("--policy", sim.policy,
+                 "the filter: subtune (default), or a chart (shewhart, ewma, cusum; needs --nominal and --sigma); "
+                 "--simulate: one of these, none, or all (default)")
+      ->check(CLI::IsMember({"all", "none", "subtune", "shewhart", "ewma", "cusum"}))->group(test);
   std::vector<CLI::Option*> sim_options{
-      app.add_option("--policy", sim.policy, "none, subtune, shewhart, ewma, cusum, or all")
-          ->check(CLI::IsMember({"all", "none", "subtune", "shewhart", "ewma", "cusum"}))->capture_default_str(),
       app.add_option("--parts", lathe.parts, "parts in the batch")->check(count_check(1, 100000000))->capture_default_str()->type_name("N"),
       app.add_option("--wear", lathe.wear_mm_per_part, "tool wear: size drift per part, mm")->check(finite)->capture_default_str()->type_name("MM"),
       app.add_option("--thermal", lathe.thermal_mm, "thermal drift's final amplitude, mm")->check(finite)->capture_default_str()->type_name("MM"),
@@ -373,13 +426,13 @@ int main(int argc, char** argv) {
   std::string sim_model_path, sim_coefficients;
   sim_options.push_back(app.add_option("--sim-model", sim_model_path, "the lathe's force-error model from FILE (default: y = 0.01 a)")->type_name("FILE")->group(lathe_group));
   std::vector<CLI::Option*> chart_options{
-      app.add_option("--sigma", sim.sigma, "the charts' sigma, mm (default: the stable process's exact one)")->check(positive)->type_name("MM"),
+      app.add_option("--sigma", sim.sigma, "the charts' sigma, mm (--simulate's default: the stable process's exact one)")->check(positive)->type_name("MM"),
       app.add_option("--shewhart-l", charts.shewhart_l, "Shewhart limits at ± L sigma")->check(positive)->capture_default_str()->type_name("L"),
       app.add_option("--ewma-lambda", charts.ewma_lambda, "EWMA weight λ")->check(CLI::Range(1e-6, 1.0))->capture_default_str()->type_name("λ"),
       app.add_option("--ewma-l", charts.ewma_l, "EWMA limits at ± L sigma_z")->check(positive)->capture_default_str()->type_name("L"),
       app.add_option("--cusum-k", charts.cusum_k, "CUSUM reference value, sigma")->check(non_negative)->capture_default_str()->type_name("K"),
       app.add_option("--cusum-h", charts.cusum_h, "CUSUM decision interval, sigma")->check(positive)->capture_default_str()->type_name("H")};
-  for (CLI::Option* o : chart_options) o->group(chart_group), sim_options.push_back(o);
+  for (CLI::Option* o : chart_options) o->group(chart_group);
 
   std::vector<std::string> sub_inputs;
   bool residuals = false;
@@ -431,7 +484,19 @@ int main(int argc, char** argv) {
       for (CLI::Option* o : sim_options)
         if (o->count() > 0) throw tk::UsageError(o->get_name() + " goes with --simulate");
       if (lower && upper && *lower > *upper) throw tk::UsageError(fmt::format("--lower {} is above --upper {}", *lower, *upper));
-      filter_sizes(inputs, tuning, field, {lower, upper}, svg_path, tool);
+      const PolicyKind kind = sim.policy.empty() ? PolicyKind::subtune : sim.policy == "all" ? PolicyKind::none : parse_policy(sim.policy);
+      if (kind == PolicyKind::none) throw tk::UsageError("the filter runs one policy: subtune, shewhart, ewma or cusum");
+      if (kind == PolicyKind::subtune) {
+        for (CLI::Option* o : chart_options)
+          if (o->count() > 0) throw tk::UsageError(o->get_name() + " goes with a chart --policy or --simulate");
+        filter_sizes(inputs, tuning, field, {lower, upper}, svg_path, tool);
+        return;
+      }
+      if (nominal_option->count() == 0 || !sim.sigma)
+        throw tk::UsageError(fmt::format("--policy {} needs the target and the in-control sigma: --nominal and --sigma", sim.policy));
+      charts.target = lathe.nominal_mm, charts.sigma = *sim.sigma;
+      const std::unique_ptr<AdjustmentPolicy> chart = make_policy(kind, tuning, charts);
+      filter_chart(inputs, *chart, field, {lower, upper}, svg_path, tool);
       return;
     }
     if (!inputs.empty()) throw tk::UsageError("--simulate reads no records");
