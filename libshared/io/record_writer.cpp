@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include "io/csv.hpp"
@@ -130,7 +131,7 @@ void append_number(std::string& line, double v, bool json) {
     if (json) line += "null";
     return;
   }
-  fmt::format_to(std::back_inserter(line), "{}", v);
+  fmt::format_to(std::back_inserter(line), FMT_COMPILE("{}"), v);
 }
 
 }  // namespace
@@ -139,7 +140,7 @@ void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t i
   const bool json = format_ == OutputFormat::json_lines;
   write_declared(values.size(), [&](std::size_t i, std::string& line) {
     if (integers >> i & 1 && std::isfinite(values[i]))
-      fmt::format_to(std::back_inserter(line), "{}", static_cast<long long>(values[i]));
+      fmt::format_to(std::back_inserter(line), FMT_COMPILE("{}"), static_cast<long long>(values[i]));
     else
       append_number(line, values[i], json);
   });
@@ -151,7 +152,7 @@ void RecordWriter::write_row(std::span<const Cell> cells) {
     const Cell& c = cells[i];
     switch (c.kind) {
       case Cell::Kind::number: append_number(line, c.number, json); break;
-      case Cell::Kind::integer: fmt::format_to(std::back_inserter(line), "{}", c.whole); break;
+      case Cell::Kind::integer: fmt::format_to(std::back_inserter(line), FMT_COMPILE("{}"), c.whole); break;
       case Cell::Kind::boolean: line += c.whole ? "true" : "false"; break;
       case Cell::Kind::word:
         if (json) line += '"';

@@ -22,6 +22,12 @@ StudentCriticalValues::StudentCriticalValues(double alpha, Sidedness sidedness)
     throw Error(fmt::format("alpha must lie in (0, {}) for a {}-sided test, not {}", sidedness == Sidedness::two ? 1 : 0.5,
                             sidedness == Sidedness::two ? "two" : "one", alpha));
   normal_quantile_ = boost::math::quantile(boost::math::complement(boost::math::normal_distribution<double>(), tail_));
+  // Hill's series (Abramowitz & Stegun 26.7.5) in powers of 1/ν.
+  const double z = normal_quantile_, z2 = z * z;
+  series_[0] = (z2 + 1) * z / 4;
+  series_[1] = ((5 * z2 + 16) * z2 + 3) * z / 96;
+  series_[2] = (((3 * z2 + 19) * z2 + 17) * z2 - 15) * z / 384;
+  series_[3] = ((((79 * z2 + 776) * z2 + 1482) * z2 - 1920) * z2 - 945) * z / 92160;
 }
 
 double StudentCriticalValues::compute(std::size_t df) const {
@@ -30,13 +36,8 @@ double StudentCriticalValues::compute(std::size_t df) const {
     if (table_.size() <= df) table_.resize(std::max(df + 1, 2 * table_.size()), 0.0);
     return table_[df] = student_t_upper_quantile(tail_, static_cast<double>(df));
   }
-  // Hill's series (Abramowitz & Stegun 26.7.5) in powers of 1/ν.
-  const double z = normal_quantile_, z2 = z * z, v = 1.0 / static_cast<double>(df);
-  const double g1 = (z2 + 1) * z / 4;
-  const double g2 = ((5 * z2 + 16) * z2 + 3) * z / 96;
-  const double g3 = (((3 * z2 + 19) * z2 + 17) * z2 - 15) * z / 384;
-  const double g4 = ((((79 * z2 + 776) * z2 + 1482) * z2 - 1920) * z2 - 945) * z / 92160;
-  return z + v * (g1 + v * (g2 + v * (g3 + v * g4)));
+  const double v = 1.0 / static_cast<double>(df);
+  return normal_quantile_ + v * (series_[0] + v * (series_[1] + v * (series_[2] + v * series_[3])));
 }
 
 }  // namespace tk::quality

@@ -40,6 +40,7 @@ class StudentCriticalValues {
   Sidedness sidedness_;
   double tail_;              ///< upper-tail probability: α or α/2
   double normal_quantile_;   ///< z at the same tail, for the series
+  double series_[4];         ///< its coefficients of 1/ν .. 1/ν⁴, which depend on z only
   mutable std::vector<double> table_;
 };
 
