@@ -21,10 +21,6 @@ double low_pass_alpha(double cutoff_hz, double period_s) {
   return cutoff_hz > 0 ? -std::expm1(-2 * std::numbers::pi * cutoff_hz * period_s) : 1.0;
 }
 
-void require(bool ok, const std::string& message) {
-  if (!ok) throw Error(message);
-}
-
 /// hf_share is taken over at most this many samples after --settle (128 MB).
 constexpr std::uint64_t kSpectrumSamples = 1u << 24;
 

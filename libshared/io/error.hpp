@@ -41,4 +41,9 @@ class UsageError : public Error {
   using Error::Error;
 };
 
+/// Throws Error(message) unless `ok`: how the library checks its settings.
+inline void require(bool ok, const std::string& message) {
+  if (!ok) throw Error(message);
+}
+
 }  // namespace tk

@@ -1,9 +1,9 @@
+/// @file number_column.cpp
 #include "io/number_column.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <optional>
 
+#include "io/record_fields.hpp"
 #include "io/text.hpp"
 
 namespace tk::io {
@@ -12,10 +12,8 @@ namespace {
 
 /// The finite number that is all of `text`, if it is one.
 std::optional<double> whole_number(std::string_view text) {
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   double value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
+  if (parse_number_text(text, value) != NumberText::ok) return std::nullopt;
   return value;
 }
 

@@ -11,6 +11,12 @@
 
 namespace tk::io {
 
+enum class NumberText { ok, not_a_number, out_of_range, not_finite };
+
+/// Parses all of `text` as a decimal number (one optional leading '+');
+/// `value` is set only when the result is ok.
+NumberText parse_number_text(std::string_view text, double& value);
+
 /// The finite number in `record[key]`; Error at `where` when the field is
 /// missing, not a number, or NaN/infinite.
 double number_field(const Record& record, std::string_view key, const Location& where);

@@ -93,8 +93,16 @@ void RecordWriter::write_csv(const Record& record) {
   emit(line_);
 }
 
+void RecordWriter::declare_fields(std::vector<std::string> names) {
+  declared_ = std::move(names);
+  json_keys_.clear();
+  for (const std::string& name : declared_) json_keys_.push_back(Record(name).dump() + ':');
+}
+
 template <class AppendCell>
 void RecordWriter::write_declared(std::size_t count, const AppendCell& append) {
+  if (count > declared_.size())
+    throw Error(fmt::format("{} values for {} declared fields", count, declared_.size()));
   line_.clear();
   if (format_ == OutputFormat::csv) {
     if (columns_.empty()) {  // the header, once, whichever of write() and the fast paths comes first
@@ -105,6 +113,8 @@ void RecordWriter::write_declared(std::size_t count, const AppendCell& append) {
       }
       line_ += '\n';
     }
+    if (count > columns_.size())
+      throw Error(fmt::format("csv output: {} values for the {} columns set by the first record", count, columns_.size()));
     for (std::size_t i = 0; i < count; ++i) {
       if (i) line_ += ',';
       append(i, line_);
@@ -113,9 +123,7 @@ void RecordWriter::write_declared(std::size_t count, const AppendCell& append) {
     line_ += '{';
     for (std::size_t i = 0; i < count; ++i) {
       if (i) line_ += ',';
-      line_ += '"';
-      line_ += declared_[i];
-      line_ += "\":";
+      line_ += json_keys_[i];
       append(i, line_);
     }
     line_ += '}';

@@ -41,7 +41,7 @@ class RecordWriter {
   explicit RecordWriter(OutputFormat format, std::FILE* out = stdout);
 
   /// Fields the tool may add to records, in output order.
-  void declare_fields(std::vector<std::string> names) { declared_ = std::move(names); }
+  void declare_fields(std::vector<std::string> names);
 
   /// Throws Error on a write failure, or (CSV) for a field that is not a column.
   void write(const Record& record);
@@ -50,7 +50,9 @@ class RecordWriter {
   /// integer. The same output as write() of the equivalent record, without
   /// building one.
   void write_numbers(std::span<const double> values, std::uint64_t integers);
-  /// The fast path for records of mixed cells: one per declared field, in order.
+  /// The fast path for records of mixed cells: one per declared field, in
+  /// order (Error for more cells than fields). As write_numbers, a whole
+  /// double is written without ".0" (write() writes 0.0): the same number.
   void write_row(std::span<const Cell> cells);
   /// Flushes and reports a write error as Error.
   void flush();
@@ -66,6 +68,7 @@ class RecordWriter {
   std::FILE* out_;
   bool interactive_;
   std::vector<std::string> declared_;
+  std::vector<std::string> json_keys_;  ///< the declared names as JSON keys, "name": (escaped), for the fast paths
   std::vector<std::string> columns_;
   std::string line_;
   double last_flush_ = 0;  ///< seconds, CLOCK_MONOTONIC_COARSE

@@ -184,7 +184,10 @@ FeedChoice feed_for_error(const ForceErrorModel& m, double a, double target, dou
 
   std::vector<double> roots;
   if (qa != 0) {
-    roots = quadratic_roots(qa, qb, qc);
+    // Scaling by a power of two leaves the roots (and every bit of the
+    // coefficients) alone and keeps b² and 4ac inside double range.
+    const double scale = std::ldexp(1.0, -std::ilogb(std::max({std::abs(qa), std::abs(qb), std::abs(qc)})));
+    roots = quadratic_roots(qa * scale, qb * scale, qc * scale);
   } else if (qb != 0) {
     roots = {-qc / qb};
   } else {
@@ -202,7 +205,7 @@ FeedChoice feed_for_error(const ForceErrorModel& m, double a, double target, dou
 
   const double tol = 1e-12 * std::max(f_max - f_min, f_max);
   for (const double root : roots) {
-    if (root < f_min - tol || root > f_max + tol) continue;
+    if (!std::isfinite(root) || root < f_min - tol || root > f_max + tol) continue;
     const double feed = std::clamp(root, f_min, f_max);
     ++choice.roots_in_range;
     if (choice.status == FeedStatus::none || feed > choice.feed) choice.feed = feed;

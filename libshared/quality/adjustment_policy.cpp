@@ -1,3 +1,4 @@
+/// @file adjustment_policy.cpp
 #include "quality/adjustment_policy.hpp"
 
 #include <fmt/format.h>
@@ -20,16 +21,15 @@ class NoPolicy final : public AdjustmentPolicy {
 
 class SubTunePolicy final : public AdjustmentPolicy {
  public:
-  explicit SubTunePolicy(const SubTuneSettings& s) : settings_(s), tuner_(s) {}
+  explicit SubTunePolicy(const SubTuneSettings& s) : tuner_(s) {}
   PolicyKind kind() const override { return PolicyKind::subtune; }
   PolicyStep observe(double size) override {
     const SubTuneStep step = tuner_.observe(size);
     return {step.decision == Decision::subtune, step.correction, step.a + step.b * static_cast<double>(step.n), step.t, step.t_crit};
   }
-  void reset() override { tuner_ = SubTuner(settings_); }
+  void reset() override { tuner_.reset(); }  // the t table survives the ARL's many runs
 
  private:
-  SubTuneSettings settings_;
   SubTuner tuner_;
 };
 
@@ -95,9 +95,7 @@ class CusumPolicy final : public AdjustmentPolicy {
   std::uint64_t upper_run_ = 0, lower_run_ = 0;
 };
 
-void check(bool ok, const char* what, double value) {
-  if (!ok) throw Error(fmt::format("{}, not {}", what, value));
-}
+void check(bool ok, const char* what, double value) { require(ok, fmt::format("{}, not {}", what, value)); }
 
 }  // namespace
 

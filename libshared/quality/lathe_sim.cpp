@@ -1,3 +1,4 @@
+/// @file lathe_sim.cpp
 #include "quality/lathe_sim.hpp"
 
 #include <fmt/format.h>
@@ -10,10 +11,6 @@
 namespace tk::quality {
 
 namespace {
-
-void require(bool ok, const std::string& message) {
-  if (!ok) throw Error(message);
-}
 
 /// Independent streams per source, so switching one source off (a stable
 /// process, no gauge noise) leaves the others' draws unchanged.
@@ -60,7 +57,9 @@ LatheOutcome simulate_lathe(const LatheSettings& s, AdjustmentPolicy& policy, co
   validate(s);
   policy.reset();
   LatheNoise noise(s);
-  const double mean_force_error = s.force_model.error_at(s.allowance_mm, s.feed_mm_rev);
+  // The set-up absorbs the mean force error, E[y] = y(ā) + b11 s² for a normal allowance.
+  const double mean_force_error =
+      s.force_model.error_at(s.allowance_mm, s.feed_mm_rev) + s.force_model.b11 * s.allowance_sd_mm * s.allowance_sd_mm;
   LatheOutcome out;
   double offset = 0, abs_sum = 0, square_sum = 0;
   for (std::uint64_t i = 1; i <= s.parts; ++i) {

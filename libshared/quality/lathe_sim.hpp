@@ -20,7 +20,7 @@ struct LatheSettings {
   double thermal_mm = 0.008, thermal_parts = 40;      ///< warm-up: thermal_mm (1 − e^(−i/thermal_parts))
   double allowance_mm = 1, allowance_sd_mm = 0.2;     ///< depth of cut per part (normal, redrawn if ≤ 0)
   double feed_mm_rev = 0.2;
-  machining::ForceErrorModel force_model{.b1 = 0.01}; ///< y(a, f), mm; the set-up absorbs y at the mean allowance
+  machining::ForceErrorModel force_model{.b1 = 0.01}; ///< y(a, f), mm; the set-up absorbs its mean over the allowance
   double process_sd_mm = 0.002;                       ///< random size variation of the process
   double gauge_sd_mm = 0.001;                         ///< measurement noise
   bool compensate_force = false;  ///< adaptive control: each part's set-up corrected by the model from its allowance

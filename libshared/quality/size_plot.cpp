@@ -1,3 +1,4 @@
+/// @file size_plot.cpp
 #include "quality/size_plot.hpp"
 
 #include <cmath>

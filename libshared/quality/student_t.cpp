@@ -1,3 +1,4 @@
+/// @file student_t.cpp
 #include "quality/student_t.hpp"
 
 #include <fmt/format.h>
@@ -17,12 +18,12 @@ double student_t_upper_quantile(double tail, double df) {
 }
 
 StudentCriticalValues::StudentCriticalValues(double alpha, Sidedness sidedness)
-    : alpha_(alpha), sidedness_(sidedness), tail_(sidedness == Sidedness::two ? alpha / 2 : alpha) {
+    : tail_(sidedness == Sidedness::two ? alpha / 2 : alpha) {
   if (!(alpha > 0 && alpha < (sidedness == Sidedness::two ? 1.0 : 0.5)))
     throw Error(fmt::format("alpha must lie in (0, {}) for a {}-sided test, not {}", sidedness == Sidedness::two ? 1 : 0.5,
                             sidedness == Sidedness::two ? "two" : "one", alpha));
   normal_quantile_ = boost::math::quantile(boost::math::complement(boost::math::normal_distribution<double>(), tail_));
-  // Hill's series (Abramowitz & Stegun 26.7.5) in powers of 1/ν.
+  // The Cornish-Fisher series (Abramowitz & Stegun 26.7.5) in powers of 1/ν.
   const double z = normal_quantile_, z2 = z * z;
   series_[0] = (z2 + 1) * z / 4;
   series_[1] = ((5 * z2 + 16) * z2 + 3) * z / 96;

@@ -21,11 +21,10 @@ class StudentCriticalValues {
  public:
   StudentCriticalValues(double alpha, Sidedness sidedness);
 
-  double alpha() const { return alpha_; }
-  Sidedness sidedness() const { return sidedness_; }
   /// t critical at `df` ≥ 1 degrees of freedom. Values up to kTableLimit are
-  /// Boost's quantile, computed on first use and kept; beyond it Hill's
-  /// (1970) asymptotic series in 1/df, whose error there is below 1e-15.
+  /// Boost's quantile, computed on first use and kept; beyond it the
+  /// Cornish-Fisher series in 1/df (Abramowitz & Stegun 26.7.5), whose
+  /// error there is below 1e-15.
   double at(std::size_t df) const {
     if (df < table_.size() && table_[df] > 0) return table_[df];
     return compute(df);
@@ -36,8 +35,6 @@ class StudentCriticalValues {
  private:
   double compute(std::size_t df) const;
 
-  double alpha_;
-  Sidedness sidedness_;
   double tail_;              ///< upper-tail probability: α or α/2
   double normal_quantile_;   ///< z at the same tail, for the series
   double series_[4];         ///< its coefficients of 1/ν .. 1/ν⁴, which depend on z only

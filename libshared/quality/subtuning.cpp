@@ -1,3 +1,4 @@
+/// @file subtuning.cpp
 #include "quality/subtuning.hpp"
 
 #include <fmt/format.h>
@@ -32,7 +33,13 @@ SubTuner::SubTuner(const SubTuneSettings& settings)
 void SubTuner::start_run() {
   ++run_;
   n_ = 0;
-  mean_size_ = co_moment_ = moment_size_ = 0;
+  mean_size_ = co_moment_ = sse_ = 0;
+}
+
+void SubTuner::reset() {
+  start_run();
+  run_ = 1;
+  offset_ = 0;
 }
 
 SubTuneStep SubTuner::observe(double size) {
@@ -43,11 +50,19 @@ SubTuneStep SubTuner::observe(double size) {
   const double n = static_cast<double>(n_);
   if (n_ == 1) origin_ = size;
   size -= origin_;  // sizes near the run's first keep their digits: 40.0012 − 40.0007, not 40.0012
+  if (n_ >= 3) {
+    // The residual sum of squares by recursive least squares: the new part's
+    // error against the line so far, e, adds e²/(1 + h), h its leverage. Each
+    // step adds noise-sized terms, where Σ(A − Ā)² − b·Σ(i − ī)(A − Ā) would
+    // cancel a drift's huge moment down to the noise.
+    const double m = n - 1, moment_i_before = m * (m * m - 1) / 12;
+    const double b_before = co_moment_ / moment_i_before;
+    const double e = size - (mean_size_ + b_before * (n - n / 2));  // the line so far at i = n; x̄ was n/2
+    sse_ += e * e / (1 + 1 / m + (n / 2) * (n / 2) / moment_i_before);
+  }
   const double dsize = size - mean_size_;
   mean_size_ += dsize / n;
-  const double dsize_after = size - mean_size_;
-  co_moment_ += n / 2 * dsize_after;
-  moment_size_ += dsize * dsize_after;
+  co_moment_ += n / 2 * (size - mean_size_);
   const double mean_i = (n + 1) / 2, moment_i = n * (n * n - 1) / 12;
 
   SubTuneStep step;
@@ -59,7 +74,7 @@ SubTuneStep SubTuner::observe(double size) {
   }
   if (n_ < settings_.min_parts) return step;
 
-  const double sse = std::max(0.0, moment_size_ - step.b * co_moment_);
+  const double sse = sse_;
   const bool seed = settings_.statistic == TrendStatistic::seed;
   const double spread_sq = std::max(sse / (seed ? n - 1 : n - 2), spread_floor_sq_);
   step.s = std::sqrt(spread_sq);

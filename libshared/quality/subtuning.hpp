@@ -66,8 +66,9 @@ class SubTuner {
   SubTuneStep observe(double size);
   /// Starts a new run without a correction (a tool change, a new set-up).
   void start_run();
+  /// As a new tuner (run 1, no offset), keeping the critical values computed so far.
+  void reset();
 
-  const SubTuneSettings& settings() const { return settings_; }
   double offset() const { return offset_; }
 
  private:
@@ -75,11 +76,12 @@ class SubTuner {
   StudentCriticalValues critical_;
   double spread_floor_sq_;
   std::uint64_t run_ = 1;
-  // Welford-style co-moments of (i, size) over the run: stable over runs of
-  // any length, where raw sums of squares would cancel.
+  // Welford-style co-moments of (i, size) over the run and the residual sum
+  // of squares by recursive least squares: stable over runs of any length,
+  // where raw sums of squares would cancel.
   std::uint64_t n_ = 0;
   double origin_ = 0;  ///< the run's first size; the moments are of size − origin_
-  double mean_size_ = 0, co_moment_ = 0, moment_size_ = 0;
+  double mean_size_ = 0, co_moment_ = 0, sse_ = 0;
   double offset_ = 0;
 };
 

@@ -552,11 +552,13 @@ for r in rows:
     n += 1
     if policy == "shewhart":
         stat, limit = x, 3 * sigma
+        level = r["size"]
         alarm = abs(x) > limit
         corr = -x if alarm else 0.0
     elif policy == "ewma":
         z = lam * x + (1 - lam) * z
         stat, limit = z, 3 * sigma * math.sqrt(lam / (2 - lam))
+        level = mu + z
         alarm = abs(z) > limit
         corr = -z if alarm else 0.0
         if alarm: z = 0.0
@@ -566,6 +568,8 @@ for r in rows:
         np_ = np_ + 1 if cp > 0 else 0
         nm = nm + 1 if cm > 0 else 0
         stat, limit = (cp if cp >= cm else -cm), H
+        # Montgomery: the mean estimated as mu +- (K + C/N) while a sum is above 0
+        level = mu + ((K + cp / np_ if cp > 0 else 0.0) if cp >= cm else -(K + cm / nm))
         alarm = max(cp, cm) > H
         corr = (-(K + cp / np_) if cp >= cm else K + cm / nm) if alarm else 0.0
         if alarm: cp = cm = 0.0; np_ = nm = 0
@@ -573,6 +577,7 @@ for r in rows:
     assert abs(r["statistic"] - stat) < 1e-12 and abs(r["limit"] - limit) < 1e-15, (r, stat, limit)
     assert r["decision"] == ("adjust" if alarm else "none") and abs(r["correction"] - corr) < 1e-12, (r, corr)
     assert abs(r["offset"] - offset) < 1e-9 and r["n"] == n, (r, offset, n)
+    assert abs(r["level"] - level) < 1e-12, (r, level)
     if alarm: n = 0; alarms += 1
 assert len(rows) == 300 and alarms > 0, alarms
 print("ok", alarms)' $policy
@@ -589,4 +594,39 @@ print("ok", alarms)' $policy
     echo "$args -> $status: $stderr"
     [ "$status" -eq 2 ]
   done
+}
+
+@test "records that change shape mid-stream: bare sizes after full records and the reverse" {
+  printf '{"id":1,"size":40}\n{"size":40.1}\n{"size":40.2,"id":3}\n' > mixed.jsonl
+  run --separate-stderr subtune mixed.jsonl
+  assert_success
+  [ "${#lines[@]}" -eq 3 ]
+  run check 'assert [r["n"] for r in rows] == [1, 2, 3] and rows[1]["size"] == 40.1 and rows[2]["id"] == 3' <<< "$output"
+  assert_output "ok"
+  printf '{"size":40}\n{"id":2,"size":40.1}\n' > mixed2.jsonl
+  run --separate-stderr subtune mixed2.jsonl
+  assert_success
+  [ "${#lines[@]}" -eq 2 ]
+}
+
+@test "--simulate: --trace has a record per part and policy, --svg draws one policy, --compensate and --sim-model set sigma as the formula does" {
+  subtune --simulate --parts 50 --arl-runs 20 --policy all --trace trace.jsonl > sum.jsonl
+  [ "$(wc -l < trace.jsonl)" -eq 250 ]
+  [ "$(wc -l < sum.jsonl)" -eq 5 ]
+  run check 'assert set(r["policy"] for r in rows) == {"none", "subtune", "shewhart", "ewma", "cusum"} and all(0.1 < r["allowance"] for r in rows)' < trace.jsonl
+  assert_output "ok"
+  subtune --simulate --parts 50 --arl-runs 20 --policy ewma --svg plot.svg > /dev/null
+  grep -q '<svg' plot.svg
+  grep -q 'EWMA level' plot.svg
+  # σ² = process² + gauge² + g² s² + 2 b11² s⁴, g = b1 + b12 f + 2 b11 ā (normal allowance); --compensate drops the force terms.
+  subtune --simulate --parts 20 --arl-runs 20 --policy shewhart --compensate > comp.jsonl
+  run check 'import math; assert near(rows[0]["sigma_mm"], math.sqrt(0.002**2 + 0.001**2), 1e-15), rows' < comp.jsonl
+  assert_output "ok"
+  printf '{"record":"model","b0":0.001,"b1":0.004,"b2":0.02,"b12":0.01,"b11":0.003,"b22":0.05}\n' > model.jsonl
+  subtune --simulate --parts 20 --arl-runs 20 --policy shewhart --sim-model model.jsonl --allowance 1.5 --allowance-sd 0.3 --feed 0.25 > sim.jsonl
+  run check 'import math
+g = 0.004 + 0.01 * 0.25 + 2 * 0.003 * 1.5
+want = math.sqrt(0.002**2 + 0.001**2 + g * g * 0.09 + 2 * 0.003**2 * 0.3**4)
+assert near(rows[0]["sigma_mm"], want, 1e-12 * want), (rows, want)' < sim.jsonl
+  assert_output "ok"
 }

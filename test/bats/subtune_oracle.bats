@@ -279,7 +279,7 @@ sys.exit(1 if bad else 0)' "$@"
   run --separate-stderr subtune feed --model model.json --target 0.03 "$SUB/allowances.jsonl"
   assert_success
   echo "$output" > feed.jsonl
-  [[ "$stderr" == *"8 workpiece(s) have no feed"* ]] || [[ "$stderr" == *"no feed"* ]]
+  [[ "$stderr" == *"8 workpiece(s) have no feed"* ]]
   [ "$(grep -c . <<< "$stderr")" -eq 1 ]
   run feed_oracle "$(cat model.json)" 0.03 0.05 0.5 < feed.jsonl
   echo "$output"
@@ -334,4 +334,39 @@ check("corr2.jsonl", dict(zip(["b0", "b1", "b2", "b12", "b11", "b22"], [0.002, 0
 print("ok")'
   echo "$output"
   assert_output "ok"
+}
+
+@test "(c) the seed's own in-control ARL (about 6 parts at alpha 0.05): the tool's Monte Carlo against one in NumPy" {
+  # The procedure from its definition: from N = 4 on, the least-squares line
+  # over the run, S_N^2 = SSE/(N - 1), t = N|b|/S_N sqrt(N/2) against the
+  # two-sided 5 % point at 2(N - 1) df; the run length is the first N where t exceeds it.
+  subtune --simulate --policy subtune --parts 10 --arl-runs 20000 > sub.jsonl
+  run py '
+import json, math
+import numpy as np
+from scipy import stats
+r = json.loads(open("sub.jsonl").readline())
+rng = np.random.default_rng(7)
+runs, lengths, crit = 10000, [], {}
+for _ in range(runs):
+    y = []
+    while True:
+        y.append(rng.standard_normal())
+        n = len(y)
+        if n < 4:
+            continue
+        i = np.arange(1, n + 1)
+        b, a = np.polyfit(i, y, 1)
+        s = math.sqrt(float(((np.array(y) - (a + b * i)) ** 2).sum()) / (n - 1))
+        k = 2 * (n - 1)
+        if k not in crit:
+            crit[k] = stats.t.ppf(0.975, k)
+        if n * abs(b) / s * math.sqrt(n / 2) > crit[k]:
+            lengths.append(n)
+            break
+m, se = np.mean(lengths), np.std(lengths, ddof=1) / math.sqrt(runs)
+assert abs(r["arl0"] - m) < 4 * math.hypot(se, r["arl0_se"]), (r["arl0"], r["arl0_se"], m, se)
+print("ok", round(m, 3), r["arl0"])'
+  echo "$output"
+  assert_output --regexp '^ok '
 }

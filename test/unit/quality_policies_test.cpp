@@ -61,7 +61,9 @@ TEST(Charts, ShewhartArlMatchesPublishedValues) {
 TEST(Charts, SimulatedShewhartArlWithinItsStandardError) {
   const RunLengthEstimate in_control = average_run_length(PolicyKind::shewhart, {}, {}, 0, 0, 20000, 11);
   EXPECT_NEAR(in_control.mean, shewhart_arl(3, 0), 4 * in_control.standard_error);
-  EXPECT_LT(in_control.standard_error, 0.02 * in_control.mean);
+  // Run lengths are geometric: sd = √(1 − p)/p, so the standard error is √(ARL(ARL − 1)/runs).
+  const double arl = shewhart_arl(3, 0);
+  EXPECT_NEAR(in_control.standard_error, std::sqrt(arl * (arl - 1) / 20000), 0.05 * in_control.standard_error);
   const RunLengthEstimate shifted = average_run_length(PolicyKind::shewhart, {}, {}, 1, 0, 20000, 12);
   EXPECT_NEAR(shifted.mean, shewhart_arl(3, 1), 4 * shifted.standard_error);
   EXPECT_EQ(shifted.censored, 0u);
@@ -102,16 +104,20 @@ TEST(LatheSim, CorrectionsMoveTheFollowingParts) {
 }
 
 TEST(LatheSim, InControlSigmaMatchesTheSampleSpread) {
-  // The stable process with a quadratic force model: σ² = σp² + σg² + g² s² + 2 b11² s⁴.
+  // The stable process with a strongly quadratic force model: σ² = σp² + σg² +
+  // g² s² + 2 b11² s⁴, where the last term is 3.6 % of σ² (1.8 % of σ), and the
+  // set-up absorbs E[y] = y(ā) + b11 s², so the measured mean is the nominal.
   LatheSettings s = stable_process({});
   s.parts = 200000;
-  s.force_model = {.b1 = 0.004, .b12 = 0.01, .b11 = 0.003};
+  s.force_model = {.b1 = 0.004, .b12 = 0.01, .b11 = 0.03};
   s.allowance_sd_mm = 0.3;
   double sum = 0, square_sum = 0;
   const auto none = make_policy(PolicyKind::none, {}, {});
   simulate_lathe(s, *none, [&](const PartRecord& p) { sum += p.measured_mm - 40, square_sum += (p.measured_mm - 40) * (p.measured_mm - 40); });
   const double n = static_cast<double>(s.parts), sd = std::sqrt((square_sum - sum * sum / n) / (n - 1));
-  EXPECT_NEAR(sd, in_control_sigma(s), 0.01 * in_control_sigma(s));  // the sample sd's own error is 0.16 %
+  // The sample sd's own relative error is about 0.16 % here (0.2 % with the quadratic term's tails).
+  EXPECT_NEAR(sd, in_control_sigma(s), 0.008 * in_control_sigma(s));
+  EXPECT_NEAR(sum / n, 0, 4 * sd / std::sqrt(n));
 }
 
 TEST(LatheSim, EveryPolicyMeetsTheSameDraws) {

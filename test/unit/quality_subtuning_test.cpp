@@ -18,6 +18,30 @@ namespace {
 
 using namespace tk::quality;
 
+/// The least-squares line over i = 1..n in long double, two passes, the
+/// residuals summed directly: an independent path with no cancellation to suffer.
+struct LongFit {
+  long double a = 0, b = 0, sse = 0, sxx = 0;
+};
+LongFit two_pass_fit(const std::vector<double>& sizes) {
+  const long double n = sizes.size(), mean_i = (n + 1) / 2;
+  long double mean = 0;
+  for (const double v : sizes) mean += v;
+  mean /= n;
+  LongFit fit;
+  long double sxy = 0;
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const long double di = static_cast<long double>(i + 1) - mean_i;
+    sxy += di * (sizes[i] - mean), fit.sxx += di * di;
+  }
+  fit.b = sxy / fit.sxx, fit.a = mean - fit.b * mean_i;
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const long double r = sizes[i] - (fit.a + fit.b * static_cast<long double>(i + 1));
+    fit.sse += r * r;
+  }
+  return fit;
+}
+
 TEST(StudentCritical, TwoSidedPublishedValues) {
   // t_{0.975, k}: the two-sided 5 % points of any statistics table.
   const StudentCriticalValues t(0.05, Sidedness::two);
@@ -165,22 +189,48 @@ TEST(SubTuner, LongRunMatchesTwoPassLongDouble) {
     step = tuner.observe(sizes[i]);
   }
   ASSERT_EQ(step.run, 1u);
-  const long double n = sizes.size(), mean_i = (n + 1) / 2;
-  long double mean = 0;
-  for (const double s : sizes) mean += s;
-  mean /= n;
-  long double sxy = 0, sxx = 0, syy = 0;
-  for (std::size_t i = 0; i < sizes.size(); ++i) {
-    const long double di = static_cast<long double>(i + 1) - mean_i, dy = sizes[i] - mean;
-    sxy += di * dy, sxx += di * di, syy += dy * dy;
-  }
-  const long double b = sxy / sxx, a = mean - b * mean_i, s = std::sqrt((syy - b * sxy) / (n - 2));
+  const auto [a, b, sse, sxx] = two_pass_fit(sizes);
+  const long double s = std::sqrt(sse / (sizes.size() - 2.0L));
   const double t = static_cast<double>(std::abs(b) * std::sqrt(sxx) / s);
   EXPECT_NEAR(step.b, static_cast<double>(b), 1e-6 * std::abs(static_cast<double>(b)));
   EXPECT_NEAR(step.a, static_cast<double>(a), 1e-9);
   EXPECT_NEAR(step.s, static_cast<double>(s), 1e-9 * static_cast<double>(s));
   EXPECT_NEAR(step.t, t, 1e-6 * t);
   EXPECT_EQ(step.df, sizes.size() - 2);
+}
+
+TEST(SubTuner, LongRunWithAStrongTrendKeepsItsSpread) {
+  // Sizes growing by 1 µm per part for 10^6 parts with 1 µm noise, watched
+  // for shrinking only (--alternative less), so the run never ends: the
+  // spread is a 1e-11 sliver of the sizes' moment, so SSE = Myy − b·Mxy
+  // would cancel (it lost 1e-3 of s here); the recursive SSE must match the
+  // two-pass long-double fit.
+  SubTuner tuner({.alternative = Alternative::less});
+  std::mt19937_64 random(3);
+  std::normal_distribution<double> noise(0, 0.001);
+  std::vector<double> sizes(1000000);
+  SubTuneStep step;
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    sizes[i] = 40 + 0.001 * static_cast<double>(i + 1) + noise(random);
+    step = tuner.observe(sizes[i]);
+  }
+  ASSERT_EQ(step.run, 1u);
+  const auto [a, b, sse, sxx] = two_pass_fit(sizes);
+  const double s = static_cast<double>(std::sqrt(sse / (sizes.size() - 1.0L)));
+  EXPECT_NEAR(step.b, static_cast<double>(b), 1e-9 * static_cast<double>(b));
+  EXPECT_NEAR(step.a, static_cast<double>(a), 1e-9);
+  EXPECT_NEAR(step.s, s, 1e-7 * s);
+  EXPECT_EQ(step.decision, Decision::none);
+}
+
+TEST(SubTuner, ResetKeepsNothingButTheTable) {
+  SubTuner tuner({});
+  for (const double size : {10.000, 10.002, 10.001, 10.003, 10.0}) tuner.observe(size);
+  tuner.reset();
+  const SubTuneStep first = tuner.observe(5.0);
+  EXPECT_EQ(first.run, 1u);
+  EXPECT_EQ(first.n, 1u);
+  EXPECT_EQ(first.offset, 0);
 }
 
 TEST(SubTuner, RefusesBadSettings) {

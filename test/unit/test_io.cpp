@@ -211,27 +211,30 @@ TEST(NumberColumn, BareNumbersBecomeOneFieldRecords) {
 }
 
 TEST(RecordWriter, RowCellsMatchTheRecordPath) {
+  // write_row and write() of the same record, in both formats; a name that needs escaping.
   struct Stream {
     char* buffer = nullptr;
     size_t size = 0;
     std::FILE* file = open_memstream(&buffer, &size);
     ~Stream() { std::free(buffer); }
   };
+  const std::vector<std::string> names{"x", "n", "word", "flag", "gap", "say \"hi\""};
+  Record record = Record::object();
+  record["x"] = 0.1, record["n"] = -7, record["word"] = "subtune", record["flag"] = true, record["gap"] = nullptr;
+  record["say \"hi\""] = 2.5e-300;
+  const Cell row[] = {Cell::real(0.1), Cell::integer(-7), Cell::text("subtune"), Cell::boolean(true), Cell::real(NAN), Cell::real(2.5e-300)};
   for (const OutputFormat format : {OutputFormat::json_lines, OutputFormat::csv}) {
-    Stream stream;
+    Stream fast;
     {
-      RecordWriter writer(format, stream.file);
-      writer.declare_fields({"x", "n", "word", "flag", "gap"});
-      const Cell row[] = {Cell::real(0.1), Cell::integer(-7), Cell::text("subtune"), Cell::boolean(true), Cell::real(NAN)};
+      RecordWriter writer(format, fast.file);
+      writer.declare_fields(names);
       writer.write_row(row);
       writer.flush();
+      const Cell too_many[7] = {};
+      EXPECT_THROW(writer.write_row(too_many), Error);
     }
-    std::fclose(stream.file);
-    const std::string text(stream.buffer, stream.size);
-    if (format == OutputFormat::json_lines)
-      EXPECT_EQ(text, "{\"x\":0.1,\"n\":-7,\"word\":\"subtune\",\"flag\":true,\"gap\":null}\n");
-    else
-      EXPECT_EQ(text, "x,n,word,flag,gap\n0.1,-7,subtune,true,\n");
+    std::fclose(fast.file);
+    EXPECT_EQ(std::string(fast.buffer, fast.size), write_all({record}, format, names)) << (format == OutputFormat::csv ? "csv" : "json");
   }
 }
 

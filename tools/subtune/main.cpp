@@ -26,10 +26,6 @@ namespace {
 using namespace tk::quality;
 using tk::machining::ForceErrorModel;
 
-std::vector<std::string> inputs_or_stdin(const std::vector<std::string>& inputs) {
-  return inputs.empty() ? std::vector<std::string>{"-"} : inputs;
-}
-
 /// Lengths beyond a kilometre, or nonzero ones below 1e-100 mm, are a unit
 /// or parsing mistake; the bounds also keep the run's sums of squares inside
 /// double range (squares of differences below ~1e-154 would underflow to 0
@@ -46,6 +42,24 @@ double length_field(const tk::Record& record, const std::string& key, const tk::
 
 /// A record's number, or null for NaN (a figure the run cannot give yet).
 tk::Record number_or_null(double v) { return std::isfinite(v) ? tk::Record(v) : tk::Record(nullptr); }
+
+/// The legend of the policy's level line in the plots.
+std::string level_label(PolicyKind kind) {
+  switch (kind) {
+    case PolicyKind::subtune: return "regression A_T at the part";
+    case PolicyKind::ewma: return "EWMA level (target + z)";
+    case PolicyKind::cusum: return "CUSUM estimate of the mean";
+    case PolicyKind::shewhart: return "the point (Shewhart)";
+    case PolicyKind::none: break;
+  }
+  return "level";
+}
+
+/// Writes the plot, saying so when it holds only the first parts.
+void write_plot(const SizePlot& plot, const std::string& path, const SizePlotInfo& info, const tk::cli::ToolApp& tool) {
+  if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} parts only", SizePlot::kMaxParts));
+  plot.write(path, info);
+}
 
 /// Tolerance limits given as options, overridden per record by fields.
 struct Limits {
@@ -65,7 +79,7 @@ bool within(double size, const Limits& l) { return (!l.lower || size >= *l.lower
 void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings& settings, const std::string& field,
                   const Limits& limits, const std::string& svg_path, const tk::cli::ToolApp& tool) {
   SubTuner tuner(settings);
-  tk::io::RecordReader reader(inputs_or_stdin(inputs), tk::io::number_column_probe(field));
+  tk::io::RecordReader reader(inputs, tk::io::number_column_probe(field));
   tk::io::RecordWriter writer(tool.output_format());
   // CSV always has an in_tolerance column (empty where no limits apply), since
   // any record may bring limits of its own; JSON has the field only where one does.
@@ -78,16 +92,20 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
   info.lower = limits.lower.value_or(info.lower), info.upper = limits.upper.value_or(info.upper);
   std::uint64_t parts = 0;
   std::vector<tk::io::Cell> row;
+  bool fast = false;
   tk::Record record;
   while (reader.next(record)) {
     const tk::Location where = reader.where();
     const double size = length_field(record, field, where);
-    const bool bare = record.size() == 1;  // a number column: the writer's fast path, no record built
     if (parts == 0) {
-      // A bare size is a field the writer must be told of; other inputs carry it in place.
-      if (bare) fields.insert(fields.begin(), field);
+      // A stream that starts with bare sizes (a number column) takes the
+      // writer's fast path, no record built, and the size is a field the
+      // writer must be told of; other inputs carry it in place.
+      fast = record.size() == 1;
+      if (fast) fields.insert(fields.begin(), field);
       writer.declare_fields(fields);
     }
+    const bool bare = fast && record.size() == 1;
     const SubTuneStep step = tuner.observe(size);
     ++parts;
     const Limits l = limits_of(record, limits, where);
@@ -114,9 +132,8 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
   }
   writer.flush();
   if (!svg_path.empty()) {
-    if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} parts only", SizePlot::kMaxParts));
     info.title = fmt::format("subtune: {} parts, alpha {:g}", parts, settings.alpha);
-    plot.write(svg_path, info);
+    write_plot(plot, svg_path, info, tool);
   }
 }
 
@@ -124,7 +141,7 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
 /// statistic and limit, its level, and whether to adjust.
 void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& chart, const std::string& field, const Limits& limits,
                   const std::string& svg_path, const tk::cli::ToolApp& tool) {
-  tk::io::RecordReader reader(inputs_or_stdin(inputs), tk::io::number_column_probe(field));
+  tk::io::RecordReader reader(inputs, tk::io::number_column_probe(field));
   tk::io::RecordWriter writer(tool.output_format());
   std::vector<std::string> fields{"n", "statistic", "limit", "level", "decision", "correction", "offset"};
   const bool csv = tool.output_format() == tk::io::OutputFormat::csv;
@@ -155,12 +172,12 @@ void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& char
   }
   writer.flush();
   if (!svg_path.empty()) {
-    if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} parts only", SizePlot::kMaxParts));
     const std::string name(policy_name(chart.kind()));
-    plot.write(svg_path, {.title = fmt::format("subtune --policy {}: {} parts", name, parts),
-                          .level_label = fmt::format("{} level", name),
+    write_plot(plot, svg_path, {.title = fmt::format("subtune --policy {}: {} parts", name, parts),
+                          .level_label = level_label(chart.kind()),
                           .lower = limits.lower.value_or(NAN),
-                          .upper = limits.upper.value_or(NAN)});
+                          .upper = limits.upper.value_or(NAN)},
+               tool);
   }
 }
 
@@ -173,7 +190,7 @@ std::array<double*, 6> coefficients(ForceErrorModel& m) { return {&m.b0, &m.b1, 
 void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::OutputFormat format) {
   std::vector<tk::machining::CalibrationPoint> points;
   std::vector<tk::Record> records;
-  tk::io::RecordReader reader(inputs_or_stdin(inputs));
+  tk::io::RecordReader reader(inputs);
   tk::Record record;
   while (reader.next(record)) {
     const tk::Location where = reader.where();
@@ -239,7 +256,7 @@ struct FeedRange {
 
 void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& m, std::optional<FeedRange> feed_range,
                  double fixed_feed, const tk::cli::ToolApp& tool) {
-  tk::io::RecordReader reader(inputs_or_stdin(inputs), tk::io::number_column_probe("a"));
+  tk::io::RecordReader reader(inputs, tk::io::number_column_probe("a"));
   tk::io::RecordWriter writer(tool.output_format());
   writer.declare_fields(feed_range ? std::vector<std::string>{"feed", "predicted_error", "feed_status", "error_min", "error_max"}
                                    : std::vector<std::string>{"predicted_error", "correction"});
@@ -307,6 +324,9 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
   // The ARL runs are in σ units round a target of 0 (the published tables' setting).
   ChartSettings unit = charts;
   unit.target = 0, unit.sigma = 1;
+  SubTuneSettings unit_tuning = subtune;  // its millimetres in σ too
+  unit_tuning.resolution /= charts.sigma;
+  if (!std::isnan(unit_tuning.target)) unit_tuning.target = 0;
   for (const PolicyKind kind : kinds) {
     const std::unique_ptr<AdjustmentPolicy> policy = make_policy(kind, subtune, charts);
     SizePlot plot;
@@ -329,7 +349,7 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
                  {"false_alarms", stable.corrections}};
     if (kind != PolicyKind::none) {
       const auto arl = [&](double shift, double drift, std::uint64_t salt) {
-        return average_run_length(kind, subtune, unit, shift, drift, o.arl_runs, lathe.seed * 7 + salt, o.arl_cap);
+        return average_run_length(kind, unit_tuning, unit, shift, drift, o.arl_runs, lathe.seed * 7 + salt, o.arl_cap);
       };
       const RunLengthEstimate in_control = arl(0, 0, 1), shifted = arl(o.shift_sigma, 0, 2), drifting = arl(0, o.drift_sigma, 3);
       r["arl0"] = in_control.mean, r["arl0_se"] = in_control.standard_error;
@@ -344,11 +364,11 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
     r["sigma_mm"] = charts.sigma;
     writer.write(r);
     if (!o.svg_path.empty()) {
-      if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} parts only", SizePlot::kMaxParts));
-      plot.write(o.svg_path, {.title = fmt::format("subtune --simulate --policy {}: {} parts, {} corrections, {:.1f} % in tolerance", name,
+      write_plot(plot, o.svg_path, {.title = fmt::format("subtune --simulate --policy {}: {} parts, {} corrections, {:.1f} % in tolerance", name,
                                                    run.parts, run.corrections, 100.0 * static_cast<double>(run.in_tolerance) / static_cast<double>(run.parts)),
-                              .level_label = kind == PolicyKind::ewma ? "EWMA level (target + z)" : "regression A_T at the part",
-                              .nominal = lathe.nominal_mm, .lower = lathe.lower_mm, .upper = lathe.upper_mm});
+                              .level_label = level_label(kind),
+                              .nominal = lathe.nominal_mm, .lower = lathe.lower_mm, .upper = lathe.upper_mm},
+                 tool);
     }
   }
   writer.flush();
