@@ -58,7 +58,8 @@ SubTuneStep SubTuner::observe(double size) {
     const double m = n - 1, moment_i_before = m * (m * m - 1) / 12;
     const double b_before = co_moment_ / moment_i_before;
     const double e = size - (mean_size_ + b_before * (n - n / 2));  // the line so far at i = n; x̄ was n/2
-    sse_ += e * e / (1 + 1 / m + (n / 2) * (n / 2) / moment_i_before);
+    // 1 + h = 1 + 1/m + (n/2)²/Σ(i − ī)² = n(n + 1)/((n − 1)(n − 2)) for x = 1..m, new x = n.
+    sse_ += e * e * (m * (n - 2)) / (n * (n + 1));
   }
   const double dsize = size - mean_size_;
   mean_size_ += dsize / n;
