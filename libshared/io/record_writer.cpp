@@ -38,8 +38,20 @@ std::string cell_text(const Record& value) {
   switch (value.type()) {
     case Record::value_t::string: return value.get<std::string>();
     case Record::value_t::null: return {};
+    case Record::value_t::number_float:  // NaN and inf: empty, as JSON's dump writes them null
+      return std::isfinite(value.get<double>()) ? value.dump() : std::string();
     default: return value.dump();
   }
+}
+
+Record cell_value(const Cell& cell) {
+  switch (cell.kind) {
+    case Cell::Kind::number: return cell.number;  // non-finite: written null or empty
+    case Cell::Kind::integer: return cell.whole;
+    case Cell::Kind::boolean: return cell.whole != 0;
+    case Cell::Kind::word: return std::string(cell.word);
+  }
+  return nullptr;
 }
 
 void RecordWriter::emit(const std::string& text) {

@@ -43,7 +43,8 @@ class RecordWriter {
   /// Fields the tool may add to records, in output order.
   void declare_fields(std::vector<std::string> names);
 
-  /// Throws Error on a write failure, or (CSV) for a field that is not a column.
+  /// Throws Error on a write failure, or (CSV) for a field that is not a
+  /// column. Non-finite numbers are written null (JSON) or empty (CSV).
   void write(const Record& record);
   /// Fast path for long numeric streams (pulses, time series): one number
   /// per declared field, in order; bit i of `integers` marks value i as an
@@ -97,7 +98,10 @@ class RecordFile {
 };
 
 /// A record field as CSV cell text: strings raw, numbers and booleans as in
-/// JSON, null as empty, arrays and objects as compact JSON.
+/// JSON, null and non-finite numbers as empty, arrays and objects as compact JSON.
 std::string cell_text(const Record& value);
+
+/// The record value of a write_row() cell, for a record that carries other fields too.
+Record cell_value(const Cell& cell);
 
 }  // namespace tk::io

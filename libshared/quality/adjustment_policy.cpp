@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <boost/math/distributions/normal.hpp>
 #include <cmath>
 
 #include "io/error.hpp"
@@ -132,12 +131,6 @@ std::unique_ptr<AdjustmentPolicy> make_policy(PolicyKind kind, const SubTuneSett
     case PolicyKind::cusum: return std::make_unique<CusumPolicy>(charts);
   }
   throw Error("unknown policy");
-}
-
-double shewhart_arl(double l, double shift) {
-  const boost::math::normal_distribution<double> unit;
-  const double p = boost::math::cdf(unit, -l - shift) + boost::math::cdf(boost::math::complement(unit, l - shift));
-  return 1 / p;
 }
 
 }  // namespace tk::quality

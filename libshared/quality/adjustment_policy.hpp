@@ -57,7 +57,4 @@ class AdjustmentPolicy {
 /// the CUSUM's μ̂ = target ± (K + C/N) (Montgomery §9.1).
 std::unique_ptr<AdjustmentPolicy> make_policy(PolicyKind kind, const SubTuneSettings& subtune, const ChartSettings& charts);
 
-/// Exact ARL of a Shewhart chart with limits ± L σ when the mean is shifted by `shift` σ.
-double shewhart_arl(double l, double shift);
-
 }  // namespace tk::quality

@@ -57,7 +57,7 @@ SubTuneStep SubTuner::observe(double size) {
     // cancel a drift's huge moment down to the noise.
     const double m = n - 1, moment_i_before = m * (m * m - 1) / 12;
     const double b_before = co_moment_ / moment_i_before;
-    const double e = size - (mean_size_ + b_before * (n - n / 2));  // the line so far at i = n; x̄ was n/2
+    const double e = size - (mean_size_ + b_before * (n / 2));  // the line so far at i = n, n/2 past its x̄ = n/2
     // 1 + h = 1 + 1/m + (n/2)²/Σ(i − ī)² = n(n + 1)/((n − 1)(n − 2)) for x = 1..m, new x = n.
     sse_ += e * e * (m * (n - 2)) / (n * (n + 1));
   }
@@ -75,9 +75,8 @@ SubTuneStep SubTuner::observe(double size) {
   }
   if (n_ < settings_.min_parts) return step;
 
-  const double sse = sse_;
   const bool seed = settings_.statistic == TrendStatistic::seed;
-  const double spread_sq = std::max(sse / (seed ? n - 1 : n - 2), spread_floor_sq_);
+  const double spread_sq = std::max(sse_ / (seed ? n - 1 : n - 2), spread_floor_sq_);
   step.s = std::sqrt(spread_sq);
   const double rise = std::abs(step.b) * (seed ? n : std::sqrt(moment_i));  // |ã − A_TN| = n |b̃|
   const double scale = seed ? std::sqrt(n / 2) : 1.0;

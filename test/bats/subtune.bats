@@ -630,3 +630,17 @@ want = math.sqrt(0.002**2 + 0.001**2 + g * g * 0.09 + 2 * 0.003**2 * 0.3**4)
 assert near(rows[0]["sigma_mm"], want, 1e-12 * want), (rows, want)' < sim.jsonl
   assert_output "ok"
 }
+
+@test "--simulate: sub-tuning's ARLs see --resolution against sigma (scaling both by 10 changes nothing; the floor changes the ARL)" {
+  subtune --simulate --policy subtune --arl-runs 2000 --sigma 0.003 --resolution 0.01 > a.jsonl
+  subtune --simulate --policy subtune --arl-runs 2000 --sigma 0.03 --resolution 0.1 > b.jsonl
+  subtune --simulate --policy subtune --arl-runs 2000 --sigma 0.003 > c.jsonl
+  run py 'import json
+a, b, c = (json.loads(open(f).readline()) for f in ("a.jsonl", "b.jsonl", "c.jsonl"))
+for k in ("arl0", "arl_shift", "arl_drift"):
+    assert abs(a[k] - b[k]) <= 1e-9 * a[k], (k, a[k], b[k])
+# r/sigma = 3.3: S_N is floored at 0.96 sigma, above most runs own spread, so alarms come later
+assert a["arl0"] - c["arl0"] > 4 * (a["arl0_se"] ** 2 + c["arl0_se"] ** 2) ** 0.5, (a, c)
+print("ok")'
+  assert_output "ok"
+}

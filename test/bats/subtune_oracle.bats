@@ -21,7 +21,6 @@ setup_file() {
 
 setup() {
   load test_helper
-  /usr/bin/python3 -c 'import scipy.stats, scipy.optimize' 2>/dev/null || skip "SciPy (python3-scipy) is not installed"
   cd "$BATS_TEST_TMPDIR"
   SUB="$FIXTURES/subtune"
   ORACLE="$TOOLKIT_ROOT/test/oracle"

@@ -79,23 +79,11 @@ def shewhart_drift_arl(L, shift, drift):
     return survival_sum(lambda i: shewhart_p(L, shift + drift * i))
 
 
-# ------------------------------------------------------------------- EWMA
-class EwmaChain:
-    def __init__(self, lam, L, m):
-        if m % 2 == 0:
-            m += 1  # an odd count puts z0 = 0 at a state's centre
-        self.lam, self.m = lam, m
-        self.h = L * math.sqrt(lam / (2.0 - lam))
-        self.w = 2.0 * self.h / m
-        self.c = -self.h + self.w * (np.arange(m) + 0.5)
-        self.start = m // 2
-
-    def matrix(self, mean):
-        lam, c, w = self.lam, self.c, self.w
-        base = (1.0 - lam) * c[:, None]
-        upper = (c[None, :] + w / 2 - base) / lam - mean
-        lower = (c[None, :] - w / 2 - base) / lam - mean
-        return norm.cdf(upper) - norm.cdf(lower)
+# ------------------------------------------------------ Markov chains
+class MarkovChain:
+    """A chart's statistic on m discrete states (Brook & Evans): subclasses
+    give matrix(mean), the transition probabilities among the in-control
+    states for one part with that mean, and start, the zero state."""
 
     def arl(self, mean):
         P = self.matrix(mean)
@@ -113,8 +101,27 @@ class EwmaChain:
         return np.array(out)
 
 
+# ------------------------------------------------------------------- EWMA
+class EwmaChain(MarkovChain):
+    def __init__(self, lam, L, m):
+        if m % 2 == 0:
+            m += 1  # an odd count puts z0 = 0 at a state's centre
+        self.lam, self.m = lam, m
+        self.h = L * math.sqrt(lam / (2.0 - lam))
+        self.w = 2.0 * self.h / m
+        self.c = -self.h + self.w * (np.arange(m) + 0.5)
+        self.start = m // 2
+
+    def matrix(self, mean):
+        lam, c, w = self.lam, self.c, self.w
+        base = (1.0 - lam) * c[:, None]
+        upper = (c[None, :] + w / 2 - base) / lam - mean
+        lower = (c[None, :] - w / 2 - base) / lam - mean
+        return norm.cdf(upper) - norm.cdf(lower)
+
+
 # ------------------------------------------------------------------ CUSUM
-class CusumChain:
+class CusumChain(MarkovChain):
     """The upper one-sided CUSUM C = max(0, C + x - k), alarm C > h."""
 
     def __init__(self, k, h, m):
@@ -122,24 +129,11 @@ class CusumChain:
         self.w = 2.0 * h / (2 * m - 1)
         self.c = self.w * np.arange(m)
         self.edges = (np.arange(m) + 0.5) * self.w  # upper edges; the last is h
+        self.start = 0
 
     def matrix(self, mean):
         cdf = norm.cdf(self.edges[None, :] - self.c[:, None] + self.k - mean)
         return np.diff(np.concatenate([np.zeros((self.m, 1)), cdf], axis=1), axis=1)
-
-    def arl(self, mean):
-        P = self.matrix(mean)
-        return np.linalg.solve(np.eye(self.m) - P, np.ones(self.m))[0]
-
-    def survival(self, mean_at, tol=1e-13, cap=10**6):
-        p = np.zeros(self.m)
-        p[0] = 1.0
-        out, i = [1.0], 0
-        while out[-1] > tol and i < cap:
-            i += 1
-            p = p @ self.matrix(mean_at(i))
-            out.append(float(p.sum()))
-        return np.array(out)
 
     def two_sided_arl(self, d):
         # the lower CUSUM at mean d is the upper one at -d

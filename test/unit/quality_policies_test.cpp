@@ -5,6 +5,7 @@
 /// process's σ against the sample spread of its measurements).
 #include <gtest/gtest.h>
 
+#include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <vector>
 
@@ -15,6 +16,13 @@
 namespace {
 
 using namespace tk::quality;
+
+/// The exact ARL of a Shewhart chart with limits ± L σ under a shift of `shift` σ:
+/// 1/p, p = Φ(−L − shift) + 1 − Φ(L − shift), the oracle of the simulated ARLs.
+double shewhart_arl(double l, double shift) {
+  const boost::math::normal_distribution<double> unit;
+  return 1 / (boost::math::cdf(unit, -l - shift) + boost::math::cdf(boost::math::complement(unit, l - shift)));
+}
 
 std::unique_ptr<AdjustmentPolicy> chart(PolicyKind kind, const ChartSettings& c = {}) { return make_policy(kind, {}, c); }
 

@@ -40,9 +40,6 @@ double length_field(const tk::Record& record, const std::string& key, const tk::
   return v;
 }
 
-/// A record's number, or null for NaN (a figure the run cannot give yet).
-tk::Record number_or_null(double v) { return std::isfinite(v) ? tk::Record(v) : tk::Record(nullptr); }
-
 /// The legend of the policy's level line in the plots.
 std::string level_label(PolicyKind kind) {
   switch (kind) {
@@ -83,10 +80,10 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
   tk::io::RecordWriter writer(tool.output_format());
   // CSV always has an in_tolerance column (empty where no limits apply), since
   // any record may bring limits of its own; JSON has the field only where one does.
-  const bool csv = tool.output_format() == tk::io::OutputFormat::csv;
-  const bool option_limits = limits.lower || limits.upper;
-  std::vector<std::string> fields{"run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"};
-  if (csv || option_limits) fields.push_back("in_tolerance");
+  const bool tolerance_column = tool.output_format() == tk::io::OutputFormat::csv || limits.lower || limits.upper;
+  const std::vector<std::string> own{"run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"};
+  std::vector<std::string> fields = own;
+  if (tolerance_column) fields.push_back("in_tolerance");
   SizePlot plot;
   SizePlotInfo info;
   info.lower = limits.lower.value_or(info.lower), info.upper = limits.upper.value_or(info.upper);
@@ -105,26 +102,21 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
       if (fast) fields.insert(fields.begin(), field);
       writer.declare_fields(fields);
     }
-    const bool bare = fast && record.size() == 1;
     const SubTuneStep step = tuner.observe(size);
     ++parts;
     const Limits l = limits_of(record, limits, where);
     const bool judged = l.lower || l.upper, in_tolerance = within(size, l);
-    if (bare) {
-      using tk::io::Cell;
-      const auto count = [](std::uint64_t v) { return v > 0 ? Cell::integer(static_cast<long long>(v)) : Cell::real(NAN); };
-      row.assign({Cell::real(size), Cell::integer(static_cast<long long>(step.run)), Cell::integer(static_cast<long long>(step.n)),
-                  Cell::real(step.a), Cell::real(step.b), Cell::real(step.s), Cell::real(step.t), Cell::real(step.t_crit),
-                  count(step.df), Cell::text(decision_name(step.decision)), Cell::real(step.correction), Cell::real(step.offset)});
-      if (csv || option_limits) row.push_back(judged ? Cell::boolean(in_tolerance) : Cell::real(NAN));
+    using tk::io::Cell;
+    row.assign({Cell::integer(static_cast<long long>(step.run)), Cell::integer(static_cast<long long>(step.n)), Cell::real(step.a),
+                Cell::real(step.b), Cell::real(step.s), Cell::real(step.t), Cell::real(step.t_crit),
+                step.df > 0 ? Cell::integer(static_cast<long long>(step.df)) : Cell::real(NAN), Cell::text(decision_name(step.decision)),
+                Cell::real(step.correction), Cell::real(step.offset)});
+    if (fast && record.size() == 1) {
+      row.insert(row.begin(), Cell::real(size));
+      if (tolerance_column) row.push_back(judged ? Cell::boolean(in_tolerance) : Cell::real(NAN));
       writer.write_row(row);
     } else {
-      record["run"] = step.run, record["n"] = step.n;
-      record["a"] = number_or_null(step.a), record["b"] = number_or_null(step.b), record["s"] = number_or_null(step.s);
-      record["t"] = number_or_null(step.t), record["t_crit"] = number_or_null(step.t_crit);
-      record["df"] = step.df > 0 ? tk::Record(step.df) : tk::Record(nullptr);
-      record["decision"] = decision_name(step.decision);
-      record["correction"] = step.correction, record["offset"] = step.offset;
+      for (std::size_t i = 0; i < own.size(); ++i) record[own[i]] = tk::io::cell_value(row[i]);
       if (judged) record["in_tolerance"] = in_tolerance;
       writer.write(record);
     }
@@ -161,8 +153,8 @@ void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& char
     ++since_adjustment;
     if (step.alarm) offset += step.correction;
     record["n"] = since_adjustment;
-    record["statistic"] = number_or_null(step.statistic), record["limit"] = number_or_null(step.limit);
-    record["level"] = number_or_null(step.level);
+    record["statistic"] = step.statistic, record["limit"] = step.limit;
+    record["level"] = step.level;
     record["decision"] = step.alarm ? "adjust" : "none";
     record["correction"] = step.correction, record["offset"] = offset;
     if (const Limits l = limits_of(record, limits, where); l.lower || l.upper) record["in_tolerance"] = within(size, l);
@@ -204,8 +196,8 @@ void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::O
   tk::Record model{{"record", "model"}};
   ForceErrorModel m = fit.model;
   for (std::size_t k = 0; k < 6; ++k) model[kCoefficientNames[k]] = *coefficients(m)[k];
-  model["points"] = fit.points, model["r2"] = fit.r2, model["adjusted_r2"] = number_or_null(fit.adjusted_r2);
-  model["residual_sd"] = number_or_null(fit.residual_sd), model["condition"] = fit.condition;
+  model["points"] = fit.points, model["r2"] = fit.r2, model["adjusted_r2"] = fit.adjusted_r2;
+  model["residual_sd"] = fit.residual_sd, model["condition"] = fit.condition;
   if (residuals) {
     for (const auto& [key, value] : records.front().items()) columns.push_back(key);
     columns.insert(columns.end(), {"fitted", "residual"});
@@ -268,7 +260,7 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
     if (a < 0) throw tk::Error(fmt::format("allowance a = {} mm is negative", a), where);
     if (feed_range) {
       const tk::machining::FeedChoice choice = tk::machining::feed_for_error(m, a, feed_range->target, feed_range->f_min, feed_range->f_max);
-      record["feed"] = number_or_null(choice.feed), record["predicted_error"] = number_or_null(choice.error);
+      record["feed"] = choice.feed, record["predicted_error"] = choice.error;
       record["feed_status"] = tk::machining::feed_status_name(choice.status);
       record["error_min"] = choice.error_min, record["error_max"] = choice.error_max;
       if (choice.status == tk::machining::FeedStatus::none) ++unsolved;
@@ -321,12 +313,6 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
   writer.declare_fields({"policy", "parts", "in_tolerance_share", "mean_abs_deviation_mm", "rms_deviation_mm", "max_abs_deviation_mm",
                          "corrections", "false_alarms", "arl0", "arl0_se", "arl_shift", "arl_shift_se", "arl_drift", "arl_drift_se",
                          "sigma_mm"});
-  // The ARL runs are in σ units round a target of 0 (the published tables' setting).
-  ChartSettings unit = charts;
-  unit.target = 0, unit.sigma = 1;
-  SubTuneSettings unit_tuning = subtune;  // its millimetres in σ too
-  unit_tuning.resolution /= charts.sigma;
-  if (!std::isnan(unit_tuning.target)) unit_tuning.target = 0;
   for (const PolicyKind kind : kinds) {
     const std::unique_ptr<AdjustmentPolicy> policy = make_policy(kind, subtune, charts);
     SizePlot plot;
@@ -349,7 +335,7 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
                  {"false_alarms", stable.corrections}};
     if (kind != PolicyKind::none) {
       const auto arl = [&](double shift, double drift, std::uint64_t salt) {
-        return average_run_length(kind, unit_tuning, unit, shift, drift, o.arl_runs, lathe.seed * 7 + salt, o.arl_cap);
+        return average_run_length(kind, subtune, charts, shift, drift, o.arl_runs, lathe.seed * 7 + salt, o.arl_cap);
       };
       const RunLengthEstimate in_control = arl(0, 0, 1), shifted = arl(o.shift_sigma, 0, 2), drifting = arl(0, o.drift_sigma, 3);
       r["arl0"] = in_control.mean, r["arl0_se"] = in_control.standard_error;
@@ -443,7 +429,7 @@ int main(int argc, char** argv) {
       app.add_option("--drift", sim.drift_sigma, "arl_drift: a drift of this many sigma per part")->check(finite)->capture_default_str()->type_name("SIGMA"),
       app.add_option("--trace", sim.trace_path, "write one record per simulated part to FILE")->type_name("FILE")};
   for (CLI::Option* o : sim_options) o->group(lathe_group);
-  std::string sim_model_path, sim_coefficients;
+  std::string sim_model_path;
   sim_options.push_back(app.add_option("--sim-model", sim_model_path, "the lathe's force-error model from FILE (default: y = 0.01 a)")->type_name("FILE")->group(lathe_group));
   std::vector<CLI::Option*> chart_options{
       app.add_option("--sigma", sim.sigma, "the charts' sigma, mm (--simulate's default: the stable process's exact one)")->check(positive)->type_name("MM"),
@@ -504,8 +490,8 @@ int main(int argc, char** argv) {
       for (CLI::Option* o : sim_options)
         if (o->count() > 0) throw tk::UsageError(o->get_name() + " goes with --simulate");
       if (lower && upper && *lower > *upper) throw tk::UsageError(fmt::format("--lower {} is above --upper {}", *lower, *upper));
-      const PolicyKind kind = sim.policy.empty() ? PolicyKind::subtune : sim.policy == "all" ? PolicyKind::none : parse_policy(sim.policy);
-      if (kind == PolicyKind::none) throw tk::UsageError("the filter runs one policy: subtune, shewhart, ewma or cusum");
+      if (sim.policy == "all" || sim.policy == "none") throw tk::UsageError("the filter runs one policy: subtune, shewhart, ewma or cusum");
+      const PolicyKind kind = sim.policy.empty() ? PolicyKind::subtune : parse_policy(sim.policy);
       if (kind == PolicyKind::subtune) {
         for (CLI::Option* o : chart_options)
           if (o->count() > 0) throw tk::UsageError(o->get_name() + " goes with a chart --policy or --simulate");
