@@ -64,6 +64,11 @@ struct Motion {
   MotionKind kind = MotionKind::linear;
   Vec3 start, end;
   double feed = 0;  ///< mm/s along the path; 0 for rapid (the machine's maximum)
+  /// G33, a `linear` motion whose `feed` is K times the spindle speed: the
+  /// tool follows the spindle, so the machine must not slow it below that
+  /// (PulseRun refuses a G33 faster than the machine can go) and starts it
+  /// from rest after a motion that does not follow the spindle.
+  bool spindle_synchronised = false;
   /// G93: `duration` is the block's time in s (`feed` is then the path
   /// length over that time, for information).
   bool inverse_time = false;
@@ -90,6 +95,25 @@ struct InterpreterOptions {
 struct GcodeBlock;  // one line's words sorted out (gcode_block.hpp)
 
 /// Modal state as LinuxCNC keeps it, and what it did not execute.
+///
+/// Lathe work follows LinuxCNC's rules:
+/// - G33 X- Y- Z- K- (spindle-synchronised motion, threading) is a motion
+///   mode like G1 and stays in force. K, in the program's units, is the
+///   distance per spindle revolution along the line the axis words draw
+///   (LinuxCNC's drive line: on a taper, Z advances less than K per turn),
+///   and every G33 block needs its own K (K is not modal). No spindle turns
+///   here, so the line is timed at K times the spindle speed S (rpm, the
+///   last S word, not scaled by G20) along the path; F plays no part (an F
+///   on a G33 line is an error, as in LinuxCNC, and the modal F stays for
+///   later G1-G3). The feed mode (G93/G94) does not apply to it either.
+///   The spindle must be turning (M3 or M4 since the last M5) at a positive
+///   S, and not in G96, whose S is a surface speed: the rpm would be
+///   unknown. A G33 line must have an axis word.
+/// - G7 makes X words diameters: the machine's X is half the word,
+///   absolute or incremental (LinuxCNC halves the number as it reads it);
+///   arc centre words (I) and R stay radii, as LinuxCNC leaves them. G8,
+///   radius mode, is the default. position() and the motions are machine
+///   coordinates, so X there is always a radius.
 ///
 /// Choices where the dialects differ or LinuxCNC leaves it to the operator:
 /// - lines starting with '/' are skipped (the block delete switch is on);
@@ -119,8 +143,10 @@ class GcodeInterpreter {
   /// from the start radius by more than 0.5 mm, or by more than 0.005 mm
   /// and 0.1% (LinuxCNC's rule; inches: 0.05 in, 0.0005 in), an R arc
   /// whose chord exceeds 2R, axis words with no motion mode (after G80),
-  /// and a coordinate beyond max_coordinate_mm. Words it cannot honour
-  /// (G41/G42 cutter compensation, G33 and G76 threading, canned cycles
+  /// a coordinate beyond max_coordinate_mm, a negative S, and a G33
+  /// without axis words, without K or with K <= 0, with an F word, with the
+  /// spindle stopped, at S0 or in G96. Words it cannot honour (G41/G42
+  /// cutter compensation, G33.1 rigid tapping, G76 threading, canned cycles
   /// G73 G81-G89, G38.x probing, G28/G30 homing, G92 offsets, G10, G5
   /// splines, G95, A B C U V W axes...) are errors too unless
   /// options.lenient, which skips the word with a warning through `warn`,
@@ -133,11 +159,13 @@ class GcodeInterpreter {
   void on_warning(std::function<void(const std::string&)> warn) { warn_ = std::move(warn); }
 
   const Vec3& position() const { return position_; }
-  /// Words accepted and not acted on, with how many times they came: M
-  /// codes other than M2/M30 ("M3", "M6", "M62": M03 counts as "M3"), S, T,
-  /// H, D, and G40 G43 G49 G53 G54-G59.3 G61 G61.1 G64 G96 G97 G98 G99 (and
+  /// Words with no effect on the tool path or its timing, with how many
+  /// times they came: M codes other than M2/M30 ("M3", "M6", "M62": M03
+  /// counts as "M3"; M3, M4 and M5 only decide whether G33 may run), T, H,
+  /// D, and G40 G43 G49 G53 G54-G59.3 G61 G61.1 G64 G96 G97 G98 G99 (and
   /// G80 when ignored). Argument words of these (M62 P, G64 P Q) are not
-  /// counted. Modal codes that act (G17, G20, G90...) are not here.
+  /// counted. Modal codes and values that act (G7, G17, G20, G90..., F, and
+  /// S, which times G33) are not here.
   const std::map<std::string, std::uint64_t>& unused_words() const { return unused_; }
   /// Lines executed that hold a word other than N (blank, comment-only,
   /// '%' and block-deleted lines do not count).
@@ -148,7 +176,9 @@ class GcodeInterpreter {
   bool skip_unsupported(GcodeBlock& block);
   void record_unused(GcodeBlock& block);
   void set_modes(GcodeBlock& block);
+  void set_spindle(GcodeBlock& block);
   void move(GcodeBlock& block, bool skip_motion, std::size_t line_number, std::vector<Motion>& out);
+  double synchronised_speed(GcodeBlock& block) const;
   void arc(GcodeBlock& block, Motion& motion) const;
   void warn(const std::string& message) const;
   double unit() const { return inches_ ? 25.4 : 1.0; }  ///< mm per program unit
@@ -156,13 +186,17 @@ class GcodeInterpreter {
   InterpreterOptions options_;
   std::function<void(const std::string&)> warn_;
   Vec3 position_;
-  /// 0 G0, 1 G1, 2 G2, 3 G3, -1 none (G80), -2 an unsupported mode that
-  /// lenient skipped (`skipped_mode_` names it).
+  /// 0 G0, 1 G1, 2 G2, 3 G3, 33 G33, -1 none (G80), -2 an unsupported
+  /// mode that lenient skipped (`skipped_mode_` names it).
   int motion_mode_ = 0;
   std::string skipped_mode_;
   int plane_ = 17;
   bool inches_ = false, incremental_ = false, arc_incremental_ = true, inverse_time_ = false;
+  bool diameter_mode_ = false;  ///< G7: X words are diameters
   double feed_ = 0;  ///< mm/min (converted from in/min)
+  double spindle_speed_ = 0;  ///< the last S word: rpm, or a surface speed under G96
+  bool spindle_turning_ = false;  ///< M3 or M4 since the last M5
+  bool constant_surface_speed_ = false;  ///< G96
   std::map<std::string, std::uint64_t> unused_;
   std::uint64_t blocks_ = 0;
   bool ended_ = false;

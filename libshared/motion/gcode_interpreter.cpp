@@ -1,7 +1,7 @@
 /// @file gcode_interpreter.cpp
-/// @brief The modal RS274/NGC interpreter: modal state, units and distance
-/// modes, straight moves, dwells, and arcs in centre (I/J/K) and radius (R)
-/// format.
+/// @brief The modal RS274/NGC interpreter: modal state, units, distance and
+/// lathe diameter modes, the spindle, straight moves, spindle-synchronised
+/// moves (G33), dwells, and arcs in centre (I/J/K) and radius (R) format.
 #include <algorithm>
 #include <cmath>
 
@@ -37,10 +37,11 @@ void GcodeInterpreter::execute(const GcodeLine& line, std::size_t line_number, s
 
   const bool skip_motion = skip_unsupported(block);
   record_unused(block);
-  // The rest in LinuxCNC's order of execution (feed mode, F, dwell, plane,
-  // units, distance modes, motion, program end), except that units come
-  // before F so that "G20 F10" means 10 in/min.
+  // The rest in LinuxCNC's order of execution (feed mode, F, S, spindle,
+  // dwell, plane, units, lathe and distance modes, motion, program end),
+  // except that units come before F so that "G20 F10" means 10 in/min.
   set_modes(block);
+  set_spindle(block);
   if (block.has_g(40)) {
     if (!block.has('P')) throw Error("G4 (dwell) without a P word");
     const double seconds = block.take('P');
@@ -106,7 +107,7 @@ void GcodeInterpreter::record_unused(GcodeBlock& block) {
     ++unused_[fmt::format("M{}", m)];
     for (const char letter : mcode_arguments(m)) block.consume(letter);
   }
-  for (const char letter : {'S', 'T', 'H', 'D'}) {
+  for (const char letter : {'T', 'H', 'D'}) {
     if (!block.has(letter)) continue;
     block.take(letter);
     ++unused_[std::string(1, letter)];
@@ -127,8 +128,23 @@ void GcodeInterpreter::set_modes(GcodeBlock& block) {
     if (!inverse_time_) feed_ = feed * unit();  // in G93 each move reads its own F
   }
   if (const GcodeInfo* plane = block.in_group(GcodeGroup::plane)) plane_ = plane->code / 10;
+  if (const GcodeInfo* lathe = block.in_group(GcodeGroup::lathe_mode)) diameter_mode_ = lathe->code == 70;
   if (const GcodeInfo* distance = block.in_group(GcodeGroup::distance)) incremental_ = distance->code == 910;
   if (const GcodeInfo* distance = block.in_group(GcodeGroup::arc_distance)) arc_incremental_ = distance->code == 911;
+}
+
+/// The spindle matters only to G33, which follows it: S is kept (rpm, or a
+/// surface speed under G96), M3/M4 start it and M5 stops it. M3-M5 and G96
+/// G97 still count as unused words: they do not move or time anything.
+void GcodeInterpreter::set_spindle(GcodeBlock& block) {
+  if (block.has('S')) {
+    const double speed = block.take('S');
+    if (speed < 0) throw Error(fmt::format("negative spindle speed S{:g}", speed));
+    spindle_speed_ = speed;
+  }
+  if (const GcodeInfo* mode = block.in_group(GcodeGroup::spindle_mode)) constant_surface_speed_ = mode->code == 960;
+  if (block.has_m(3) || block.has_m(4)) spindle_turning_ = true;
+  if (block.has_m(5)) spindle_turning_ = false;
 }
 
 void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t line_number, std::vector<Motion>& out) {
@@ -139,6 +155,10 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
   const bool axis_words = block.has('X') || block.has('Y') || block.has('Z');
   const bool arc_mode = motion_mode_ == 2 || motion_mode_ == 3;
   const bool arc_words = block.has('I') || block.has('J') || block.has('K') || block.has('R');
+  // LinuxCNC refuses a G33 with no end point rather than wait for the
+  // spindle to go nowhere.
+  if (block.has_g(330) && !axis_words && !skip_motion)
+    throw Error("G33 without X, Y or Z words (it needs an end point)");
   // G2/G3 with only centre words and no end point: a full circle.
   if (skip_motion || !(axis_words || (arc_mode && arc_words))) return;
   if (motion_mode_ == -2) {
@@ -152,7 +172,10 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
   for (int axis = 0; axis < 3; ++axis) {
     const char letter = "XYZ"[axis];
     if (!block.has(letter)) continue;
-    const double value = block.take(letter) * unit();
+    double value = block.take(letter) * unit();
+    // G7: the word is a diameter, the machine's X a radius. LinuxCNC halves
+    // the number as it reads it, so G91 increments are halved too.
+    if (letter == 'X' && diameter_mode_) value /= 2;
     target[axis] = incremental_ ? position_[axis] + value : value;
     if (!(std::abs(target[axis]) <= options_.max_coordinate_mm))
       throw Error(fmt::format("coordinate {}{:.10g} beyond ±{:.10g} mm", letter, target[axis], options_.max_coordinate_mm));
@@ -164,6 +187,11 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
   motion.end = target;
   motion.source_line = line_number;
   if (motion_mode_ == 0) {
+    if (!moves) return;
+  } else if (motion_mode_ == 33) {
+    motion.kind = MotionKind::linear;
+    motion.spindle_synchronised = true;
+    motion.feed = synchronised_speed(block);  // checked even when the line goes nowhere, as LinuxCNC does
     if (!moves) return;
   } else {
     const std::string g = fmt::format("G{}", motion_mode_);
@@ -198,6 +226,27 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
   }
   position_ = target;
   out.push_back(motion);
+}
+
+/// G33's speed along its line in mm/s. LinuxCNC keeps the tool K along the
+/// line the axis words draw for each spindle revolution (its "drive line":
+/// the path, not the Z axis alone), so the speed is K times the spindle's
+/// rpm. F has no part in it. LinuxCNC's checks come first: K on the block
+/// (it is not modal), no F, the spindle turning; then what this needs to
+/// know the rpm: a positive S outside G96.
+double GcodeInterpreter::synchronised_speed(GcodeBlock& block) const {
+  if (!block.has('K')) throw Error("G33 without a K word (distance per spindle revolution)");
+  const double per_revolution = block.take('K');
+  if (!(per_revolution > 0))
+    throw Error(fmt::format("G33 K{:g}: the distance per spindle revolution must be positive", per_revolution));
+  if (block.has('F'))
+    throw Error(fmt::format("F{:g} with G33: its speed follows the spindle (K per revolution), not a feed rate",
+                            block.value[GcodeBlock::index('F')]));
+  if (!spindle_turning_) throw Error("G33 with the spindle stopped (M3 or M4 starts it)");
+  if (constant_surface_speed_)
+    throw Error("G33 in constant surface speed mode (G96): S is no spindle speed in rpm (G97 selects rpm)");
+  if (!(spindle_speed_ > 0)) throw Error("G33 without a spindle speed (S0, or no S word yet)");
+  return per_revolution * unit() * spindle_speed_ / 60;
 }
 
 /// Fills in an arc's plane, centre and turns; start, end and direction are set.

@@ -47,7 +47,21 @@ double limit_by_axes(double path_limit, const std::array<double, 3>& axis_limit,
   return path_limit;
 }
 
+/// The feed cap along a motion of this shape: --rapid for G0, --max-feed
+/// otherwise, lowered so that no axis' share exceeds its own speed limit.
+double speed_cap(const MachineLimits& limits, const Motion& motion, const Vec3& share) {
+  return limit_by_axes(motion.kind == MotionKind::rapid ? limits.rapid_speed : limits.max_speed, limits.axis_speed,
+                       share);
+}
+
 }  // namespace
+
+double machine_speed_cap(const MachineLimits& limits, const Motion& motion) {
+  double length = 0, radius = 0;
+  Vec3 entry, exit, share;
+  shape_of(motion, length, entry, exit, radius, share);
+  return speed_cap(limits, motion, share);
+}
 
 double PlannedBlock::time_at(double along) const {
   const double s = std::clamp(along, 0.0, length);
@@ -109,8 +123,7 @@ void Planner::add(const Motion& motion, const Sink& ready) {
                                                    : motion.feed;
   // G0 runs as fast as the slowest axis it needs allows; a feed above
   // what the machine can do is capped (and counted).
-  const double machine_speed =
-      limit_by_axes(motion.kind == MotionKind::rapid ? limits_.rapid_speed : limits_.max_speed, limits_.axis_speed, share);
+  const double machine_speed = speed_cap(limits_, motion, share);
   if (nominal > machine_speed) {
     nominal = machine_speed;
     next.block.feed_capped = motion.kind != MotionKind::rapid;
@@ -131,8 +144,14 @@ void Planner::add(const Motion& motion, const Sink& ready) {
     }
     junction = std::min({junction, nominal, previous_nominal_});
   }
+  // A G33 after a motion that does not follow the spindle starts from rest:
+  // the control stops there and waits for the spindle's index pulse, so
+  // that every pass of a thread starts at the same angle (LinuxCNC), then
+  // accelerates into it. G33 after G33 stays locked and joins as usual.
+  if (motion.spindle_synchronised && !previous_synchronised_) junction = 0;
   next.max_entry = junction;
   have_previous_ = true;
+  previous_synchronised_ = motion.spindle_synchronised;
   previous_exit_direction_ = next.exit_direction;
   previous_nominal_ = nominal;
   previous_acceleration_ = a;

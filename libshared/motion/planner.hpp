@@ -11,7 +11,8 @@
 /// window of blocks: the last block in the window must be able to stop, so
 /// a longer window only ever raises speeds. A full window is planned once
 /// and its first half goes out, so every block is planned with at least
-/// half a window after it. A dwell stops the machine.
+/// half a window after it. A dwell stops the machine, and so does the start
+/// of a spindle-synchronised (G33) motion after one that is not.
 #pragma once
 
 #include <array>
@@ -79,10 +80,17 @@ class Planner {
   MachineLimits limits_;
   std::deque<Pending> pending_;
   bool have_previous_ = false;
+  bool previous_synchronised_ = false;  ///< the previous motion was a G33
   Vec3 previous_exit_direction_;
   double previous_nominal_ = 0, previous_acceleration_ = 0;
   double locked_entry_ = 0;  ///< the entry speed of the front block, fixed by the block before it
 };
+
+/// The feed cap along a motion in mm/s: the rapid speed for G0, max_speed
+/// for the others, lowered so that no axis' share of it exceeds the axis'
+/// own limit (as the planner caps a programmed feed; arcs' centripetal
+/// limit aside).
+double machine_speed_cap(const MachineLimits& limits, const Motion& motion);
 
 /// The finished profile of one block: cruise speed and duration from its
 /// entry, nominal and exit speeds, length and acceleration.

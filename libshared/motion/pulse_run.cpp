@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "io/error.hpp"
 #include "io/input_file.hpp"
 #include "motion/arc_geometry.hpp"
@@ -58,7 +60,10 @@ void PulseRun::run_lines(const std::string& path) {
       }
       if (!line.words.empty()) started = true;
       interpreter_.execute(line, input.line_number(), motions_);
-      for (const Motion& motion : motions_) check_counter_range(motion);
+      for (const Motion& motion : motions_) {
+        check_counter_range(motion);
+        check_synchronised_speed(motion);
+      }
     } catch (const Error& e) {
       throw Error(e.what(), input.where());
     }
@@ -82,6 +87,18 @@ void PulseRun::check_counter_range(const Motion& motion) const {
     corner[g.a1] = std::fabs(g.c1) + r;
     stepper_.quantise(corner);
   }
+}
+
+// A G33 cannot be slowed to what the machine can do as a feed is: the tool
+// would leave the thread the spindle cuts. LinuxCNC refuses a spindle speed
+// that asks too much of the axes; so does this, at the G33's line.
+void PulseRun::check_synchronised_speed(const Motion& motion) const {
+  if (!motion.spindle_synchronised) return;
+  const double cap = machine_speed_cap(options_.limits, motion);
+  if (motion.feed > cap * (1 + 1e-12))
+    throw Error(fmt::format("G33 needs {:.6g} mm/min along its line (K times S), more than the machine allows there "
+                            "({:.6g} mm/min)",
+                            motion.feed * 60, cap * 60));
 }
 
 void PulseRun::finish() { planner_.finish(ready_); }

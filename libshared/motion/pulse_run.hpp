@@ -70,6 +70,7 @@ class PulseRun {
  private:
   void run_lines(const std::string& path);
   void check_counter_range(const Motion& motion) const;
+  void check_synchronised_speed(const Motion& motion) const;
   void on_block(const PlannedBlock& block);
 
   PulseOptions options_;

@@ -683,18 +683,206 @@ for name, d, b in zip(names, map(json.loads, open(sys.argv[1])), map(json.loads,
 import json, sys
 r = json.loads(sys.argv[1])
 print(sorted(r["unused_words"].items()), r["final_x"], r["pulses_x"], r["blocks"])' "$output"
-  # M3 twice (M03 is M3), S twice, T and M6 once, G54 once; M5 T2 and the G1
-  # after M2 never read; G21 G90 act, so they are not unused.
-  assert_output "[('G54', 1), ('M3', 2), ('M6', 1), ('S', 2), ('T', 1)] 5.0 1000 6"
+  # M3 twice (M03 is M3), T and M6 once, G54 once; M5 T2 and the G1 after
+  # M2 never read; G21 G90 act, and so does S (G33 follows it): not unused.
+  assert_output "[('G54', 1), ('M3', 2), ('M6', 1), ('T', 1)] 5.0 1000 6"
   [ "$(oracle unused.ngc | json-field final_x)" = 5.0 ]
   [ "$(oracle unused.ngc | json-field blocks)" = 6 ]
   sed 's/^M2$/M30/' unused.ngc > m30.ngc
   run --separate-stderr gcode-pulse --summary m30.ngc
   assert_success
   [ "$(field final_x <<< "$output")" = 5.0 ]
-  [ "$(field unused_words <<< "$output")" = '{"G54": 1, "M3": 2, "M6": 1, "S": 2, "T": 1}' ]
+  [ "$(field unused_words <<< "$output")" = '{"G54": 1, "M3": 2, "M6": 1, "T": 1}' ]
   # The pulse stream stops at M2 too.
   [ "$(gcode-pulse unused.ngc | sums)" = "1000 0 0" ]
+}
+
+# ------------------------------------------------------------ lathe: G33 threading, G7 diameters
+
+# close_to GOT WANT [TOLERANCE]: |GOT - WANT| <= TOLERANCE (default 1e-9), else a message.
+close_to() {
+  python3 -c '
+import sys
+got, want = float(sys.argv[1]), float(sys.argv[2])
+tolerance = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-9
+sys.exit(0 if abs(got - want) <= tolerance else print("%r, not %r" % (got, want)) or 1)' "$@"
+}
+
+# G33 Z-20 K2 at S300: K is 2 mm of the line per spindle revolution, so the
+# tool moves 2 * 300 = 600 mm/min = 10 mm/s and takes 20/600 min = 2 s. Z:
+# 20 mm * 400 steps/mm = 8000 steps, at 10 * 400 = 4000 steps/s in the
+# cruise. Accelerating at 500 mm/s^2 from rest and stopping adds 10/500 s.
+@test "G33 Z-20 K2 at S300: 8000 Z steps, 2 s of cruise at 4000 steps/s, plus the acceleration" {
+  printf 'G21 G90 G18\nS300 M3\nG33 Z-20 K2\nM2\n' > thread.ngc
+  run --separate-stderr gcode-pulse --summary $NO_ACCEL thread.ngc
+  assert_success
+  [ -z "$stderr" ]
+  [ "$(field pulses_z <<< "$output")" = 8000 ]
+  [ "$(field pulses_x <<< "$output")" = 0 ]
+  [ "$(field final_z <<< "$output")" = -20.0 ]
+  close_to "$(field duration_s <<< "$output")" 2
+  close_to "$(field path_mm <<< "$output")" 20
+  [ "$(field feed_capped_blocks <<< "$output")" = 0 ]
+  run --separate-stderr gcode-pulse --summary --accel 500 thread.ngc
+  assert_success
+  close_to "$(field duration_s <<< "$output")" 2.02
+  close_to "$(field peak_rate_z <<< "$output")" 4000 1e-6
+  # The pulse stream: 8000 steps of -1 in Z, the last when the tool is half
+  # a step (1.25 um) from the end, sqrt(2 * 0.00125 / 500) s before 2.02 s.
+  gcode-pulse --accel 500 thread.ngc > pulses.jsonl
+  [ "$(sums < pulses.jsonl)" = "0 0 -8000" ]
+  close_to "$(tail -n 1 pulses.jsonl | json-field t)" "$(python3 -c 'import math; print(2.02 - math.sqrt(2 * 0.00125 / 500))')"
+  # The feed rate plays no part: an F before the G33 changes nothing.
+  printf 'G21 G90 G18\nG1 F50\nS300 M3\nG33 Z-20 K2\nM2\n' > with_f.ngc
+  run --separate-stderr gcode-pulse --summary $NO_ACCEL with_f.ngc
+  close_to "$(field duration_s <<< "$output")" 2
+}
+
+# K follows the drive line (LinuxCNC): G33 X3 Z-4 K1 at S400 is a line of
+# 5 mm at 1 * 400 = 400 mm/min, 0.75 s; X 3 * 200 = 600 steps, Z 4 * 400 = 1600.
+@test "G33 on a taper: K is measured along the line, not along Z" {
+  printf 'S400 M3\nG33 X3 Z-4 K1\n' > taper.ngc
+  run --separate-stderr gcode-pulse --summary $NO_ACCEL taper.ngc
+  assert_success
+  close_to "$(field duration_s <<< "$output")" 0.75
+  [ "$(field pulses_x <<< "$output")" = 600 ]
+  [ "$(field pulses_z <<< "$output")" = 1600 ]
+  # In inches: K0.0625 (16 TPI) at S600 is 37.5 in/min = 15.875 mm/s; Z-1 in
+  # = 25.4 mm takes 25.4/15.875 = 1.6 s.
+  printf 'G20 S600 M3\nG33 Z-1 K0.0625\n' > inch.ngc
+  run --separate-stderr gcode-pulse --summary $NO_ACCEL inch.ngc
+  close_to "$(field duration_s <<< "$output")" 1.6
+}
+
+# With 500 mm/s^2 and 10 mm/s a move from rest to rest takes length/10 +
+# 10/500 s. G1 Z-0.5 at F600 then G33 Z-20.5 K2 at S300, both 10 mm/s:
+# joined as plain moves they take 20.5/10 + 0.02 = 2.07 s; a control waits
+# at rest for the spindle's index before a G33, so 0.07 + 2.02 = 2.09 s.
+@test "G33 starts from rest after a move that does not follow the spindle, not after a G33" {
+  printf 'S300 M3\nG1 Z-0.5 F600\nG33 Z-20.5 K2\n' > into.ngc
+  run --separate-stderr gcode-pulse --summary --accel 500 into.ngc
+  assert_success
+  close_to "$(field duration_s <<< "$output")" 2.09
+  printf 'S300 M3\nG1 Z-0.5 F600\nG1 Z-20.5\n' > plain.ngc
+  run --separate-stderr gcode-pulse --summary --accel 500 plain.ngc
+  close_to "$(field duration_s <<< "$output")" 2.07
+  printf 'S300 M3\nG33 Z-0.5 K2\nZ-20.5 K2\n' > locked.ngc
+  run --separate-stderr gcode-pulse --summary --accel 500 locked.ngc
+  close_to "$(field duration_s <<< "$output")" 2.07
+}
+
+@test "G33 without K, with K0, with F, without S or with the spindle stopped: FILE:LINE error, exit 1" {
+  bad_program 'S300 M3' 'G33 Z-20'
+  run --separate-stderr gcode-pulse bad.ngc
+  assert_cnc_error 4 'G33 without a K word'
+  assert_prefix_ran
+  bad_program 'S300 M3' 'G33 Z-20 K0'
+  run --separate-stderr gcode-pulse bad.ngc
+  assert_cnc_error 4 'G33 K0: .*must be positive'
+  assert_prefix_ran
+  bad_program 'S300 M3' 'G33 Z-20 K2 F100'
+  run --separate-stderr gcode-pulse bad.ngc
+  assert_cnc_error 4 'F100 with G33'
+  assert_prefix_ran
+  bad_program 'M3' 'G33 Z-20 K2'
+  run --separate-stderr gcode-pulse bad.ngc
+  assert_cnc_error 4 'G33 without a spindle speed'
+  assert_prefix_ran
+  bad_program 'S0 M3' 'G33 Z-20 K2'
+  run --separate-stderr gcode-pulse bad.ngc
+  assert_cnc_error 4 'G33 without a spindle speed'
+  bad_program 'S300' 'G33 Z-20 K2'
+  run --separate-stderr gcode-pulse bad.ngc
+  assert_cnc_error 4 'G33 with the spindle stopped'
+  assert_prefix_ran
+  # G33 is modal, K is not: the second pass needs its own K.
+  bad_program 'S300 M3' 'G33 Z-20 K2' 'G0 Z0' 'G33 Z-20'
+  run --separate-stderr gcode-pulse bad.ngc
+  assert_cnc_error 6 'G33 without a K word'
+  # --lenient does not make these pass: they are no unsupported words.
+  bad_program 'S300 M3' 'G33 Z-20'
+  run --separate-stderr gcode-pulse --lenient bad.ngc
+  assert_cnc_error 4 'G33 without a K word'
+}
+
+# K2 at S3000 is 6000 mm/min, above the default --max-feed (the rapid speed,
+# 5000 mm/min): a G33 cannot be slowed down, so it is an error, not a cap.
+@test "a G33 faster than the machine: FILE:LINE error; --max-feed high enough lets it run" {
+  bad_program 'S3000 M3' 'G33 Z-20 K2'
+  run --separate-stderr gcode-pulse bad.ngc
+  assert_cnc_error 4 'G33 needs 6000 mm/min .*\(5000 mm/min\)'
+  assert_prefix_ran
+  run --separate-stderr gcode-pulse --summary --max-feed 6000 bad.ngc
+  assert_success
+  [ "$(field feed_capped_blocks <<< "$output")" = 0 ]
+  run --separate-stderr gcode-pulse --max-feed 8000 --axis-max-feed 8000,8000,3000 bad.ngc
+  assert_cnc_error 4 'G33 needs 6000 mm/min .*\(3000 mm/min\)'
+}
+
+# G7: X20 is a diameter, the machine's X moves to radius 10 mm = 2000 steps
+# at 200 steps/mm; G1 at F600 (10 mm/s) takes 10/10 = 1 s, as the tool
+# moves 10 mm. G91 X4 in G7 moves 2 mm; G8 X20 goes to 20 mm.
+@test "G7: X words are diameters, the X axis moves half; G8 goes back to radius" {
+  printf 'G21 G90 G7\nG1 X20 F600\n' > diameter.ngc
+  run --separate-stderr gcode-pulse --summary $NO_ACCEL diameter.ngc
+  assert_success
+  [ "$(field pulses_x <<< "$output")" = 2000 ]
+  [ "$(field final_x <<< "$output")" = 10.0 ]
+  close_to "$(field duration_s <<< "$output")" 1
+  [ "$(gcode-pulse diameter.ngc | sums)" = "2000 0 0" ]
+  printf 'G21 G90 G7\nG0 X20\nG91 X4\nG90 G8 X20\n' > modes.ngc
+  run --separate-stderr gcode-pulse --summary modes.ngc
+  assert_success
+  [ "$(field final_x <<< "$output")" = 20.0 ]
+  # 10 mm out, 2 mm more, then 8 mm to 20: 20 mm, 4000 steps.
+  [ "$(field pulses_x <<< "$output")" = 4000 ]
+  printf 'G21 G90 G7\nG0 X20\nG91 X4\n' > half.ngc
+  [ "$(gcode-pulse half.ngc | sums)" = "2400 0 0" ]
+}
+
+# The fixture's comments hold the hand computation: 3800 X and 74800 Z
+# steps, path 92 + 111.708204 mm, duration without acceleration 9.2 s of
+# G33 plus 111.708204 mm of rapids at 5000 mm/min. With acceleration and
+# --junction-deviation 0 every move runs from rest to rest: each pass has
+# 23 * 400 = 9200 Z steps 0.25 ms apart in its cruise (10 mm/s), and from
+# its first step (the tool half a step, 1.25 um, in: sqrt(2 * 0.00125 /
+# 500) s after the start) to its last it takes 23/10 + 10/500 s less
+# twice that.
+@test "a multi-pass thread in G7 (fixture lathe/thread_m10x1.5.ngc): steps, path and time by hand" {
+  thread="$GCODE/lathe/thread_m10x1.5.ngc"
+  run --separate-stderr gcode-pulse --summary $NO_ACCEL "$thread"
+  assert_success
+  [ -z "$stderr" ]
+  [ "$(field pulses_x <<< "$output")" = 3800 ]
+  [ "$(field pulses_z <<< "$output")" = 74800 ]
+  [ "$(field final_x <<< "$output")" = 6.0 ]
+  [ "$(field final_z <<< "$output")" = 3.0 ]
+  close_to "$(field path_mm <<< "$output")" "$(python3 -c 'import math; print(92 + math.sqrt(45) + 13 + 92)')" 1e-6
+  close_to "$(field duration_s <<< "$output")" "$(python3 -c 'import math; print(9.2 + (math.sqrt(45) + 105) / (5000 / 60))')" 1e-6
+  gcode-pulse --junction-deviation 0 "$thread" > pulses.jsonl
+  run python3 - pulses.jsonl <<'PY'
+import json, math, sys
+times = [r["t"] for r in map(json.loads, open(sys.argv[1])) if r["dz"] == -1]  # Z- only in the passes
+passes = [[times[0]]]
+for t in times[1:]:
+    if t - passes[-1][-1] > 0.1:
+        passes.append([t])
+    else:
+        passes[-1].append(t)
+bad = []
+if [len(p) for p in passes] != [9200] * 4:
+    bad.append("Z- steps per pass: %r" % [len(p) for p in passes])
+first = math.sqrt(2 * (0.5 / 400) / 500)
+for i, p in enumerate(passes):
+    gaps = sorted(b - a for a, b in zip(p, p[1:]))
+    if abs(gaps[len(gaps) // 2] - 1 / 4000) > 1e-12 or gaps[0] < 1 / 4000 - 1e-12:
+        bad.append("pass %d: median gap %r, shortest %r" % (i, gaps[len(gaps) // 2], gaps[0]))
+    if abs(p[-1] - p[0] - (2.32 - 2 * first)) > 1e-9:
+        bad.append("pass %d: %r s from first to last step" % (i, p[-1] - p[0]))
+print("\n".join(bad))
+sys.exit(1 if bad else 0)
+PY
+  [ "$status" -eq 0 ] || { echo "$output"; false; }
 }
 
 # ------------------------------------------------------------ units and distance modes

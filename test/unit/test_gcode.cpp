@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "io/error.hpp"
+#include "gcode_program.hpp"
 #include "motion/gcode.hpp"
 
 using namespace tk::motion;
@@ -15,30 +16,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// Runs a program (lines separated by '\n') through `interpreter`.
-std::vector<Motion> run(const std::string& program, GcodeInterpreter& interpreter) {
-  std::vector<Motion> motions;
-  std::istringstream in(program);
-  std::string text;
-  for (std::size_t line = 1; std::getline(in, text); ++line) interpreter.execute(lex_gcode_line(text), line, motions);
-  return motions;
-}
+using gcode_test::error_of;
+using gcode_test::run;
 
-std::vector<Motion> run(const std::string& program) {
-  GcodeInterpreter interpreter;
-  return run(program, interpreter);
-}
-
-/// The error message a program (or one lexed line) gives, "" for none.
-std::string error_of(const std::string& program, InterpreterOptions options = {}) {
-  try {
-    GcodeInterpreter interpreter(options);
-    run(program, interpreter);
-  } catch (const tk::Error& error) {
-    return error.what();
-  }
-  return {};
-}
 
 #define EXPECT_ERROR(program, text)                                                          \
   do {                                                                                       \
@@ -332,7 +312,7 @@ TEST(GcodeArc, EndRadiusTolerance) {
 TEST(GcodeInterpreter, UnsupportedWords) {
   EXPECT_ERROR("G41 D1", "G41 (cutter radius compensation) is not supported");
   EXPECT_ERROR("G42.1 D1", "G42.1 (cutter radius compensation) is not supported");
-  EXPECT_ERROR("G33 Z-1 K1", "G33 (spindle-synchronised motion) is not supported");
+  EXPECT_ERROR("G33.1 Z-1 K1", "G33.1 (rigid tapping) is not supported");  // G33 and G7: test_gcode_threading.cpp
   EXPECT_ERROR("G76 P1 Z-1", "G76 (threading cycle) is not supported");
   EXPECT_ERROR("G81 X1 Y1 Z-1 R1", "G81 (canned cycle) is not supported");
   EXPECT_ERROR("G73 X1 Z-1 R1 Q1", "G73 (canned cycle) is not supported");
@@ -342,7 +322,7 @@ TEST(GcodeInterpreter, UnsupportedWords) {
   EXPECT_ERROR("G92 X0", "G92 (coordinate system offset) is not supported");
   EXPECT_ERROR("G10 L2 P1 X0", "G10 (setting offsets and tool data) is not supported");
   EXPECT_ERROR("G5 X1 I1 J1 P1 Q1", "G5 (cubic spline) is not supported");
-  EXPECT_ERROR("G7", "G7 (lathe diameter mode) is not supported");
+  EXPECT_ERROR("G17.1", "G17.1 (UV plane) is not supported");
   EXPECT_ERROR("G95 F1", "G95 (feed per revolution) is not supported");
   EXPECT_ERROR("G1 X1 A1 F100", "axis word A1 is not supported (3 axes only: X, Y, Z)");
   EXPECT_ERROR("W2", "axis word W2 is not supported");
@@ -391,7 +371,7 @@ TEST(GcodeInterpreter, UnusedWordsAndProgramEnd) {
   const std::map<std::string, std::uint64_t> expected = {
       {"G40", 1}, {"G43", 1}, {"G49", 1}, {"G54", 1}, {"G61", 1}, {"G64", 1}, {"G97", 1}, {"G98", 1},
       {"H", 1},   {"M0", 1},  {"M1", 1},  {"M3", 2},  {"M6", 1},  {"M62", 1}, {"M63", 1}, {"M7", 1},
-      {"M8", 1},  {"M9", 1},  {"S", 1},   {"T", 1}};
+      {"M8", 1},  {"M9", 1},  {"T", 1}};  // S is not here: G33 follows it
   EXPECT_EQ(interpreter.unused_words(), expected);
   EXPECT_EQ(interpreter.blocks(), 15u);
   EXPECT_FALSE(GcodeInterpreter().program_ended());
