@@ -68,6 +68,19 @@ for r in map(json.loads, sys.stdin):
         r["policy"], 100 * r["in_tolerance_share"], r["corrections"], r["false_alarms"], arl0))'
 
 echo
+echo "== Karker, Ando & Sudhan Raj's thread calculator: M30x2-6g to the middle of its tolerance zone"
+echo "   and the threading passes (threadcalc(1)):"
+threadcalc M30x2-6g | python3 -c '
+import json, sys
+r = json.load(sys.stdin)
+print("   %s: d2 %.3f..%.3f, d %.3f..%.3f; Td2 %.4f, es %.4f; ap %.4f, chamfer %.4f x 45, %d passes" % (
+    r["thread"], r["d2_min"], r["d2_max"], r["d_min"], r["d_max"], r["Td2"], r["es"], r["ap"], r["chamfer"], r["passes"]))'
+threadcalc --gcode passes --length 40 M30x2-6g | gcode-pulse --summary | python3 -c '
+import json, sys
+r = json.load(sys.stdin)
+print("   its G33 program, 40 mm long, runs %.1f s on gcode-pulse" % r["duration_s"])'
+
+echo
 echo "== The main job, a search from scratch: sieve | mrtest | riesel finds and proves"
 echo "   twin primes k*2^3300-1, k*2^3300+1 of 1,000 digits (examples/search-twins.sh):"
 bash "$here/search-twins.sh"

@@ -17,8 +17,6 @@ setup() {
 }
 
 # py EXPRESSION-SCRIPT: plain python3 for arithmetic checks.
-py() { /usr/bin/python3 -c "$@"; }
-
 # loops FILE: "hole area length" per loop record.
 loops() {
   py '

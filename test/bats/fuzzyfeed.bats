@@ -14,8 +14,6 @@ setup() {
   FF="$FIXTURES/fuzzyfeed"
 }
 
-py() { /usr/bin/python3 -c "$@"; }
-
 # random_loads N SEED: N records {t, load, feed, id} with loads round 60 %,
 # bursts of overload and idle stretches.
 random_loads() {

@@ -12,8 +12,6 @@ setup() {
   SMC="$FIXTURES/smcsim"
 }
 
-py() { /usr/bin/python3 -c "$@"; }
-
 # figures "LABEL ARGS..." ...: one summary per argument (a label, then
 # smcsim's options), printed as one JSON object {label: summary, ...}.
 figures() {

@@ -12,19 +12,6 @@ setup() {
   cd "$BATS_TEST_TMPDIR"
 }
 
-py() { /usr/bin/python3 -c "$@"; }
-
-# check 'PYTHON ASSERTIONS' < records: rows = the JSON Lines records as dicts,
-# near(x, want, tol) is |x - want| <= tol; prints ok.
-check() {
-  py 'import json, math, sys
-rows = [json.loads(l) for l in sys.stdin if l.strip()]
-def near(x, want, tol):
-    return x is not None and abs(x - want) <= tol
-exec(sys.argv[1])
-print("ok")' "$1"
-}
-
 # The four sizes of the hand-worked example.
 four() { printf '%s\n' 10.000 10.002 10.001 10.003; }
 

@@ -26,8 +26,6 @@ setup() {
   ORACLE="$TOOLKIT_ROOT/test/oracle"
 }
 
-py() { /usr/bin/python3 -c "$@"; }
-
 # regression FILE OPTIONS...: subtune with OPTIONS on FILE, its output through
 # subtune_regression.py with the same options; fails on any mismatch.
 regression() {

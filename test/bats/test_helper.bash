@@ -34,3 +34,17 @@ wait_for_handler() {
     sleep 0.05
   done
 }
+
+# py 'PYTHON' [ARGS...]: Debian's Python, which has NumPy and SciPy.
+py() { /usr/bin/python3 -c "$@"; }
+
+# check 'PYTHON ASSERTIONS' < records: rows = the JSON Lines records as dicts,
+# near(x, want, tol) is |x - want| <= tol; prints ok.
+check() {
+  py 'import json, math, sys
+rows = [json.loads(l) for l in sys.stdin if l.strip()]
+def near(x, want, tol):
+    return x is not None and abs(x - want) <= tol
+exec(sys.argv[1])
+print("ok")' "$1"
+}

@@ -13,8 +13,6 @@ setup() {
   FLL="$FIXTURES/fll"
 }
 
-py() { /usr/bin/python3 -c "$@"; }
-
 # random_triples N SEED: CSV left,mid,right of N random 10-bit readings.
 random_triples() {
   py "

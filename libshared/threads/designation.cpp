@@ -1,0 +1,183 @@
+#include "threads/designation.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <charconv>
+#include <vector>
+
+#include "io/error.hpp"
+#include "threads/iso261.hpp"
+
+namespace tk::threads {
+namespace {
+
+// Beyond these the input is a typing or unit mistake: ISO 261 ends at 300 mm
+// and ISO 965-1's tables at 355 mm.
+constexpr double max_major_mm = 1000;
+constexpr double max_pitch_mm = 50;
+
+/// Spaces out, the multiplication sign and '*' as 'x', and the decimal comma
+/// (M1,6) as a point, so the grammar below sees one spelling.
+std::string normalised(std::string_view text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\xC3' && i + 1 < text.size() && text[i + 1] == '\x97') {  // U+00D7 in UTF-8
+      out += 'x';
+      ++i;
+    } else if (c == '*') {
+      out += 'x';
+    } else if (c == ',') {
+      out += '.';
+    } else if (!std::isspace(static_cast<unsigned char>(c))) {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string printable(std::string_view text) {
+  std::string out;
+  for (char c : text) out += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  return out;
+}
+
+/// The longest number at the start of `rest` (digits and one point).
+double take_number(std::string_view& rest, std::string_view what, std::string_view text) {
+  std::size_t n = 0;
+  while (n < rest.size() && (std::isdigit(static_cast<unsigned char>(rest[n])) || rest[n] == '.')) ++n;
+  double value = 0;
+  const auto [end, ec] = std::from_chars(rest.data(), rest.data() + n, value);
+  if (n == 0 || ec != std::errc() || end != rest.data() + n)
+    throw Error(fmt::format("designation '{}': no {} where one was expected", printable(text), what));
+  rest.remove_prefix(n);
+  return value;
+}
+
+bool is_external_letter(char c) { return c == 'e' || c == 'f' || c == 'g' || c == 'h'; }
+bool is_internal_letter(char c) { return c == 'G' || c == 'H'; }
+
+ToleranceZone parse_zone(std::string_view part, std::string_view text) {
+  const int grade = part[0] - '0';
+  const char position = part[1];
+  if (!is_external_letter(position) && !is_internal_letter(position))
+    throw Error(fmt::format("designation '{}': '{}' is not a tolerance position of ISO 965-1 (e f g h for external "
+                            "threads, G H for internal ones)",
+                            printable(text), printable(std::string_view(&part[1], 1))));
+  if (grade < 3 || grade > 9)
+    throw Error(fmt::format("designation '{}': grade {} is outside ISO 965-1's grades 3 to 9", printable(text), grade));
+  return {grade, position};
+}
+
+bool looks_like_class(std::string_view part) {
+  return part.size() >= 2 && std::isdigit(static_cast<unsigned char>(part[0])) &&
+         std::isalpha(static_cast<unsigned char>(part[1]));
+}
+
+ToleranceClass parse_class(std::string_view part, std::string_view text) {
+  if (!(part.size() == 2 || part.size() == 4) || !looks_like_class(part) ||
+      (part.size() == 4 && !looks_like_class(part.substr(2))))
+    throw Error(fmt::format("designation '{}': '{}' is not a tolerance class like 6g, 5g6g or 6H", printable(text),
+                            printable(part)));
+  ToleranceClass result;
+  result.pitch = parse_zone(part.substr(0, 2), text);
+  result.crest = part.size() == 4 ? parse_zone(part.substr(2), text) : result.pitch;
+  if (result.crest.position != result.pitch.position)
+    throw Error(fmt::format("designation '{}': the crest diameter's position '{}' differs from the pitch diameter's "
+                            "'{}' (ISO 965-1 gives one fundamental deviation per thread)",
+                            printable(text), result.crest.position, result.pitch.position));
+  return result;
+}
+
+void add_class(ThreadDesignation& out, const ToleranceClass& tolerance, std::string_view text) {
+  std::optional<ToleranceClass>& slot = tolerance.external() ? out.external : out.internal;
+  if (slot)
+    throw Error(fmt::format("designation '{}': two {} tolerance classes", printable(text),
+                            tolerance.external() ? "external" : "internal"));
+  slot = tolerance;
+}
+
+}  // namespace
+
+std::string ToleranceClass::text() const {
+  if (pitch == crest) return fmt::format("{}{}", pitch.grade, pitch.position);
+  return fmt::format("{}{}{}{}", pitch.grade, pitch.position, crest.grade, crest.position);
+}
+
+std::string ThreadDesignation::canonical() const {
+  std::string out = fmt::format("M{}x{}", major_mm, pitch_mm);
+  if (internal && external)
+    out += fmt::format("-{}/{}", internal->text(), external->text());
+  else if (internal || external)
+    out += fmt::format("-{}", (internal ? internal : external)->text());
+  if (engagement == Engagement::short_s) out += "-S";
+  if (engagement == Engagement::long_l) out += "-L";
+  if (left_hand) out += "-LH";
+  return out;
+}
+
+ThreadDesignation parse_designation(std::string_view original) {
+  const std::string text = normalised(original);
+  if (text.empty()) throw Error("empty designation");
+  std::string_view rest = text;
+  if (rest.front() != 'M' && rest.front() != 'm')
+    throw Error(fmt::format("designation '{}': an ISO metric thread starts with M (M30x2-6g)", printable(original)));
+  rest.remove_prefix(1);
+  ThreadDesignation out;
+  out.major_mm = take_number(rest, "diameter", original);
+  if (!(out.major_mm > 0 && out.major_mm <= max_major_mm))
+    throw Error(fmt::format("designation '{}': diameter {} mm is outside (0, {}]", printable(original), out.major_mm,
+                            max_major_mm));
+  if (!rest.empty() && (rest.front() == 'x' || rest.front() == 'X')) {
+    rest.remove_prefix(1);
+    if (rest.starts_with("Ph") || rest.starts_with("PH") || rest.starts_with("ph"))
+      throw Error(fmt::format("designation '{}': multi-start threads (Ph.. P..) are not supported", printable(original)));
+    out.pitch_mm = take_number(rest, "pitch", original);
+    out.pitch_given = true;
+    if (!(out.pitch_mm > 0 && out.pitch_mm <= max_pitch_mm))
+      throw Error(fmt::format("designation '{}': pitch {} mm is outside (0, {}]", printable(original), out.pitch_mm,
+                              max_pitch_mm));
+  } else {
+    const std::optional<Iso261Size> size = iso261_size(out.major_mm);
+    if (!size || size->coarse_pitch_mm <= 0)
+      throw Error(fmt::format("designation '{}': ISO 261 has no coarse pitch for M{}; write the pitch (M{}x1.5)",
+                              printable(original), out.major_mm, out.major_mm));
+    out.pitch_mm = size->coarse_pitch_mm;
+  }
+  if (rest.starts_with("LH")) {
+    out.left_hand = true;
+    rest.remove_prefix(2);
+  }
+  bool engagement_seen = false;
+  while (!rest.empty()) {
+    if (rest.front() != '-')
+      throw Error(fmt::format("designation '{}': unexpected '{}'", printable(original), printable(rest)));
+    rest.remove_prefix(1);
+    const std::string_view part = rest.substr(0, rest.find('-'));
+    rest.remove_prefix(part.size());
+    if (part == "LH" || part == "lh") {
+      if (out.left_hand) throw Error(fmt::format("designation '{}': LH twice", printable(original)));
+      out.left_hand = true;
+    } else if (part == "S" || part == "N" || part == "L") {
+      if (engagement_seen) throw Error(fmt::format("designation '{}': two lengths of engagement", printable(original)));
+      engagement_seen = true;
+      out.engagement = part == "S" ? Engagement::short_s : part == "L" ? Engagement::long_l : Engagement::normal_n;
+    } else if (const std::size_t slash = part.find('/'); slash != std::string_view::npos) {
+      const ToleranceClass first = parse_class(part.substr(0, slash), original);
+      const ToleranceClass second = parse_class(part.substr(slash + 1), original);
+      if (first.external() == second.external())
+        throw Error(fmt::format("designation '{}': a fit pairs an internal class with an external one (6H/6g)",
+                                printable(original)));
+      add_class(out, first, original);
+      add_class(out, second, original);
+    } else if (part.empty()) {
+      throw Error(fmt::format("designation '{}': a '-' with nothing after it", printable(original)));
+    } else {
+      add_class(out, parse_class(part, original), original);
+    }
+  }
+  return out;
+}
+
+}  // namespace tk::threads

@@ -1,0 +1,38 @@
+/// @file thread_gcode.hpp
+/// @brief Threading programs for a lathe (XZ plane, diameter mode G7): a
+/// LinuxCNC G76 cycle, or plain G33 passes for controls without a cycle.
+#pragma once
+
+#include <string>
+
+#include "threads/thread_turning.hpp"
+
+namespace tk::threads {
+
+enum class ProgramStyle { g76, passes };
+
+struct ProgramSettings {
+  std::string title;            ///< the designation, written in the header comment
+  double pitch_mm = 0;
+  double length_mm = 0;         ///< thread length, from the face at Z0 towards −Z
+  double rpm = 0;               ///< spindle speed S
+  double clearance_mm = 1;      ///< radial gap between the drive line and the blank (or bore)
+  double run_in_mm = 0;         ///< Z start ahead of the face; 0 takes 3 pitches
+  bool left_hand = false;       ///< cut from the thread's inner end out to the face
+};
+
+/// Throws tk::Error for a non-positive length or speed, a clearance that
+/// would put an internal drive line at or below the axis, and so on.
+void validate(const ProgramSettings& settings, const TurningPlan& plan);
+
+/// The whole program, from the modal set-up to M30, one block per line.
+/// g76: one G76 block with P (pitch), I (peak − drive line), J (first depth),
+/// K (ap), R2 (constant chip area), Q (the flank infeed angle), H (spring
+/// passes), all in diameter mode as LinuxCNC reads them under G7. J is
+/// K/√n, rounded up to 0.1 µm, so the cycle makes the plan's n passes.
+/// passes: per pass a rapid to the start (shifted along the flank for
+/// flank infeed), a rapid in to the pass's diameter, G33 to the end, a rapid
+/// out; then the spring passes.
+std::string thread_program(ProgramStyle style, const TurningPlan& plan, const ProgramSettings& settings);
+
+}  // namespace tk::threads

@@ -1,0 +1,210 @@
+#!/usr/bin/env bats
+# Command-line behaviour of threadcalc: designations as arguments and as
+# records (JSON Lines, CSV order lists, bare lines), the errors, the usage
+# errors, and the threading programs run through gcode-pulse. The limits are
+# checked against ISO 965-2's published tables in threadcalc_oracle.bats.
+
+bats_require_minimum_version 1.5.0
+
+setup() {
+  load test_helper
+  cd "$BATS_TEST_TMPDIR"
+}
+
+@test "--help and --version" {
+  run threadcalc --help
+  assert_success
+  for option in --input --field --kind --decimals --passes --min-last-pass --spring-passes --infeed --flank-angle \
+    --stock --chamfer-margin --gcode --length --rpm --vc --max-rpm --clearance --run-in --csv; do
+    assert_output --partial -- "$option"
+  done
+  run threadcalc --version
+  assert_success
+  assert_output --regexp "^threadcalc \(toolkit\) [0-9]+\.[0-9]+"
+}
+
+@test "the issue's published values: M30x2-6g, M30x2-6H, M6x1-6g, M10x1.5-6g" {
+  run -0 bash -c 'threadcalc --decimals 6 M30x2-6g M30x2-6H M6x1-6g M10x1.5-6g > out.jsonl'
+  run -0 check '
+e, i, m6, m10 = rows
+# The tables print 3 decimals: within half a micrometre.
+t = 5e-4
+assert near(e["d2_max"], 28.663, t) and near(e["d2_min"], 28.493, t), e
+assert near(e["d_max"], 29.962, t) and near(e["d_min"], 29.682, t), e
+assert near(i["D2_min"], 28.701, t) and near(i["D2_max"], 28.925, t), i
+assert near(i["D1_min"], 27.835, t) and near(i["D1_max"], 28.210, t), i
+assert near(m6["d2_max"], 5.324, t) and near(m6["d2_min"], 5.212, t) and near(m6["d_max"], 5.974, t) and near(m6["d_min"], 5.794, t)
+assert near(m10["d2_max"], 8.994, t) and near(m10["d2_min"], 8.862, t) and near(m10["d_max"], 9.968, t) and near(m10["d_min"], 9.732, t)
+assert e["Td2"] == 0.17 and e["es"] == -0.038, e
+assert "D2_min" not in e and "d2_max" not in i
+assert e["kind"] == "external" and i["kind"] == "internal"
+assert e["pitch_series"] == "fine" and m6["pitch_series"] == "coarse"
+' < out.jsonl
+}
+
+@test "the seed's M30x2 machining figures: ap 1.2883, chamfer 1.5383, 8 passes" {
+  run -0 bash -c 'threadcalc M30x2-6g > out.jsonl'
+  run -0 check '
+r = rows[0]
+# The seed rounds h3 to 0.6134 P; ISO 68-1 gives 0.613435 P: 0.07 um apart.
+assert near(r["ap"], 1.2883, 1e-4) and near(r["chamfer"], 1.5383, 1e-4) and r["passes"] == 8, r
+depths = [float(x) for x in r["pass_depths"].split()]
+# Sandvik: cumulative depth after pass x of n is ap sqrt(phi/(n-1)), phi 0.3 then x-1.
+want = [r["ap"] * math.sqrt((0.3 if x == 1 else x - 1) / 7) for x in range(1, 9)]
+assert all(abs(a - b) < 2e-4 for a, b in zip(depths, want)), (depths, want)
+' < out.jsonl
+}
+
+@test "no class: both members in ISO 965-1's medium class; M1 takes 6h/5H" {
+  run -0 bash -c 'threadcalc M10 M1 > out.jsonl'
+  run -0 check '
+assert [r["class"] for r in rows] == ["6g", "6H", "6h", "5H"], rows
+assert rows[0]["P"] == 1.5 and rows[2]["P"] == 0.25
+assert rows[2]["es"] == 0
+' < out.jsonl
+  run -0 bash -c 'threadcalc --kind internal M10 | json-field class'
+  assert_output "6H"
+  run -1 threadcalc --kind internal M10-6g
+  assert_output --partial "argument 1: M10x1.5-6g is an external thread's designation"
+}
+
+@test "a fit, split classes, left hand, spaces, the multiplication sign" {
+  run -0 bash -c 'threadcalc "M10x1.5-6H/6g" "M30x2-5g6g" "M20 × 1.5 - 6H - LH" > out.jsonl'
+  run -0 check '
+fit_i, fit_e, split, lh = rows[0], rows[1], rows[2], rows[3]
+assert fit_e["kind"] == "external" and fit_i["kind"] == "internal" or fit_e["kind"] == "internal"
+assert {fit_i["class"], fit_e["class"]} == {"6H", "6g"}
+assert split["class"] == "5g6g" and split["Td"] == 0.28
+assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] == "internal"
+' < out.jsonl
+}
+
+@test "a customer's CSV order list goes through in one command, its columns kept" {
+  printf 'order,qty,designation\n1001,50,M8-6g\n1002,20,"M10x1,25-6H"\n1003,5,M30x2-6g\n' > orders.csv
+  run -0 threadcalc --csv -i orders.csv
+  assert_line --index 0 --regexp '^order,qty,designation,thread,kind,class,'
+  assert_line --index 1 --regexp '^1001,50,M8-6g,M8x1.25-6g,external,6g,'
+  assert_line --index 2 --regexp '^1002,20,"M10x1,25-6H",M10x1.25-6H,internal,6H,'
+  [ "${#lines[@]}" -eq 4 ]
+  run -0 bash -c 'threadcalc < orders.csv | json-field order'
+  assert_output $'1001\n1002\n1003'
+}
+
+@test "a bare list of designations and JSON Lines with another field name" {
+  printf 'M6\n\n# a comment\nM8x1-6H\n' | threadcalc > out.jsonl
+  run -0 json-field thread < out.jsonl
+  assert_output $'M6x1\nM6x1\nM8x1-6H'
+  printf '{"part":"A","thread":"M12-6g"}\n' | threadcalc --field thread > out.jsonl
+  run -0 check 'assert rows[0]["part"] == "A" and rows[0]["P"] == 1.75 and rows[0]["thread"] == "M12x1.75-6g", rows' < out.jsonl
+}
+
+@test "the issue's bad designations: one-line errors with the place, exit 1" {
+  for bad in M0 Mx2 M30x0 M30x2-6q M30x2-3g; do
+    run -1 threadcalc "$bad"
+    [ "${#lines[@]}" -eq 1 ]
+    assert_output --regexp "^threadcalc: argument 1: "
+  done
+  run -1 threadcalc M30x2-3g
+  assert_output --partial "no major diameter tolerance Td for 3g (d has grades 4, 6 and 8)"
+  run -1 threadcalc M30x2-6q
+  assert_output --partial "'q' is not a tolerance position"
+  run -1 threadcalc M6 M0
+  assert_line --index 0 --regexp '^\{"designation":"M6"'
+  assert_line --index 2 "threadcalc: argument 2: designation 'M0': diameter 0 mm is outside (0, 1000]"
+}
+
+@test "bad records: the file and line, records before kept" {
+  printf 'designation\nM6\nM8\nM30x2-6q\nM10\n' > orders.csv
+  run -1 threadcalc -i orders.csv
+  [ "$(grep -c '^{' <<< "$output")" -eq 4 ]
+  assert_output --partial "threadcalc: orders.csv:4: designation 'M30x2-6q'"
+  printf 'part\nA\n' > nofield.csv
+  run -1 threadcalc -i nofield.csv
+  assert_output "threadcalc: nofield.csv:2: no 'designation' field with a designation"
+  printf '{"designation": 30}\n' > number.jsonl
+  run -1 threadcalc -i number.jsonl
+  assert_output --partial "number.jsonl:1: no 'designation' field"
+  printf '\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR\x00\xff\n' > image.png  # a PNG's first bytes
+  run -1 threadcalc -i image.png
+  assert_output --regexp '^threadcalc: image.png:[0-9]+: '
+  [ "${#lines[@]}" -eq 1 ]
+  printf 'designation\nM6\n\x00\xff\xfeM\x01\n' > binary.csv
+  run -1 threadcalc -i binary.csv
+  assert_line --index 0 --partial '"thread":"M6x1"'
+  assert_output --regexp 'threadcalc: binary.csv:3: '
+  : > empty.csv
+  run -0 threadcalc -i empty.csv
+  assert_output ""
+  run -1 threadcalc M1e999
+  run -1 threadcalc M99999999999999999999
+  assert_output --partial "outside (0, 1000]"
+  run -1 threadcalc M30xnan
+  run -1 threadcalc M30x2-6g-6g
+  assert_output --partial "two external tolerance classes"
+}
+
+@test "a non-standard pitch and a size outside the tables are warned about, and computed" {
+  run -0 --separate-stderr threadcalc M30x2.2-6g
+  [[ "$stderr" == *"ISO 261 lists no 2.2 mm pitch for M30"* ]]
+  [[ "$stderr" == *"Td2 is not in ISO 965-1's tables; computed by"* ]]
+  run -0 check 'assert rows[0]["pitch_series"] == "non-standard" and rows[0]["computed"] == "es Td Td2", rows' <<< "$output"
+  run -0 --separate-stderr threadcalc -q M30x2.2-6g
+  [ -z "$stderr" ]
+}
+
+@test "usage errors exit 2" {
+  run -2 threadcalc --kind sideways M10
+  run -2 threadcalc --passes 1 M10
+  run -2 threadcalc --flank-angle 20 M10
+  run -2 threadcalc --length 20 M10
+  run -2 threadcalc --gcode g76 M10-6g
+  assert_output --partial "--gcode needs the thread's --length"
+  run -2 threadcalc --gcode g76 --length 20 M10-6g M12-6g
+  run -2 threadcalc --gcode g76 --length 20 M10x1.5-6H/6g
+  run -2 threadcalc --gcode g77 --length 20 M10
+  run -2 threadcalc -i x.csv M10
+  run -2 threadcalc --length -1 --gcode g76 M10
+  run -2 threadcalc --decimals 12 M10
+}
+
+@test "--gcode g76 writes LinuxCNC's cycle with the plan's words" {
+  run -0 threadcalc --gcode g76 --length 40 --rpm 400 M30x2-6g
+  assert_line --regexp '^G18 G21 G90 G94 G7'
+  assert_line "S400 M3"
+  assert_line "G0 X31.977 Z6"
+  # I = peak 30 - drive line 31.977; K = 2 ap (diameters in G7); J = K/sqrt(8) rounded up.
+  assert_line "G76 P2 Z-40 I-1.977 J0.9111 K2.5767 R2 Q0 H1 E0 L0"
+  assert_line "M30"
+  run -0 threadcalc --gcode g76 --length 12 --infeed flank --spring-passes 2 M16x1.5-6H
+  assert_line --regexp '^G76 P1.5 Z-12 I[0-9.]+ J[0-9.]+ K[0-9.]+ R2 Q27 H2 E0 L0$'
+}
+
+@test "--gcode passes runs through gcode-pulse: every pass at its diameter, the pitch and the spindle speed" {
+  threadcalc --gcode passes --length 40 --rpm 300 M30x2-6g > thread.ngc
+  [ "$(grep -c '^G33 Z-40 K2$' thread.ngc)" -eq 9 ]  # 8 passes and a spring pass
+  # Default machine: 5000 mm/min, 500 mm/s^2 (gcode-pulse(1)); each G33 runs
+  # 46 mm at K S = 600 mm/min = 10 mm/s: 4.6 s of cruise plus 10/500 s of
+  # ramps, so the nine passes take at least 9 x 4.62 s.
+  gcode-pulse --summary thread.ngc > summary.json
+  run -0 check '
+r = rows[0]
+assert r["duration_s"] > 9 * 4.62, r["duration_s"]
+# The tool ends where it started: the drive line X31.977 (a radius of 15.9885), Z6.
+assert near(r["final_x"], 31.977 / 2, 0.01) and near(r["final_z"], 6, 0.01), r
+' < summary.json
+  # Each pass's X (a diameter under G7) is 30 - 2 x its depth in the plan.
+  threadcalc --decimals 6 M30x2-6g > plan.jsonl
+  run -0 py '
+import json, re, sys
+plan = json.loads(open("plan.jsonl").readline())
+depths = [float(x) for x in plan["pass_depths"].split()] + [plan["ap"]]
+xs = [float(m) for m in re.findall(r"^G0 X([0-9.]+) \(", open("thread.ngc").read(), re.M)]
+assert len(xs) == len(depths) and all(abs(x - (30 - 2 * d)) < 2e-4 for x, d in zip(xs, depths)), (xs, depths)
+print("ok")'
+  # The default speed, 100 m/min at 30 mm, is 1061 rpm; at 6 mm it stops at --max-rpm.
+  run -0 threadcalc --gcode passes --length 10 M30x2-6g
+  assert_line "S1061 M3"
+  run -0 threadcalc --gcode passes --length 10 M6-6g
+  assert_line "S3000 M3"
+  run -0 bash -c 'threadcalc --gcode passes --length 10 M6-6g | gcode-pulse --summary > /dev/null'
+}

@@ -1,0 +1,305 @@
+// Designations, ISO 68-1 profiles, limits of size, turning data and the
+// threading programs. Expected values come from ISO 965-2's published
+// limits (quoted in the issue), ISO 68-1's formulas worked by hand, and
+// LinuxCNC's documented G76 pass rule, not from the code's own output.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+#include <sstream>
+
+#include "io/error.hpp"
+#include "threads/designation.hpp"
+#include "threads/thread_gcode.hpp"
+#include "threads/thread_limits.hpp"
+#include "threads/thread_report.hpp"
+#include "threads/thread_turning.hpp"
+
+using namespace tk::threads;
+
+TEST(ThreadDesignation, ReadsTheSpellingsUsersWrite) {
+  const ThreadDesignation a = parse_designation("M30x2-6g");
+  EXPECT_EQ(a.major_mm, 30);
+  EXPECT_EQ(a.pitch_mm, 2);
+  EXPECT_TRUE(a.pitch_given);
+  ASSERT_TRUE(a.external);
+  EXPECT_EQ(a.external->pitch, (ToleranceZone{6, 'g'}));
+  EXPECT_EQ(a.external->crest, (ToleranceZone{6, 'g'}));
+  EXPECT_FALSE(a.internal);
+
+  const ThreadDesignation coarse = parse_designation("M10");  // ISO 261: M10 coarse 1.5
+  EXPECT_EQ(coarse.pitch_mm, 1.5);
+  EXPECT_FALSE(coarse.pitch_given);
+  EXPECT_FALSE(coarse.external || coarse.internal);
+
+  const ThreadDesignation split = parse_designation("M30x2-5g6g");
+  EXPECT_EQ(split.external->pitch, (ToleranceZone{5, 'g'}));
+  EXPECT_EQ(split.external->crest, (ToleranceZone{6, 'g'}));
+  EXPECT_EQ(split.external->text(), "5g6g");
+
+  const ThreadDesignation fit = parse_designation("M10x1.5-6H/6g");
+  ASSERT_TRUE(fit.internal && fit.external);
+  EXPECT_EQ(fit.internal->text(), "6H");
+  EXPECT_EQ(fit.external->text(), "6g");
+  EXPECT_EQ(fit.canonical(), "M10x1.5-6H/6g");
+
+  const ThreadDesignation spaced = parse_designation(" M 16 \xC3\x97 1,5 - 6H - L - LH ");
+  EXPECT_EQ(spaced.major_mm, 16);
+  EXPECT_EQ(spaced.pitch_mm, 1.5);
+  EXPECT_TRUE(spaced.left_hand);
+  EXPECT_EQ(spaced.engagement, Engagement::long_l);
+  EXPECT_EQ(spaced.canonical(), "M16x1.5-6H-L-LH");
+
+  EXPECT_TRUE(parse_designation("M20x2LH").left_hand);
+  EXPECT_EQ(parse_designation("m1,6").pitch_mm, 0.35);  // ISO 261: M1.6 coarse 0.35
+  EXPECT_EQ(parse_designation("M8*1").pitch_mm, 1);
+}
+
+TEST(ThreadDesignation, RefusesWhatIsNotADesignation) {
+  for (const char* bad : {"M0", "Mx2", "M30x0", "M30x2-6q", "", "30x2", "M30x2-", "M30x2-6g-6g", "M30x2-6H/6H",
+                          "M30x2-2g", "M30x2-6g5h", "M16xPh3P1.5", "M30x2-6g-LH-LH", "M30x2-S-L", "M30x2 6g",
+                          "M1e3", "M30x2-6gg", "M30x2-66", "M-30", "M30x2-6g\x01", "M31"})
+    EXPECT_THROW(parse_designation(bad), tk::Error) << bad;
+}
+
+TEST(ThreadProfile, FollowsIso68) {
+  const BasicProfile p = basic_profile(30, 2);
+  EXPECT_NEAR(p.height, 0.866025 * 2, 1e-6);
+  EXPECT_NEAR(p.pitch_diameter, 30 - 0.649519 * 2, 1e-6);
+  EXPECT_NEAR(p.minor, 30 - 1.082532 * 2, 1e-6);
+  EXPECT_NEAR(p.root_minor, 30 - 1.226869 * 2, 1e-6);
+  EXPECT_NEAR(p.external_depth, 0.613435 * 2, 1e-6);
+  EXPECT_NEAR(p.internal_depth, 0.541266 * 2, 1e-6);
+  EXPECT_NEAR(p.root_radius, 0.144338 * 2, 1e-6);
+  EXPECT_THROW(basic_profile(1, 0.9), tk::Error);  // d3 below zero
+}
+
+struct PublishedExternal {
+  const char* designation;
+  double d_max, d_min, d2_max, d2_min;
+};
+
+// ISO 965-2 limits of size, as quoted in the issue.
+TEST(ThreadLimits, ExternalMatchIso965Part2) {
+  for (const PublishedExternal& row : {PublishedExternal{"M6x1-6g", 5.974, 5.794, 5.324, 5.212},
+                                       PublishedExternal{"M10x1.5-6g", 9.968, 9.732, 8.994, 8.862},
+                                       PublishedExternal{"M30x2-6g", 29.962, 29.682, 28.663, 28.493}}) {
+    const ThreadDesignation d = parse_designation(row.designation);
+    const ExternalLimits l = external_limits(basic_profile(d.major_mm, d.pitch_mm), *d.external);
+    EXPECT_NEAR(l.d_max, row.d_max, 5e-4) << row.designation;
+    EXPECT_NEAR(l.d_min, row.d_min, 5e-4) << row.designation;
+    EXPECT_NEAR(l.d2_max, row.d2_max, 5e-4) << row.designation;
+    EXPECT_NEAR(l.d2_min, row.d2_min, 5e-4) << row.designation;
+    EXPECT_TRUE(l.computed.empty());
+  }
+}
+
+TEST(ThreadLimits, InternalMatchIso965Part2) {
+  const ThreadDesignation d = parse_designation("M30x2-6H");
+  const InternalLimits l = internal_limits(basic_profile(30, 2), *d.internal);
+  EXPECT_NEAR(l.D2_min, 28.701, 5e-4);
+  EXPECT_NEAR(l.D2_max, 28.925, 5e-4);
+  EXPECT_NEAR(l.D1_min, 27.835, 5e-4);
+  EXPECT_NEAR(l.D1_max, 28.210, 5e-4);
+  EXPECT_EQ(l.D_min, 30);
+}
+
+TEST(ThreadLimits, RefusesGradesTheDiameterDoesNotHave) {
+  const BasicProfile p = basic_profile(30, 2);
+  EXPECT_THROW(external_limits(p, parse_designation("M30x2-3g").external.value()), tk::Error);  // d: 4, 6, 8
+  EXPECT_NO_THROW(external_limits(p, parse_designation("M30x2-3g6g").external.value()));      // d2 has 3
+  EXPECT_THROW(external_limits(p, parse_designation("M30x2-5g").external.value()), tk::Error);
+  EXPECT_THROW(internal_limits(p, parse_designation("M30x2-9H").internal.value()), tk::Error);  // D2: 4-8
+  // e is not defined below P 0.5 mm.
+  EXPECT_THROW(external_limits(basic_profile(2, 0.4), parse_designation("M2x0.4-6e").external.value()), tk::Error);
+}
+
+TEST(ThreadLimits, DefaultClassIsIsoMediumQuality) {
+  EXPECT_EQ(default_external_class(10).text(), "6g");
+  EXPECT_EQ(default_internal_class(10).text(), "6H");
+  EXPECT_EQ(default_external_class(1.4).text(), "6h");
+  EXPECT_EQ(default_internal_class(1.2).text(), "5H");
+}
+
+TEST(ThreadTurning, DegressiveDepthsAreSandviksFormula) {
+  const std::vector<double> depths = degressive_depths(1.2883, 8);
+  ASSERT_EQ(depths.size(), 8u);
+  EXPECT_NEAR(depths[0], 1.2883 * std::sqrt(0.3 / 7), 1e-12);
+  for (int x = 2; x <= 8; ++x) EXPECT_NEAR(depths[x - 1], 1.2883 * std::sqrt((x - 1) / 7.0), 1e-12);
+  EXPECT_EQ(depths.back(), 1.2883);
+  for (std::size_t i = 1; i < depths.size(); ++i) {
+    EXPECT_GT(depths[i], depths[i - 1]);
+    if (i >= 2) {
+      EXPECT_LT(depths[i] - depths[i - 1], depths[i - 1] - depths[i - 2]);  // decreasing infeed
+    }
+  }
+  EXPECT_THROW(degressive_depths(1, 1), tk::Error);
+}
+
+TEST(ThreadTurning, WidiaPassesByPitch) {
+  EXPECT_EQ(recommended_passes(0.5), 4);
+  EXPECT_EQ(recommended_passes(0.75), 4);
+  EXPECT_EQ(recommended_passes(1), 5);
+  EXPECT_EQ(recommended_passes(1.25), 6);
+  EXPECT_EQ(recommended_passes(2), 8);
+  EXPECT_EQ(recommended_passes(3), 9);
+  EXPECT_EQ(recommended_passes(4), 12);
+  EXPECT_EQ(recommended_passes(6), 14);
+  EXPECT_EQ(recommended_passes(8), 15);
+  EXPECT_GT(recommended_passes(12), 15);
+}
+
+// The seed's screen for M30x2-6g: Td2 0.1700, es 0.0380, ap 1.2883,
+// chamfer 1.5383 x 45°, 8 passes. Its ap takes h3 as 0.6134 P (rounded);
+// ISO 68-1's 17H/24 = 0.613435 P puts ours 0.07 µm deeper.
+TEST(ThreadTurning, ReproducesTheSeedsM30x2) {
+  const BasicProfile p = basic_profile(30, 2);
+  const ExternalLimits l = external_limits(p, parse_designation("M30x2-6g").external.value());
+  EXPECT_NEAR(l.Td2, 0.170, 1e-12);
+  EXPECT_NEAR(l.es, -0.038, 1e-12);
+  const TurningPlan plan = plan_external(p, l, {});
+  EXPECT_NEAR(plan.ap, 0.6134 * 2 + 0.038 / 2 + 0.170 / 4, 1e-4);
+  EXPECT_NEAR(plan.ap, 1.2883, 1e-4);
+  EXPECT_NEAR(plan.chamfer, 1.5383, 1e-4);
+  EXPECT_EQ(plan.passes, 8);
+  // The insert's root at ap under d gives d2 in the middle of its zone: the
+  // basic profile has d2 at h3 − 3H/8 over the root.
+  EXPECT_NEAR((plan.root_diameter + 2 * p.external_depth) - (p.major - p.pitch_diameter), l.d2_mid(), 1e-12);
+  EXPECT_TRUE(plan.crest_in_zone);
+  EXPECT_GT(plan.blank_diameter, plan.crest_diameter);
+}
+
+TEST(ThreadTurning, InternalRootPutsD2MidZone) {
+  const BasicProfile p = basic_profile(30, 2);
+  const InternalLimits l = internal_limits(p, parse_designation("M30x2-6H").internal.value());
+  const TurningPlan plan = plan_internal(p, l, {});
+  // From the peak (D1) the insert goes H1 to D; D2 lies 3H/8 inside D.
+  EXPECT_NEAR(plan.root_diameter - 2 * 3 * p.height / 8, l.D2_mid(), 1e-12);
+  EXPECT_NEAR(plan.crest_diameter, l.D2_mid() - p.height / 2, 1e-12);
+  EXPECT_TRUE(plan.crest_in_zone);
+  EXPECT_LT(plan.blank_diameter, plan.crest_diameter);
+}
+
+TEST(ThreadTurning, FewerPassesWhenTheLastWouldRub) {
+  const BasicProfile p = basic_profile(1, 0.25);
+  const ExternalLimits l = external_limits(p, default_external_class(1));
+  const TurningPlan plan = plan_external(p, l, {});
+  ASSERT_GE(plan.passes, 2);
+  const std::vector<double>& d = plan.depths;
+  if (plan.passes > 2) {
+    EXPECT_GE(d.back() - d[d.size() - 2], 0.05);
+  }
+  TurningSettings fixed;
+  fixed.passes = 6;
+  EXPECT_EQ(plan_external(p, l, fixed).passes, 6);
+  TurningSettings bad;
+  bad.flank_angle_deg = 31;
+  EXPECT_THROW(plan_external(p, l, bad), tk::Error);
+}
+
+namespace {
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+double word(const std::string& line, char letter) {
+  const std::regex pattern(std::string("(^| )") + letter + "(-?[0-9.]+)");
+  std::smatch m;
+  if (!std::regex_search(line, m, pattern)) return NAN;
+  return std::stod(m[2]);
+}
+
+TurningPlan m30_plan(const TurningSettings& settings = {}) {
+  const BasicProfile p = basic_profile(30, 2);
+  return plan_external(p, external_limits(p, parse_designation("M30x2-6g").external.value()), settings);
+}
+
+ProgramSettings m30_program() {
+  ProgramSettings s;
+  s.title = "M30x2-6g";
+  s.pitch_mm = 2;
+  s.length_mm = 40;
+  s.rpm = 500;
+  return s;
+}
+
+}  // namespace
+
+// LinuxCNC's G76 cuts pass n at J·n^(1/R) beyond the peak while that is
+// under K, then at K: with R2 and J = K/√n, n passes in all.
+TEST(ThreadProgram, G76MakesThePlansPassCount) {
+  const TurningPlan plan = m30_plan();
+  const std::string program = thread_program(ProgramStyle::g76, plan, m30_program());
+  std::string g76;
+  for (const std::string& line : lines_of(program))
+    if (line.rfind("G76", 0) == 0) g76 = line;
+  ASSERT_FALSE(g76.empty()) << program;
+  const double j = word(g76, 'J'), k = word(g76, 'K'), r = word(g76, 'R');
+  EXPECT_NEAR(k, 2 * plan.ap, 1e-4);  // G7: diameters
+  EXPECT_EQ(word(g76, 'P'), 2);
+  EXPECT_EQ(word(g76, 'Z'), -40);
+  EXPECT_EQ(word(g76, 'H'), 1);
+  int passes = 0;
+  for (int n = 1; j * std::pow(n, 1 / r) < k; ++n) ++passes;
+  EXPECT_EQ(passes + 1, plan.passes);
+  // I: from the drive line (the X of the G0 before) to the peak, negative outside.
+  double drive_x = NAN;
+  for (const std::string& line : lines_of(program))
+    if (line.rfind("G0 X", 0) == 0) drive_x = word(line, 'X');
+  EXPECT_NEAR(drive_x + word(g76, 'I'), 30, 1e-4);
+  EXPECT_LT(word(g76, 'I'), 0);
+}
+
+TEST(ThreadProgram, PassesCutEachDepthThenSpringPasses) {
+  TurningSettings flank;
+  flank.infeed = Infeed::flank;
+  flank.flank_angle_deg = 27;
+  const TurningPlan plan = m30_plan(flank);
+  const std::string program = thread_program(ProgramStyle::passes, plan, m30_program());
+  std::vector<double> cut_x, start_z;
+  double last_x = NAN, last_z = NAN;
+  for (const std::string& line : lines_of(program)) {
+    if (line.rfind("G0", 0) == 0) {
+      if (!std::isnan(word(line, 'X'))) last_x = word(line, 'X');
+      if (!std::isnan(word(line, 'Z'))) last_z = word(line, 'Z');
+    }
+    if (line.rfind("G33", 0) == 0) {
+      EXPECT_EQ(word(line, 'K'), 2);
+      cut_x.push_back(last_x);
+      start_z.push_back(last_z);
+    }
+  }
+  ASSERT_EQ(cut_x.size(), plan.depths.size() + 1u);  // + one spring pass
+  for (std::size_t i = 0; i < plan.depths.size(); ++i) {
+    EXPECT_NEAR(cut_x[i], 30 - 2 * plan.depths[i], 1e-4);
+    // The start slides along the cut by depth · tan 27° so one flank stays put.
+    EXPECT_NEAR(start_z[i], 6 - plan.depths[i] * std::tan(27 * M_PI / 180), 1e-4);
+  }
+  EXPECT_NEAR(cut_x.back(), 30 - 2 * plan.ap, 1e-4);
+  EXPECT_NE(program.find("M30"), std::string::npos);
+}
+
+TEST(ThreadProgram, RefusesImpossibleSettings) {
+  const TurningPlan plan = m30_plan();
+  ProgramSettings s = m30_program();
+  s.length_mm = 0;
+  EXPECT_THROW(thread_program(ProgramStyle::g76, plan, s), tk::Error);
+  s = m30_program();
+  s.rpm = NAN;
+  EXPECT_THROW(thread_program(ProgramStyle::passes, plan, s), tk::Error);
+}
+
+TEST(ThreadReport, MembersAndSeries) {
+  EXPECT_EQ(members_of(parse_designation("M10"), MemberChoice::from_class).size(), 2u);
+  EXPECT_EQ(members_of(parse_designation("M10-6g"), MemberChoice::from_class).size(), 1u);
+  EXPECT_THROW(members_of(parse_designation("M10-6g"), MemberChoice::internal), tk::Error);
+  EXPECT_EQ(members_of(parse_designation("M10-6g"), MemberChoice::both).size(), 2u);
+  EXPECT_EQ(pitch_series(30, 3.5), "coarse");
+  EXPECT_EQ(pitch_series(30, 2), "fine");
+  EXPECT_EQ(pitch_series(30, 2.2), "non-standard");
+  EXPECT_EQ(pitch_series(31, 2), "no ISO 261 size");
+}

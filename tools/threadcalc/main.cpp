@@ -1,0 +1,240 @@
+/// @file main.cpp
+/// @brief threadcalc: ISO metric threads from their designation to limits of
+/// size (ISO 68-1, ISO 261, ISO 965-1), thread-turning data for a
+/// full-profile insert, and the threading program (Karker, Andó & Sudhan Raj).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+#include "cli/option_checks.hpp"
+#include "cli/tool_app.hpp"
+#include "io/error.hpp"
+#include "io/record_reader.hpp"
+#include "io/record_writer.hpp"
+#include "threads/thread_gcode.hpp"
+#include "threads/thread_report.hpp"
+
+namespace {
+
+using namespace tk::threads;
+
+/// A bare list of designations, one per line ("M30x2-6g"): the first
+/// non-blank line starts with M and a digit. Blank lines and '#' comments
+/// are skipped; each line, commas included (M1,6), is one designation.
+class DesignationLines : public tk::io::LineDecoder {
+ public:
+  explicit DesignationLines(std::string field) : field_(std::move(field)) {}
+  bool decode(std::string_view line, const tk::Location&, tk::Record& out) override {
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.front()))) line.remove_prefix(1);
+    if (line.empty() || line.front() == '#') return false;
+    out = tk::Record::object();
+    out[field_] = std::string(line);
+    return true;
+  }
+
+ private:
+  std::string field_;
+};
+
+tk::io::NativeFormatProbe designation_lines_probe(const std::string& field) {
+  return [field](std::string_view first) -> std::unique_ptr<tk::io::LineDecoder> {
+    std::size_t i = first.find_first_not_of(" \t");
+    if (i == std::string_view::npos || (first[i] != 'M' && first[i] != 'm')) return nullptr;
+    i = first.find_first_not_of(" \t", i + 1);
+    if (i == std::string_view::npos || !std::isdigit(static_cast<unsigned char>(first[i]))) return nullptr;
+    return std::make_unique<DesignationLines>(field);
+  };
+}
+
+struct Options {
+  MemberChoice choice = MemberChoice::from_class;
+  TurningSettings turning;
+  int decimals = 4;
+  std::string field = "designation";
+};
+
+/// Runs `work`, giving its errors `where` (the library's carry no location).
+template <class Work>
+auto located(const tk::Location& where, const Work& work) {
+  try {
+    return work();
+  } catch (const tk::UsageError&) {
+    throw;
+  } catch (const tk::Error& e) {
+    if (!e.where().file.empty()) throw;
+    throw tk::Error(e.what(), where);
+  }
+}
+
+/// Parses and evaluates one designation; errors get `where`.
+std::vector<ThreadResult> evaluate_text(const std::string& text, const Options& o, const tk::Location& where) {
+  return located(where, [&] {
+    const ThreadDesignation designation = parse_designation(text);
+    std::vector<ThreadResult> results;
+    for (const ThreadMember& member : members_of(designation, o.choice))
+      results.push_back(evaluate(designation, member, o.turning));
+    return results;
+  });
+}
+
+void warn_all(const ThreadResult& result, const tk::Location& where, const tk::cli::ToolApp& tool) {
+  for (const std::string& warning : result.warnings)
+    tool.warn(tk::Error(warning, where).located_message());
+}
+
+void write_records(const std::vector<std::string>& designations, const std::vector<std::string>& inputs,
+                   const Options& o, const tk::cli::ToolApp& tool) {
+  tk::io::RecordWriter writer(tool.output_format());
+  std::vector<std::string> fields = report_fields();
+  fields.insert(fields.begin(), o.field);
+  writer.declare_fields(fields);
+  const auto emit = [&](const tk::Record& input, const std::string& text, const tk::Location& where) {
+    for (const ThreadResult& result : evaluate_text(text, o, where)) {
+      tk::Record record = input;
+      add_fields(record, result, o.decimals);
+      writer.write(record);
+      warn_all(result, where, tool);
+    }
+  };
+  if (!designations.empty()) {
+    for (std::size_t i = 0; i < designations.size(); ++i)
+      emit(tk::Record{{o.field, designations[i]}}, designations[i], {fmt::format("argument {}", i + 1), 0});
+    writer.flush();
+    return;
+  }
+  tk::io::RecordReader reader(inputs, designation_lines_probe(o.field));
+  tk::Record record;
+  while (reader.next(record)) {
+    const tk::Location where = reader.where();
+    const auto it = record.find(o.field);
+    if (it == record.end() || !it->is_string() || it->get<std::string>().empty())
+      throw tk::Error(fmt::format("no '{}' field with a designation", o.field), where);
+    emit(record, it->get<std::string>(), where);
+  }
+  writer.flush();
+}
+
+struct ProgramOptions {
+  std::string style;
+  double length = 0;
+  double rpm = 0;
+  double cutting_speed = 100;
+  double max_rpm = 3000;
+  double clearance = 1;
+  double run_in = 0;
+};
+
+void write_program(const std::vector<std::string>& designations, Options o, const ProgramOptions& p,
+                   const tk::cli::ToolApp& tool) {
+  if (designations.size() != 1) throw tk::UsageError("--gcode writes the program of one DESIGNATION");
+  if (!(p.length > 0)) throw tk::UsageError("--gcode needs the thread's --length");
+  const tk::Location where{"argument 1", 0};
+  if (o.choice == MemberChoice::from_class) {
+    const ThreadDesignation d = located(where, [&] { return parse_designation(designations[0]); });
+    if (d.external && d.internal) throw tk::UsageError("a fit has two members: choose one with --kind");
+    o.choice = d.internal ? MemberChoice::internal : MemberChoice::external;
+  }
+  if (o.choice == MemberChoice::both) throw tk::UsageError("--gcode writes one member: --kind external or internal");
+  const ThreadResult result = evaluate_text(designations[0], o, where).front();
+  warn_all(result, where, tool);
+  ProgramSettings settings;
+  settings.title = member_designation(result);
+  settings.pitch_mm = result.profile.pitch;
+  settings.length_mm = p.length;
+  // Constant speed from v_c at the thread's diameter, within the spindle's
+  // range, unless --rpm is given.
+  settings.rpm = p.rpm > 0 ? p.rpm
+                           : std::min(p.max_rpm, 1000 * p.cutting_speed / (std::numbers::pi * result.profile.major));
+  settings.clearance_mm = p.clearance;
+  settings.run_in_mm = p.run_in;
+  settings.left_hand = result.designation.left_hand;
+  const ProgramStyle style = p.style == "g76" ? ProgramStyle::g76 : ProgramStyle::passes;
+  std::cout << thread_program(style, result.plan, settings) << std::flush;
+  if (!std::cout) throw tk::Error("cannot write the program to standard output");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  tk::cli::ToolApp tool("threadcalc",
+                        "ISO metric threads (ISO 68-1, ISO 261, ISO 965-1): limits of size, the middle of each "
+                        "tolerance zone, thread-turning data for a full-profile insert, and the threading program "
+                        "(LinuxCNC G76 or plain G33 passes). Designations come as arguments or as records with a "
+                        "'designation' field (JSON Lines, CSV, or one per line).",
+                        "See threadcalc(1).");
+  using tk::cli::NumberDomain, tk::cli::number_check;
+  std::vector<std::string> designations, inputs;
+  Options o;
+  ProgramOptions program;
+  std::string kind = "auto", infeed = "radial";
+  CLI::App& app = tool.app();
+  app.add_option("designations", designations, "thread designations (M30x2-6g, M10, M10x1.5-6H/6g, M20x2-LH...)");
+  app.add_option("-i,--input", inputs, "read records from FILE ('-' standard input) instead of arguments; repeatable")
+      ->type_name("FILE")
+      ->allow_extra_args(false);
+  app.add_option("--field", o.field, "the field that holds the designation")->capture_default_str();
+  app.add_option("--kind", kind, "auto: as the class says, both for a fit or no class; or external, internal, both")
+      ->check(CLI::IsMember({"auto", "external", "internal", "both"}))
+      ->capture_default_str();
+  app.add_option("--decimals", o.decimals, "round millimetres to this many places")
+      ->check(tk::cli::count_check(0, 9))
+      ->capture_default_str();
+  const std::string turning_group = "Thread turning (full-profile insert)";
+  std::vector<CLI::Option*> turning_options{
+      app.add_option("--passes", o.turning.passes, "passes (default: the pitch's lower end in Widia's table)")
+          ->check(tk::cli::count_check(2, 100)),
+      app.add_option("--min-last-pass", o.turning.min_last_pass_mm, "the default passes keep the last one at least this deep, mm")
+          ->check(number_check(NumberDomain::non_negative))->capture_default_str(),
+      app.add_option("--spring-passes", o.turning.spring_passes, "passes repeated at full depth")
+          ->check(tk::cli::count_check(0, 10))->capture_default_str(),
+      app.add_option("--infeed", infeed, "radial, or flank (modified flank infeed)")
+          ->check(CLI::IsMember({"radial", "flank"}))->capture_default_str(),
+      app.add_option("--flank-angle", o.turning.flank_angle_deg, "flank infeed's angle from the radial, degrees")
+          ->check(CLI::Range(0.0, 30.0))->capture_default_str(),
+      app.add_option("--stock", o.turning.topping_stock_mm, "diametral stock the insert tops off the crest, mm")
+          ->check(CLI::Range(0.0, 5.0))->capture_default_str(),
+      app.add_option("--chamfer-margin", o.turning.chamfer_margin_mm, "the chamfer's reach below the root, mm")
+          ->check(CLI::Range(0.0, 10.0))->capture_default_str()};
+  for (CLI::Option* option : turning_options) option->group(turning_group);
+  const std::string program_group = "Threading program";
+  std::vector<CLI::Option*> program_options{
+      app.add_option("--length", program.length, "thread length from the face (Z0) towards -Z, mm")
+          ->check(number_check(NumberDomain::positive)),
+      app.add_option("--rpm", program.rpm, "spindle speed (default: from --vc at the nominal diameter)")
+          ->check(number_check(NumberDomain::positive)),
+      app.add_option("--vc", program.cutting_speed, "cutting speed, m/min")
+          ->check(number_check(NumberDomain::positive))->capture_default_str(),
+      app.add_option("--max-rpm", program.max_rpm, "the highest spindle speed --vc may give")
+          ->check(number_check(NumberDomain::positive))->capture_default_str(),
+      app.add_option("--clearance", program.clearance, "radial gap of the drive line from the blank, mm")
+          ->check(number_check(NumberDomain::positive))->capture_default_str(),
+      app.add_option("--run-in", program.run_in, "start this far ahead of the face, mm (default 3 P)")
+          ->check(number_check(NumberDomain::non_negative))};
+  CLI::Option* gcode = app.add_option("--gcode", program.style, "write the threading program instead of records: g76 or passes")
+                           ->check(CLI::IsMember({"g76", "passes"}));
+  program_options.push_back(gcode);
+  for (CLI::Option* option : program_options) option->group(program_group);
+
+  return tool.run(argc, argv, [&] {
+    o.choice = kind == "external" ? MemberChoice::external
+               : kind == "internal" ? MemberChoice::internal
+               : kind == "both"     ? MemberChoice::both
+                                    : MemberChoice::from_class;
+    o.turning.infeed = infeed == "flank" ? Infeed::flank : Infeed::radial;
+    if (o.turning.infeed != Infeed::flank && turning_options[4]->count() > 0)
+      throw tk::UsageError("--flank-angle goes with --infeed flank");
+    if (!designations.empty() && !inputs.empty()) throw tk::UsageError("give designations or --input, not both");
+    if (gcode->count() > 0) {
+      write_program(designations, o, program, tool);
+      return;
+    }
+    for (CLI::Option* option : program_options)
+      if (option->count() > 0) throw tk::UsageError(option->get_name() + " goes with --gcode");
+    write_records(designations, inputs, o, tool);
+  });
+}
