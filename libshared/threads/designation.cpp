@@ -16,30 +16,51 @@ namespace {
 // and ISO 965-1's tables at 355 mm.
 constexpr double max_major_mm = 1000;
 constexpr double max_pitch_mm = 50;
+// Below a micrometre neither is a thread (and the canonical spelling would
+// turn to exponents).
+constexpr double min_length_mm = 0.001;
 
-/// Spaces out, the multiplication sign and '*' as 'x', and the decimal comma
-/// (M1,6) as a point, so the grammar below sees one spelling.
+/// One spelling for the grammar below: the multiplication sign and '*' as
+/// 'x', dashes and the minus sign as '-', the decimal comma (M1,6) as a
+/// point. Spaces next to M, x, '-' or '/' go; a space between two other
+/// characters separates parts as '-' does ("M8x1.25 6g", "M20x1.5-6g LH").
 std::string normalised(std::string_view text) {
   std::string out;
+  bool space = false;
+  const auto is_joint = [](char c) { return c == 'x' || c == 'X' || c == '-' || c == '/' || c == 'M' || c == 'm'; };
+  const auto put = [&](char c) {
+    if (space && !out.empty() && !is_joint(out.back()) && !is_joint(c)) out += '-';
+    space = false;
+    out += c;
+  };
   for (std::size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '\xC3' && i + 1 < text.size() && text[i + 1] == '\x97') {  // U+00D7 in UTF-8
-      out += 'x';
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    const std::string_view rest = text.substr(i);
+    if (rest.starts_with("\xC3\x97")) {  // U+00D7 multiplication sign
+      put('x');
       ++i;
-    } else if (c == '*') {
-      out += 'x';
-    } else if (c == ',') {
-      out += '.';
-    } else if (!std::isspace(static_cast<unsigned char>(c))) {
-      out += c;
+    } else if (rest.starts_with("\xC2\xA0")) {  // U+00A0 no-break space
+      space = true;
+      ++i;
+    } else if (rest.starts_with("\xE2\x80") && rest.size() > 2 && rest[2] >= '\x90' && rest[2] <= '\x95') {
+      put('-');  // U+2010-2015 hyphens and dashes
+      i += 2;
+    } else if (rest.starts_with("\xE2\x88\x92")) {  // U+2212 minus sign
+      put('-');
+      i += 2;
+    } else if (std::isspace(c)) {
+      space = true;
+    } else {
+      put(c == '*' ? 'x' : c == ',' ? '.' : static_cast<char>(c));
     }
   }
   return out;
 }
 
+/// The designation as the user wrote it, for messages: control bytes as '?'.
 std::string printable(std::string_view text) {
   std::string out;
-  for (char c : text) out += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  for (char c : text) out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
   return out;
 }
 
@@ -126,18 +147,18 @@ ThreadDesignation parse_designation(std::string_view original) {
   rest.remove_prefix(1);
   ThreadDesignation out;
   out.major_mm = take_number(rest, "diameter", original);
-  if (!(out.major_mm > 0 && out.major_mm <= max_major_mm))
-    throw Error(fmt::format("designation '{}': diameter {} mm is outside (0, {}]", printable(original), out.major_mm,
-                            max_major_mm));
+  if (!(out.major_mm >= min_length_mm && out.major_mm <= max_major_mm))
+    throw Error(fmt::format("designation '{}': diameter {} mm is outside [{}, {}]", printable(original), out.major_mm,
+                            min_length_mm, max_major_mm));
   if (!rest.empty() && (rest.front() == 'x' || rest.front() == 'X')) {
     rest.remove_prefix(1);
     if (rest.starts_with("Ph") || rest.starts_with("PH") || rest.starts_with("ph"))
       throw Error(fmt::format("designation '{}': multi-start threads (Ph.. P..) are not supported", printable(original)));
     out.pitch_mm = take_number(rest, "pitch", original);
     out.pitch_given = true;
-    if (!(out.pitch_mm > 0 && out.pitch_mm <= max_pitch_mm))
-      throw Error(fmt::format("designation '{}': pitch {} mm is outside (0, {}]", printable(original), out.pitch_mm,
-                              max_pitch_mm));
+    if (!(out.pitch_mm >= min_length_mm && out.pitch_mm <= max_pitch_mm))
+      throw Error(fmt::format("designation '{}': pitch {} mm is outside [{}, {}]", printable(original), out.pitch_mm,
+                              min_length_mm, max_pitch_mm));
   } else {
     const std::optional<Iso261Size> size = iso261_size(out.major_mm);
     if (!size || size->coarse_pitch_mm <= 0)
@@ -159,10 +180,11 @@ ThreadDesignation parse_designation(std::string_view original) {
     if (part == "LH" || part == "lh") {
       if (out.left_hand) throw Error(fmt::format("designation '{}': LH twice", printable(original)));
       out.left_hand = true;
-    } else if (part == "S" || part == "N" || part == "L") {
+    } else if (part.size() == 1 && std::string_view("SNLsnl").find(part[0]) != std::string_view::npos) {
       if (engagement_seen) throw Error(fmt::format("designation '{}': two lengths of engagement", printable(original)));
       engagement_seen = true;
-      out.engagement = part == "S" ? Engagement::short_s : part == "L" ? Engagement::long_l : Engagement::normal_n;
+      const char group = static_cast<char>(std::toupper(static_cast<unsigned char>(part[0])));
+      out.engagement = group == 'S' ? Engagement::short_s : group == 'L' ? Engagement::long_l : Engagement::normal_n;
     } else if (const std::size_t slash = part.find('/'); slash != std::string_view::npos) {
       const ToleranceClass first = parse_class(part.substr(0, slash), original);
       const ToleranceClass second = parse_class(part.substr(slash + 1), original);
@@ -173,6 +195,10 @@ ThreadDesignation parse_designation(std::string_view original) {
       add_class(out, second, original);
     } else if (part.empty()) {
       throw Error(fmt::format("designation '{}': a '-' with nothing after it", printable(original)));
+    } else if (part.size() > 2 && part.ends_with("LH") && looks_like_class(part)) {  // "6gLH"
+      if (out.left_hand) throw Error(fmt::format("designation '{}': LH twice", printable(original)));
+      out.left_hand = true;
+      add_class(out, parse_class(part.substr(0, part.size() - 2), original), original);
     } else {
       add_class(out, parse_class(part, original), original);
     }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -19,25 +20,33 @@ std::string number(double value) {
   return text;
 }
 
-double round_up_to_tenth_micron(double value) { return std::ceil(value * 1e4 - 1e-6) / 1e4; }
+double round_up_to_tenth_micron(double value) { return std::ceil(value * 1e4) / 1e4; }
 
 struct Geometry {
   double drive_x;    ///< the drive line's diameter
+  double safe_z;     ///< ahead of the face: where the tool goes in and out
   double z_start;
   double z_end;
   double direction;  ///< −1 cutting towards the chuck, +1 away from it (left hand)
 };
 
+/// Radial gap of the drive line from the bore: the option, but at most a
+/// tenth of the bore so a small bore keeps room for the boring bar.
+double internal_clearance(const TurningPlan& plan, const ProgramSettings& s) {
+  return std::min(s.clearance_mm, plan.blank_diameter / 10);
+}
+
 Geometry geometry(const TurningPlan& plan, const ProgramSettings& s) {
   const double run_in = s.run_in_mm > 0 ? s.run_in_mm : 3 * s.pitch_mm;
-  const double clearance = 2 * s.clearance_mm;
   Geometry g;
-  g.drive_x = plan.external ? plan.blank_diameter + clearance : plan.blank_diameter - clearance;
+  g.drive_x = plan.external ? plan.blank_diameter + 2 * s.clearance_mm
+                            : plan.blank_diameter - 2 * internal_clearance(plan, s);
+  g.safe_z = run_in;
   // Right hand: from ahead of the face towards the chuck. Left hand (same
-  // spindle direction and insert): from the thread's inner end out past the
-  // face, which needs a groove to start in.
+  // spindle direction and insert): from run_in beyond the thread's inner
+  // end, in a groove, out past the face.
   g.direction = s.left_hand ? 1 : -1;
-  g.z_start = s.left_hand ? -s.length_mm : run_in;
+  g.z_start = s.left_hand ? -s.length_mm - run_in : run_in;
   g.z_end = s.left_hand ? run_in : -s.length_mm;
   return g;
 }
@@ -63,7 +72,7 @@ double pass_diameter(const TurningPlan& plan, double depth) {
 
 }  // namespace
 
-void validate(const ProgramSettings& s, const TurningPlan& plan) {
+void validate(const ProgramSettings& s) {
   require(std::isfinite(s.pitch_mm) && s.pitch_mm > 0, "the program needs a positive pitch");
   require(std::isfinite(s.length_mm) && s.length_mm > 0 && s.length_mm <= 10000,
           fmt::format("thread length {} mm is outside (0, 10000]", s.length_mm));
@@ -72,40 +81,47 @@ void validate(const ProgramSettings& s, const TurningPlan& plan) {
           fmt::format("clearance {} mm is outside (0, 100]", s.clearance_mm));
   require(std::isfinite(s.run_in_mm) && s.run_in_mm >= 0 && s.run_in_mm <= 1000,
           fmt::format("run-in {} mm is outside [0, 1000]", s.run_in_mm));
-  if (!plan.external)
-    require(plan.blank_diameter - 2 * s.clearance_mm > 0,
-            fmt::format("a clearance of {} mm puts the drive line inside a {} mm bore at or below the axis",
-                        s.clearance_mm, number(plan.blank_diameter)));
 }
 
 std::string thread_program(ProgramStyle style, const TurningPlan& plan, const ProgramSettings& s) {
-  validate(s, plan);
+  validate(s);
   const Geometry g = geometry(plan, s);
   const double tan_angle = std::tan(plan.infeed_angle_deg * std::numbers::pi / 180);
   std::string out = header(plan, s, style == ProgramStyle::g76 ? "G76" : "G33 passes");
-  out += fmt::format("G0 X{} Z{}\n", number(g.drive_x), number(g.z_start));
+  if (style == ProgramStyle::g76)
+    out += "(G76 cuts at ap*sqrt(i/n): the plan's count and final depth, not its light first pass)\n";
+  if (s.left_hand)
+    out += fmt::format("(left hand: starts {} mm beyond the thread's inner end, in a groove at least that wide)\n",
+                       number(g.safe_z));
+  // To the safe Z first, then onto the drive line, then along it: never a
+  // diagonal rapid through the face or into the bore.
+  out += fmt::format("G0 Z{}\n", number(g.safe_z));
+  out += fmt::format("G0 X{}\n", number(g.drive_x));
   if (style == ProgramStyle::g76) {
-    const double k = 2 * plan.ap;  // G7: I, J and K are diameters
+    if (g.z_start != g.safe_z) out += fmt::format("G0 Z{}\n", number(g.z_start));
+    // G7: I, J and K are diameters. J from K as printed, so J·√n reaches it.
+    const double k = std::stod(number(2 * plan.ap));
     const double j = round_up_to_tenth_micron(k / std::sqrt(static_cast<double>(plan.passes)));
     out += fmt::format("G76 P{} Z{} I{} J{} K{} R2 Q{} H{} E0 L0\n", number(s.pitch_mm), number(g.z_end),
                        number(plan.peak_diameter - g.drive_x), number(j), number(k), number(plan.infeed_angle_deg),
                        plan.spring_passes);
   } else {
     const auto cut = [&](double depth, const std::string& note) {
-      // Flank infeed: the start moves along the cut by depth·tan(angle), so
-      // the trailing flank stays on the last cut and only the leading edge cuts.
-      const double z = g.z_start + g.direction * depth * tan_angle;
-      out += fmt::format("G0 Z{}\n", number(z));
+      // Flank infeed: the pass moves along Z by depth·tan(angle), so the
+      // trailing flank stays on the last cut and only the leading edge cuts;
+      // the full-depth pass ends exactly at the thread's end, as G76's does.
+      const double shift = g.direction * (depth - plan.ap) * tan_angle;
+      out += fmt::format("G0 Z{}\n", number(g.z_start + shift));
       out += fmt::format("G0 X{} ({})\n", number(pass_diameter(plan, depth)), note);
-      out += fmt::format("G33 Z{} K{}\n", number(g.z_end + g.direction * depth * tan_angle), number(s.pitch_mm));
+      out += fmt::format("G33 Z{} K{}\n", number(g.z_end + shift), number(s.pitch_mm));
       out += fmt::format("G0 X{}\n", number(g.drive_x));
     };
     for (std::size_t i = 0; i < plan.depths.size(); ++i)
       cut(plan.depths[i], fmt::format("pass {}, depth {}", i + 1, number(plan.depths[i])));
     for (int i = 0; i < plan.spring_passes; ++i) cut(plan.ap, fmt::format("spring pass {}", i + 1));
   }
-  // Back along the drive line, clear of the thread (inside the bore when internal).
-  out += fmt::format("G0 Z{}\n", number(g.z_start));
+  // Back along the drive line to the safe Z, out of the bore when internal.
+  out += fmt::format("G0 Z{}\n", number(g.safe_z));
   out += "M5\nM30\n";
   return out;
 }

@@ -21,9 +21,10 @@ struct ProgramSettings {
   bool left_hand = false;       ///< cut from the thread's inner end out to the face
 };
 
-/// Throws tk::Error for a non-positive length or speed, a clearance that
-/// would put an internal drive line at or below the axis, and so on.
-void validate(const ProgramSettings& settings, const TurningPlan& plan);
+/// Throws tk::Error for a non-positive length or speed, a clearance outside
+/// (0, 100] mm, and so on. An internal drive line keeps at most a tenth of
+/// the bore's diameter from it on each side, whatever the clearance.
+void validate(const ProgramSettings& settings);
 
 /// The whole program, from the modal set-up to M30, one block per line.
 /// g76: one G76 block with P (pitch), I (peak − drive line), J (first depth),

@@ -106,14 +106,16 @@ InternalLimits internal_limits(const BasicProfile& p, const ToleranceClass& tole
   return l;
 }
 
-ToleranceClass default_external_class(double major_mm) {
-  const ToleranceZone zone{6, major_mm <= 1.4 ? 'h' : 'g'};
-  return {zone, zone};
+ToleranceClass default_external_class(double major_mm, Engagement engagement) {
+  if (major_mm <= 1.4) return {{6, 'h'}, {6, 'h'}};
+  const int pitch_grade = engagement == Engagement::short_s ? 5 : engagement == Engagement::long_l ? 7 : 6;
+  return {{pitch_grade, 'g'}, {6, 'g'}};
 }
 
-ToleranceClass default_internal_class(double major_mm) {
-  const ToleranceZone zone{major_mm <= 1.4 ? 5 : 6, 'H'};
-  return {zone, zone};
+ToleranceClass default_internal_class(double major_mm, Engagement engagement) {
+  if (major_mm <= 1.4) return {{5, 'H'}, {5, 'H'}};
+  const int grade = engagement == Engagement::short_s ? 5 : engagement == Engagement::long_l ? 7 : 6;
+  return {{grade, 'H'}, {grade, 'H'}};
 }
 
 }  // namespace tk::threads

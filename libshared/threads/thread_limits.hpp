@@ -65,9 +65,11 @@ ExternalLimits external_limits(const BasicProfile& profile, const ToleranceClass
 /// As external_limits; checks D2 min above D1 max.
 InternalLimits internal_limits(const BasicProfile& profile, const ToleranceClass& tolerance);
 
-/// ISO 965-1's medium tolerance class for general use: 6g and 6H, but 6h
-/// and 5H for diameters up to 1.4 mm.
-ToleranceClass default_external_class(double major_mm);
-ToleranceClass default_internal_class(double major_mm);
+/// ISO 965-1's medium tolerance quality, the class for general use: for
+/// the normal length of engagement 6g and 6H, for the short one 5g6g and
+/// 5H, for the long one 7g6g and 7H (the first choices of its table of
+/// recommended classes); 6h and 5H for diameters up to 1.4 mm.
+ToleranceClass default_external_class(double major_mm, Engagement engagement = Engagement::normal_n);
+ToleranceClass default_internal_class(double major_mm, Engagement engagement = Engagement::normal_n);
 
 }  // namespace tk::threads

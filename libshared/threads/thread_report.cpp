@@ -10,11 +10,11 @@
 namespace tk::threads {
 namespace {
 
-bool same_length(double a, double b) { return std::abs(a - b) < 1e-9; }
-
-ThreadMember member(bool external, const std::optional<ToleranceClass>& written, double major) {
+ThreadMember member(bool external, const std::optional<ToleranceClass>& written, const ThreadDesignation& d) {
   if (written) return {external, *written, true};
-  return {external, external ? default_external_class(major) : default_internal_class(major), false};
+  return {external,
+          external ? default_external_class(d.major_mm, d.engagement) : default_internal_class(d.major_mm, d.engagement),
+          false};
 }
 
 double rounded(double value, int decimals) {
@@ -46,30 +46,28 @@ std::vector<ThreadMember> members_of(const ThreadDesignation& d, MemberChoice ch
     case MemberChoice::external:
       if (d.internal && !d.external)
         throw Error(fmt::format("{} is an internal thread's designation, not an external one", name));
-      return {member(true, d.external, d.major_mm)};
+      return {member(true, d.external, d)};
     case MemberChoice::internal:
       if (d.external && !d.internal)
         throw Error(fmt::format("{} is an external thread's designation, not an internal one", name));
-      return {member(false, d.internal, d.major_mm)};
+      return {member(false, d.internal, d)};
     case MemberChoice::both:
-      return {member(true, d.external, d.major_mm), member(false, d.internal, d.major_mm)};
+      return {member(true, d.external, d), member(false, d.internal, d)};
     case MemberChoice::from_class:
       break;
   }
   std::vector<ThreadMember> members;
   const bool neither = !d.external && !d.internal;
-  if (d.external || neither) members.push_back(member(true, d.external, d.major_mm));
-  if (d.internal || neither) members.push_back(member(false, d.internal, d.major_mm));
+  if (d.external || neither) members.push_back(member(true, d.external, d));
+  if (d.internal || neither) members.push_back(member(false, d.internal, d));
   return members;
 }
 
 std::string pitch_series(double major_mm, double pitch_mm) {
   const std::optional<Iso261Size> size = iso261_size(major_mm);
   if (!size) return "no ISO 261 size";
-  if (same_length(size->coarse_pitch_mm, pitch_mm)) return "coarse";
-  for (double fine : size->fine_pitches_mm)
-    if (same_length(fine, pitch_mm)) return "fine";
-  return "non-standard";
+  if (!iso261_has_pitch(major_mm, pitch_mm)) return "non-standard";
+  return std::abs(size->coarse_pitch_mm - pitch_mm) < 1e-9 ? "coarse" : "fine";
 }
 
 ThreadResult evaluate(const ThreadDesignation& designation, const ThreadMember& member,
@@ -85,6 +83,8 @@ ThreadResult evaluate(const ThreadDesignation& designation, const ThreadMember& 
                                      designation.major_mm));
   else if (r.series == "no ISO 261 size")
     r.warnings.push_back(fmt::format("{}: ISO 261 lists no {} mm diameter", name, designation.major_mm));
+  else if (const char* note = iso261_pitch_note(designation.major_mm, designation.pitch_mm))
+    r.warnings.push_back(fmt::format("{}: {}", name, note));
   const std::vector<ComputedNote>* computed = nullptr;
   if (member.external) {
     r.external = external_limits(r.profile, member.tolerance);

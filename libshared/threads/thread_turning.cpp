@@ -47,6 +47,11 @@ void finish_plan(TurningPlan& plan, const TurningSettings& settings, double pitc
   plan.spring_passes = settings.spring_passes;
 }
 
+double topping_stock(const TurningSettings& settings, double pitch) {
+  if (!std::isnan(settings.topping_stock_mm)) return settings.topping_stock_mm;
+  return 0.1 * std::min(1.0, pitch);
+}
+
 }  // namespace
 
 void validate(const TurningSettings& s) {
@@ -56,7 +61,7 @@ void validate(const TurningSettings& s) {
   require(s.spring_passes >= 0 && s.spring_passes <= 10, fmt::format("spring passes {} is outside 0-10", s.spring_passes));
   require(std::isfinite(s.flank_angle_deg) && s.flank_angle_deg >= 0 && s.flank_angle_deg <= 30,
           fmt::format("the flank infeed angle {} is outside 0-30 degrees", s.flank_angle_deg));
-  require(std::isfinite(s.topping_stock_mm) && s.topping_stock_mm >= 0 && s.topping_stock_mm <= 5,
+  require(std::isnan(s.topping_stock_mm) || (s.topping_stock_mm >= 0 && s.topping_stock_mm <= 5),
           fmt::format("the topping stock {} mm is outside 0-5 mm", s.topping_stock_mm));
   require(std::isfinite(s.chamfer_margin_mm) && s.chamfer_margin_mm >= 0 && s.chamfer_margin_mm <= 10,
           fmt::format("the chamfer margin {} mm is outside 0-10 mm", s.chamfer_margin_mm));
@@ -93,7 +98,7 @@ TurningPlan plan_external(const BasicProfile& p, const ExternalLimits& l, const 
   // A full-profile insert forms the crest at 3H/4 over the pitch diameter.
   plan.crest_diameter = plan.target_pitch_diameter + 0.75 * p.height;
   plan.crest_in_zone = plan.crest_diameter <= l.d_max + 1e-9 && plan.crest_diameter >= l.d_min - 1e-9;
-  plan.blank_diameter = plan.crest_diameter + settings.topping_stock_mm;
+  plan.blank_diameter = plan.crest_diameter + topping_stock(settings, p.pitch);
   finish_plan(plan, settings, p.pitch);
   return plan;
 }
@@ -108,7 +113,7 @@ TurningPlan plan_internal(const BasicProfile& p, const InternalLimits& l, const 
   // A full-profile internal insert forms the minor diameter H/2 under D2.
   plan.crest_diameter = plan.target_pitch_diameter - 0.5 * p.height;
   plan.crest_in_zone = plan.crest_diameter >= l.D1_min - 1e-9 && plan.crest_diameter <= l.D1_max + 1e-9;
-  plan.blank_diameter = plan.crest_diameter - settings.topping_stock_mm;
+  plan.blank_diameter = plan.crest_diameter - topping_stock(settings, p.pitch);
   require(plan.blank_diameter > 0, fmt::format("M{}x{}: the bore before threading would be {:.4f} mm", p.major,
                                                p.pitch, plan.blank_diameter));
   finish_plan(plan, settings, p.pitch);

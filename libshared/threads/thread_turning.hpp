@@ -5,6 +5,7 @@
 /// infeed (constant chip area).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ struct TurningSettings {
   double flank_angle_deg = 27;
   /// Diametral stock the full-profile insert tops off the crest: the blank
   /// is this much over (external) or under (internal) the crest it forms.
-  double topping_stock_mm = 0.1;
+  /// NaN: 0.1 mm (Tungaloy's finish stock), 0.1 P below a 1 mm pitch.
+  double topping_stock_mm = std::numeric_limits<double>::quiet_NaN();
   /// The 45-degree chamfer reaches this far (radially) below the thread's root.
   double chamfer_margin_mm = 0.25;
 };

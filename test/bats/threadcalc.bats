@@ -110,7 +110,7 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   assert_output --partial "'q' is not a tolerance position"
   run -1 threadcalc M6 M0
   assert_line --index 0 --regexp '^\{"designation":"M6"'
-  assert_line --index 2 "threadcalc: argument 2: designation 'M0': diameter 0 mm is outside (0, 1000]"
+  assert_line --index 2 "threadcalc: argument 2: designation 'M0': diameter 0 mm is outside [0.001, 1000]"
 }
 
 @test "bad records: the file and line, records before kept" {
@@ -137,7 +137,7 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   assert_output ""
   run -1 threadcalc M1e999
   run -1 threadcalc M99999999999999999999
-  assert_output --partial "outside (0, 1000]"
+  assert_output --partial "outside [0.001, 1000]"
   run -1 threadcalc M30xnan
   run -1 threadcalc M30x2-6g-6g
   assert_output --partial "two external tolerance classes"
@@ -171,7 +171,8 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   run -0 threadcalc --gcode g76 --length 40 --rpm 400 M30x2-6g
   assert_line --regexp '^G18 G21 G90 G94 G7'
   assert_line "S400 M3"
-  assert_line "G0 X31.977 Z6"
+  assert_line --index 6 "G0 Z6"
+  assert_line --index 7 "G0 X31.977"
   # I = peak 30 - drive line 31.977; K = 2 ap (diameters in G7); J = K/sqrt(8) rounded up.
   assert_line "G76 P2 Z-40 I-1.977 J0.9111 K2.5767 R2 Q0 H1 E0 L0"
   assert_line "M30"
@@ -207,4 +208,35 @@ print("ok")'
   run -0 threadcalc --gcode passes --length 10 M6-6g
   assert_line "S3000 M3"
   run -0 bash -c 'threadcalc --gcode passes --length 10 M6-6g | gcode-pulse --summary > /dev/null'
+}
+
+@test "spellings: spaces as separators, dashes, LH on the class; S and L choose ISO 965-1's classes" {
+  threadcalc "M8x1.25 6g" "M20x1.5–6gLH" "M10-S" "M10-L" > out.jsonl
+  # ISO 965-1's first choices, medium quality: S 5g6g / 5H, L 7g6g / 7H.
+  run -0 check '
+got = [(r["thread"], r["class"]) for r in rows]
+assert got == [("M8x1.25-6g", "6g"), ("M20x1.5-6g-LH", "6g"), ("M10x1.5-S", "5g6g"), ("M10x1.5-S", "5H"),
+               ("M10x1.5-L", "7g6g"), ("M10x1.5-L", "7H")], got
+' < out.jsonl
+  run -0 --separate-stderr threadcalc M14x1.25-6H
+  [[ "$stderr" == *"M14x1.25-6H: ISO 261: only for spark plugs"* ]]
+}
+
+@test "internal and left-hand programs run through gcode-pulse and end ahead of the face" {
+  for d in M30x2-6H M30x2-6H-LH M30x2-6g-LH M3-6H; do
+    for style in g76 passes; do
+      threadcalc --gcode "$style" --length 20 --infeed flank "$d" > prog.ngc
+      # The last move before M5 takes the tool back to the safe Z, run-in ahead of the face.
+      run -0 bash -c "grep '^G0' prog.ngc | tail -1"
+      assert_output --regexp '^G0 Z[0-9.]+$'
+    done
+    run -0 bash -c 'gcode-pulse --summary prog.ngc > summary.json'
+    run -0 check 'assert rows[0]["final_z"] > 0, rows' < summary.json
+  done
+  # The left-hand passes start 3 P beyond the 20 mm thread, in the groove, and cut out past the face.
+  threadcalc --gcode passes --length 20 M30x2-6g-LH > lh.ngc
+  run -0 grep -c '^G33 Z6 K2$' lh.ngc
+  assert_output 9
+  run -0 grep -c '^G0 Z-26$' lh.ngc
+  assert_output 9
 }

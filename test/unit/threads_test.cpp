@@ -51,13 +51,21 @@ TEST(ThreadDesignation, ReadsTheSpellingsUsersWrite) {
   EXPECT_EQ(spaced.canonical(), "M16x1.5-6H-L-LH");
 
   EXPECT_TRUE(parse_designation("M20x2LH").left_hand);
+  // A space separates parts as '-' does; dashes and the minus sign are '-'.
+  EXPECT_EQ(parse_designation("M8x1.25 6g").canonical(), "M8x1.25-6g");
+  EXPECT_EQ(parse_designation("M20x1.5-6g LH").canonical(), "M20x1.5-6g-LH");
+  EXPECT_EQ(parse_designation("M20x1.5\xE2\x80\x93" "6g").canonical(), "M20x1.5-6g");        // en dash
+  EXPECT_EQ(parse_designation("M20x1.5\xE2\x88\x92" "6H").canonical(), "M20x1.5-6H");        // minus sign
+  EXPECT_EQ(parse_designation("M20\xC2\xA0" "x\xC2\xA0" "1.5").canonical(), "M20x1.5");        // no-break spaces
+  EXPECT_EQ(parse_designation("M20x1.5-6gLH").canonical(), "M20x1.5-6g-LH");
+  EXPECT_EQ(parse_designation("M20x1.5-6H-l").engagement, Engagement::long_l);
   EXPECT_EQ(parse_designation("m1,6").pitch_mm, 0.35);  // ISO 261: M1.6 coarse 0.35
   EXPECT_EQ(parse_designation("M8*1").pitch_mm, 1);
 }
 
 TEST(ThreadDesignation, RefusesWhatIsNotADesignation) {
   for (const char* bad : {"M0", "Mx2", "M30x0", "M30x2-6q", "", "30x2", "M30x2-", "M30x2-6g-6g", "M30x2-6H/6H",
-                          "M30x2-2g", "M30x2-6g5h", "M16xPh3P1.5", "M30x2-6g-LH-LH", "M30x2-S-L", "M30x2 6g",
+                          "M30x2-2g", "M30x2-6g5h", "M16xPh3P1.5", "M30x2-6g-LH-LH", "M30x2-S-L", "M30x2 6g 6g", "M30x2-6gLH-LH",
                           "M1e3", "M30x2-6gg", "M30x2-66", "M-30", "M30x2-6g\x01", "M31"})
     EXPECT_THROW(parse_designation(bad), tk::Error) << bad;
 }
@@ -117,6 +125,11 @@ TEST(ThreadLimits, RefusesGradesTheDiameterDoesNotHave) {
 TEST(ThreadLimits, DefaultClassIsIsoMediumQuality) {
   EXPECT_EQ(default_external_class(10).text(), "6g");
   EXPECT_EQ(default_internal_class(10).text(), "6H");
+  EXPECT_EQ(default_external_class(10, Engagement::short_s).text(), "5g6g");
+  EXPECT_EQ(default_internal_class(10, Engagement::short_s).text(), "5H");
+  EXPECT_EQ(default_external_class(10, Engagement::long_l).text(), "7g6g");
+  EXPECT_EQ(default_internal_class(10, Engagement::long_l).text(), "7H");
+  EXPECT_EQ(members_of(parse_designation("M10-L"), MemberChoice::from_class).front().tolerance.text(), "7g6g");
   EXPECT_EQ(default_external_class(1.4).text(), "6h");
   EXPECT_EQ(default_internal_class(1.2).text(), "5H");
 }
@@ -180,21 +193,34 @@ TEST(ThreadTurning, InternalRootPutsD2MidZone) {
   EXPECT_LT(plan.blank_diameter, plan.crest_diameter);
 }
 
+// M1.6 (P 0.35): Widia's 4 passes would end with a last pass under
+// 0.05 mm; the plan takes the most passes whose last one is at least that.
 TEST(ThreadTurning, FewerPassesWhenTheLastWouldRub) {
-  const BasicProfile p = basic_profile(1, 0.25);
-  const ExternalLimits l = external_limits(p, default_external_class(1));
+  const BasicProfile p = basic_profile(1.6, 0.35);
+  const ExternalLimits l = external_limits(p, default_external_class(1.6));
   const TurningPlan plan = plan_external(p, l, {});
-  ASSERT_GE(plan.passes, 2);
-  const std::vector<double>& d = plan.depths;
-  if (plan.passes > 2) {
-    EXPECT_GE(d.back() - d[d.size() - 2], 0.05);
-  }
+  const auto last_pass = [&](int n) {
+    const double a = plan.ap;
+    return a * (std::sqrt((n - 1.0) / (n - 1)) - std::sqrt((n - 2.0) / (n - 1)));
+  };
+  ASSERT_LT(plan.passes, recommended_passes(0.35));
+  EXPECT_GE(last_pass(plan.passes), 0.05);
+  EXPECT_LT(last_pass(plan.passes + 1), 0.05);
   TurningSettings fixed;
   fixed.passes = 6;
   EXPECT_EQ(plan_external(p, l, fixed).passes, 6);
   TurningSettings bad;
   bad.flank_angle_deg = 31;
   EXPECT_THROW(plan_external(p, l, bad), tk::Error);
+}
+
+TEST(ThreadTurning, TopsOffStockScaledWithFinePitches) {
+  const BasicProfile p = basic_profile(1, 0.25);
+  const TurningPlan plan = plan_external(p, external_limits(p, default_external_class(1)), {});
+  EXPECT_NEAR(plan.blank_diameter - plan.crest_diameter, 0.025, 1e-12);  // 0.1 P
+  const BasicProfile m30 = basic_profile(30, 2);
+  const TurningPlan coarse = plan_external(m30, external_limits(m30, default_external_class(30)), {});
+  EXPECT_NEAR(coarse.blank_diameter - coarse.crest_diameter, 0.1, 1e-12);
 }
 
 namespace {
@@ -260,7 +286,7 @@ TEST(ThreadProgram, PassesCutEachDepthThenSpringPasses) {
   flank.flank_angle_deg = 27;
   const TurningPlan plan = m30_plan(flank);
   const std::string program = thread_program(ProgramStyle::passes, plan, m30_program());
-  std::vector<double> cut_x, start_z;
+  std::vector<double> cut_x, start_z, end_z;
   double last_x = NAN, last_z = NAN;
   for (const std::string& line : lines_of(program)) {
     if (line.rfind("G0", 0) == 0) {
@@ -271,16 +297,74 @@ TEST(ThreadProgram, PassesCutEachDepthThenSpringPasses) {
       EXPECT_EQ(word(line, 'K'), 2);
       cut_x.push_back(last_x);
       start_z.push_back(last_z);
+      end_z.push_back(word(line, 'Z'));
     }
   }
   ASSERT_EQ(cut_x.size(), plan.depths.size() + 1u);  // + one spring pass
   for (std::size_t i = 0; i < plan.depths.size(); ++i) {
     EXPECT_NEAR(cut_x[i], 30 - 2 * plan.depths[i], 1e-4);
-    // The start slides along the cut by depth · tan 27° so one flank stays put.
-    EXPECT_NEAR(start_z[i], 6 - plan.depths[i] * std::tan(27 * M_PI / 180), 1e-4);
+    // Start and end slide along the cut by depth · tan 27° so one flank stays
+    // put; the full-depth pass ends at the thread's end, Z-40.
+    const double shift = (plan.ap - plan.depths[i]) * std::tan(27 * M_PI / 180);
+    EXPECT_NEAR(start_z[i], 6 + shift, 1e-4);
+    EXPECT_NEAR(end_z[i], -40 + shift, 1e-4);
+    EXPECT_GE(end_z[i], -40 - 1e-9);  // never past the programmed length
   }
+  EXPECT_EQ(end_z.back(), -40);
   EXPECT_NEAR(cut_x.back(), 30 - 2 * plan.ap, 1e-4);
   EXPECT_NE(program.find("M30"), std::string::npos);
+}
+
+struct Rapid {
+  double x0, z0, x1, z1;
+};
+
+/// The rapids of a program, each from where the tool really was (after
+/// G33 cuts too), starting at (x, z).
+std::vector<Rapid> rapids_of(const std::string& program, double x, double z) {
+  std::vector<Rapid> rapids;
+  for (const std::string& line : lines_of(program)) {
+    const double x0 = x, z0 = z;
+    if (!std::isnan(word(line, 'X'))) x = word(line, 'X');
+    if (!std::isnan(word(line, 'Z'))) z = word(line, 'Z');
+    if (line.rfind("G0 ", 0) == 0) rapids.push_back({x0, z0, x, z});
+  }
+  return rapids;
+}
+
+// An internal left-hand M30x2 (40 mm, run-in 6): every rapid stays ahead of
+// the face (Z > 0), inside the bore, or in the groove beyond the thread's
+// inner end (Z < -40): never a diagonal through the metal.
+TEST(ThreadProgram, InternalLeftHandRapidsStayClear) {
+  const BasicProfile p = basic_profile(30, 2);
+  const TurningPlan plan = plan_internal(p, internal_limits(p, default_internal_class(30)), {});
+  ProgramSettings s = m30_program();
+  s.left_hand = true;
+  for (ProgramStyle style : {ProgramStyle::g76, ProgramStyle::passes}) {
+    const std::string program = thread_program(style, plan, s);
+    for (const Rapid& r : rapids_of(program, 100, 100)) {  // from a tool change position outside
+      const bool ahead_of_face = r.z0 > 0 && r.z1 > 0;
+      const bool inside_bore = r.x0 < plan.blank_diameter && r.x1 < plan.blank_diameter;
+      const bool in_groove = r.z0 < -40 && r.z1 < -40;
+      EXPECT_TRUE(ahead_of_face || inside_bore || in_groove)
+          << program << "rapid " << r.x0 << "," << r.z0 << " -> " << r.x1 << "," << r.z1;
+    }
+    if (style == ProgramStyle::passes) {
+      EXPECT_NE(program.find("G0 Z-46\n"), std::string::npos) << program;
+      EXPECT_NE(program.find("G33 Z6 K2"), std::string::npos) << program;
+    }
+  }
+}
+
+TEST(ThreadProgram, SmallBoreKeepsTheDriveLineOffTheAxis) {
+  const BasicProfile p = basic_profile(3, 0.5);
+  const TurningPlan plan = plan_internal(p, internal_limits(p, default_internal_class(3)), {});
+  ProgramSettings s = m30_program();
+  s.pitch_mm = 0.5;
+  double drive_x = NAN;
+  for (const std::string& line : lines_of(thread_program(ProgramStyle::g76, plan, s)))
+    if (line.rfind("G0 X", 0) == 0) drive_x = word(line, 'X');
+  EXPECT_NEAR(drive_x, plan.blank_diameter * 0.8, 1e-4);  // a tenth of the bore each side
 }
 
 TEST(ThreadProgram, RefusesImpossibleSettings) {

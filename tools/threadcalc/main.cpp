@@ -15,6 +15,7 @@
 #include "io/error.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
+#include "io/text.hpp"
 #include "threads/thread_gcode.hpp"
 #include "threads/thread_report.hpp"
 
@@ -29,8 +30,7 @@ class DesignationLines : public tk::io::LineDecoder {
  public:
   explicit DesignationLines(std::string field) : field_(std::move(field)) {}
   bool decode(std::string_view line, const tk::Location&, tk::Record& out) override {
-    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
-    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.front()))) line.remove_prefix(1);
+    line = tk::io::trim(line);
     if (line.empty() || line.front() == '#') return false;
     out = tk::Record::object();
     out[field_] = std::string(line);
@@ -195,11 +195,12 @@ int main(int argc, char** argv) {
       app.add_option("--infeed", infeed, "radial, or flank (modified flank infeed)")
           ->check(CLI::IsMember({"radial", "flank"}))->capture_default_str(),
       app.add_option("--flank-angle", o.turning.flank_angle_deg, "flank infeed's angle from the radial, degrees")
-          ->check(CLI::Range(0.0, 30.0))->capture_default_str(),
-      app.add_option("--stock", o.turning.topping_stock_mm, "diametral stock the insert tops off the crest, mm")
-          ->check(CLI::Range(0.0, 5.0))->capture_default_str(),
+          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 30.0))->capture_default_str(),
+      app.add_option("--stock", o.turning.topping_stock_mm,
+                     "diametral stock the insert tops off the crest, mm (default 0.1, 0.1 P below P 1)")
+          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 5.0)),
       app.add_option("--chamfer-margin", o.turning.chamfer_margin_mm, "the chamfer's reach below the root, mm")
-          ->check(CLI::Range(0.0, 10.0))->capture_default_str()};
+          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 10.0))->capture_default_str()};
   for (CLI::Option* option : turning_options) option->group(turning_group);
   const std::string program_group = "Threading program";
   std::vector<CLI::Option*> program_options{
@@ -211,9 +212,9 @@ int main(int argc, char** argv) {
           ->check(number_check(NumberDomain::positive))->capture_default_str(),
       app.add_option("--max-rpm", program.max_rpm, "the highest spindle speed --vc may give")
           ->check(number_check(NumberDomain::positive))->capture_default_str(),
-      app.add_option("--clearance", program.clearance, "radial gap of the drive line from the blank, mm")
+      app.add_option("--clearance", program.clearance, "radial gap of the drive line from the blank (inside: at most a tenth of the bore), mm")
           ->check(number_check(NumberDomain::positive))->capture_default_str(),
-      app.add_option("--run-in", program.run_in, "start this far ahead of the face, mm (default 3 P)")
+      app.add_option("--run-in", program.run_in, "start this far ahead of the face (left hand: beyond the thread's end), mm (default 3 P)")
           ->check(number_check(NumberDomain::non_negative))};
   CLI::Option* gcode = app.add_option("--gcode", program.style, "write the threading program instead of records: g76 or passes")
                            ->check(CLI::IsMember({"g76", "passes"}));
