@@ -11,6 +11,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <sstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -182,6 +183,7 @@ TEST(Iso261Fixture, LimitsFixtureUsesIso261Combinations) {
                                           "source", "external_class", "internal_class"};
   ASSERT_EQ(header, expected);
   int rows = 0;
+  std::set<std::pair<long, long>> covered;  // (d, P) in micrometres
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     ++rows;
@@ -201,6 +203,7 @@ TEST(Iso261Fixture, LimitsFixtureUsesIso261Combinations) {
       EXPECT_NE(p, row->coarse_pitch_mm) << "the coarse pitch is written without 'x'";
     }
     EXPECT_TRUE(iso261_has_pitch(d, p));
+    covered.insert({std::lround(d * 1000), std::lround(p * 1000)});
     auto value = [&](std::size_t i) { return cells[i].empty() ? std::nan("") : std::stod(cells[i]); };
     for (std::size_t i = 1; i <= 9; ++i) {
       if (!cells[i].empty()) {
@@ -228,4 +231,13 @@ TEST(Iso261Fixture, LimitsFixtureUsesIso261Combinations) {
     EXPECT_FALSE(cells[10].empty());
   }
   EXPECT_GE(rows, 100);
+  // The issue asks for every ISO 261 size from M1 to M68, coarse and fine.
+  for (const Iso261Size& size : iso261_sizes()) {
+    if (size.diameter_mm > 68) break;
+    std::vector<double> pitches(size.fine_pitches_mm.begin(), size.fine_pitches_mm.end());
+    if (size.coarse_pitch_mm > 0) pitches.push_back(size.coarse_pitch_mm);
+    for (double p : pitches)
+      EXPECT_TRUE(covered.count({std::lround(size.diameter_mm * 1000), std::lround(p * 1000)}))
+          << "M" << size.diameter_mm << "x" << p << " has no published row";
+  }
 }
