@@ -155,7 +155,6 @@ ThreadDesignation parse_designation(std::string_view original) {
     if (rest.starts_with("Ph") || rest.starts_with("PH") || rest.starts_with("ph"))
       throw Error(fmt::format("designation '{}': multi-start threads (Ph.. P..) are not supported", printable(original)));
     out.pitch_mm = take_number(rest, "pitch", original);
-    out.pitch_given = true;
     if (!(out.pitch_mm >= min_length_mm && out.pitch_mm <= max_pitch_mm))
       throw Error(fmt::format("designation '{}': pitch {} mm is outside [{}, {}]", printable(original), out.pitch_mm,
                               min_length_mm, max_pitch_mm));

@@ -35,7 +35,6 @@ enum class Engagement { short_s, normal_n, long_l };
 struct ThreadDesignation {
   double major_mm = 0;   ///< nominal (basic major) diameter d = D
   double pitch_mm = 0;
-  bool pitch_given = false;  ///< false: the coarse pitch of ISO 261 was taken
   bool left_hand = false;
   std::optional<ToleranceClass> internal;
   std::optional<ToleranceClass> external;

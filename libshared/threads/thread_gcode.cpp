@@ -37,7 +37,8 @@ double internal_clearance(const TurningPlan& plan, const ProgramSettings& s) {
 }
 
 Geometry geometry(const TurningPlan& plan, const ProgramSettings& s) {
-  const double run_in = s.run_in_mm > 0 ? s.run_in_mm : 3 * s.pitch_mm;
+  // Up to speed before the thread starts: the lead is only right at P·S.
+  const double run_in = s.run_in_mm > 0 ? s.run_in_mm : std::max(3 * s.pitch_mm, synchronisation_distance(s));
   Geometry g;
   g.drive_x = plan.external ? plan.blank_diameter + 2 * s.clearance_mm
                             : plan.blank_diameter - 2 * internal_clearance(plan, s);
@@ -72,6 +73,15 @@ double pass_diameter(const TurningPlan& plan, double depth) {
 
 }  // namespace
 
+double spindle_speed(double cutting_speed_m_min, double diameter_mm, double max_rpm) {
+  return std::min(max_rpm, 1000 * cutting_speed_m_min / (std::numbers::pi * diameter_mm));
+}
+
+double synchronisation_distance(const ProgramSettings& s) {
+  const double speed = s.pitch_mm * s.rpm / 60;  // mm/s
+  return speed * speed / (2 * s.acceleration_mm_s2);
+}
+
 void validate(const ProgramSettings& s) {
   require(std::isfinite(s.pitch_mm) && s.pitch_mm > 0, "the program needs a positive pitch");
   require(std::isfinite(s.length_mm) && s.length_mm > 0 && s.length_mm <= 10000,
@@ -81,6 +91,8 @@ void validate(const ProgramSettings& s) {
           fmt::format("clearance {} mm is outside (0, 100]", s.clearance_mm));
   require(std::isfinite(s.run_in_mm) && s.run_in_mm >= 0 && s.run_in_mm <= 1000,
           fmt::format("run-in {} mm is outside [0, 1000]", s.run_in_mm));
+  require(std::isfinite(s.acceleration_mm_s2) && s.acceleration_mm_s2 > 0 && s.acceleration_mm_s2 <= 1e6,
+          fmt::format("acceleration {} mm/s^2 is outside (0, 1e6]", s.acceleration_mm_s2));
 }
 
 std::string thread_program(ProgramStyle style, const TurningPlan& plan, const ProgramSettings& s) {
@@ -92,7 +104,9 @@ std::string thread_program(ProgramStyle style, const TurningPlan& plan, const Pr
     out += "(G76 cuts at ap*sqrt(i/n): the plan's count and final depth, not its light first pass)\n";
   if (s.left_hand)
     out += fmt::format("(left hand: starts {} mm beyond the thread's inner end, in a groove at least that wide)\n",
-                       number(g.safe_z));
+                       number(g.safe_z + plan.ap * tan_angle));
+  out += fmt::format("(the Z axis takes {} mm to reach P*S and as much to stop: the thread's end needs that undercut)\n",
+                     number(synchronisation_distance(s)));
   // To the safe Z first, then onto the drive line, then along it: never a
   // diagonal rapid through the face or into the bore.
   out += fmt::format("G0 Z{}\n", number(g.safe_z));

@@ -17,9 +17,20 @@ struct ProgramSettings {
   double length_mm = 0;         ///< thread length, from the face at Z0 towards −Z
   double rpm = 0;               ///< spindle speed S
   double clearance_mm = 1;      ///< radial gap between the drive line and the blank (or bore)
-  double run_in_mm = 0;         ///< Z start ahead of the face; 0 takes 3 pitches
+  /// Z start ahead of the face; 0 takes 3 pitches, or more when the Z axis
+  /// needs more to reach the thread's speed P·S at acceleration_mm_s2.
+  double run_in_mm = 0;
+  double acceleration_mm_s2 = 500;  ///< the Z axis's (gcode-pulse's default)
   bool left_hand = false;       ///< cut from the thread's inner end out to the face
 };
+
+/// Spindle speed, rpm, for a cutting speed (m/min) at a diameter (mm),
+/// at most max_rpm.
+double spindle_speed(double cutting_speed_m_min, double diameter_mm, double max_rpm);
+
+/// Distance, mm, the Z axis needs to reach (or leave) the thread's speed
+/// P·S from rest at the settings' acceleration: v²/2a.
+double synchronisation_distance(const ProgramSettings& settings);
 
 /// Throws tk::Error for a non-positive length or speed, a clearance outside
 /// (0, 100] mm, and so on. An internal drive line keeps at most a tenth of

@@ -21,8 +21,8 @@ struct BasicProfile {
   double external_depth = 0;  ///< h3 = (d − d3)/2 = 17H/24
   double internal_depth = 0;  ///< H1 = (D − D1)/2 = 5H/8
   double root_radius = 0;     ///< H/6, the external root's radius that gives d3
-  double crest_flat = 0;      ///< P/8, the flat at the major diameter
-  double root_flat = 0;       ///< P/4, the flat at the minor diameter
+  double crest_flat = 0;      ///< P/8, the basic flat at the major diameter
+  double root_flat = 0;       ///< P/4, the basic flat at the minor diameter
 };
 
 BasicProfile basic_profile(double major_mm, double pitch_mm);

@@ -112,16 +112,17 @@ std::string member_designation(const ThreadResult& r) {
 }
 
 std::vector<std::string> report_fields() {
-  return {"thread", "kind", "class", "d", "P", "pitch_series", "hand", "H", "d2", "d1", "d3",
+  return {"thread", "kind", "class", "d", "P", "pitch_series", "hand", "H", "d2", "d1", "d3", "root_radius",
+          "flat_major", "flat_minor",
           "es", "Td", "Td2", "d_max", "d_min", "d2_max", "d2_min", "d3_max", "d_mid", "d2_mid", "R_min",
           "EI", "TD1", "TD2", "D_min", "D1_min", "D1_max", "D2_min", "D2_max", "D1_mid", "D2_mid",
-          "ap", "blank", "crest", "chamfer", "passes", "pass_depths", "infeed", "computed"};
+          "ap", "blank", "crest", "chamfer", "passes", "passes_from", "pass_depths", "infeed", "computed"};
 }
 
 void add_fields(Record& record, const ThreadResult& r, int decimals) {
   const auto mm = [decimals](double value) { return rounded(value, decimals); };
   const BasicProfile& p = r.profile;
-  record["thread"] = r.designation.canonical();
+  record["thread"] = member_designation(r);
   record["kind"] = r.member.external ? "external" : "internal";
   record["class"] = r.member.tolerance.text();
   record["d"] = p.major;
@@ -132,6 +133,9 @@ void add_fields(Record& record, const ThreadResult& r, int decimals) {
   record["d2"] = mm(p.pitch_diameter);
   record["d1"] = mm(p.minor);
   record["d3"] = mm(p.root_minor);
+  record["root_radius"] = mm(p.root_radius);
+  record["flat_major"] = mm(p.crest_flat);
+  record["flat_minor"] = mm(p.root_flat);
   if (r.external) {
     const ExternalLimits& l = *r.external;
     record["es"] = mm(l.es);
@@ -164,6 +168,7 @@ void add_fields(Record& record, const ThreadResult& r, int decimals) {
   record["crest"] = mm(plan.crest_diameter);
   record["chamfer"] = mm(plan.chamfer);
   record["passes"] = plan.passes;
+  record["passes_from"] = plan.passes_source;
   record["pass_depths"] = depth_list(plan.depths, decimals);
   record["infeed"] = plan.infeed == Infeed::flank ? fmt::format("flank {}", plan.infeed_angle_deg) : "radial";
   record["computed"] = computed_list(r.external ? r.external->computed : r.internal->computed);

@@ -25,7 +25,7 @@ constexpr std::array<PassRow, 8> widia_passes{{
 
 void finish_plan(TurningPlan& plan, const TurningSettings& settings, double pitch) {
   plan.root_diameter = plan.peak_diameter + (plan.external ? -2 : 2) * plan.ap;
-  plan.chamfer = plan.ap + settings.chamfer_margin_mm;
+  plan.chamfer = plan.ap + (std::isnan(settings.chamfer_margin_mm) ? std::min(0.25, pitch / 2) : settings.chamfer_margin_mm);
   if (settings.passes > 0) {
     plan.passes = settings.passes;
     plan.passes_source = "given";
@@ -63,7 +63,7 @@ void validate(const TurningSettings& s) {
           fmt::format("the flank infeed angle {} is outside 0-30 degrees", s.flank_angle_deg));
   require(std::isnan(s.topping_stock_mm) || (s.topping_stock_mm >= 0 && s.topping_stock_mm <= 5),
           fmt::format("the topping stock {} mm is outside 0-5 mm", s.topping_stock_mm));
-  require(std::isfinite(s.chamfer_margin_mm) && s.chamfer_margin_mm >= 0 && s.chamfer_margin_mm <= 10,
+  require(std::isnan(s.chamfer_margin_mm) || (s.chamfer_margin_mm >= 0 && s.chamfer_margin_mm <= 10),
           fmt::format("the chamfer margin {} mm is outside 0-10 mm", s.chamfer_margin_mm));
 }
 

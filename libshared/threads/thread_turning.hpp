@@ -30,8 +30,9 @@ struct TurningSettings {
   /// is this much over (external) or under (internal) the crest it forms.
   /// NaN: 0.1 mm (Tungaloy's finish stock), 0.1 P below a 1 mm pitch.
   double topping_stock_mm = std::numeric_limits<double>::quiet_NaN();
-  /// The 45-degree chamfer reaches this far (radially) below the thread's root.
-  double chamfer_margin_mm = 0.25;
+  /// The 45-degree chamfer reaches this far (radially) below the thread's
+  /// root. NaN: 0.25 mm (the seed's), P/2 below a 0.5 mm pitch.
+  double chamfer_margin_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Throws tk::Error naming the bad setting (negative stock, passes < 2, a

@@ -71,9 +71,9 @@ assert rows[2]["es"] == 0
 @test "a fit, split classes, left hand, spaces, the multiplication sign" {
   run -0 bash -c 'threadcalc "M10x1.5-6H/6g" "M30x2-5g6g" "M20 × 1.5 - 6H - LH" > out.jsonl'
   run -0 check '
-fit_i, fit_e, split, lh = rows[0], rows[1], rows[2], rows[3]
-assert fit_e["kind"] == "external" and fit_i["kind"] == "internal" or fit_e["kind"] == "internal"
-assert {fit_i["class"], fit_e["class"]} == {"6H", "6g"}
+fit_e, fit_i, split, lh = rows[0], rows[1], rows[2], rows[3]
+assert (fit_e["kind"], fit_e["class"], fit_e["thread"]) == ("external", "6g", "M10x1.5-6g"), fit_e
+assert (fit_i["kind"], fit_i["class"], fit_i["thread"]) == ("internal", "6H", "M10x1.5-6H"), fit_i
 assert split["class"] == "5g6g" and split["Td"] == 0.28
 assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] == "internal"
 ' < out.jsonl
@@ -90,10 +90,17 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   assert_output $'1001\n1002\n1003'
 }
 
+@test "the designation column stays where the order list has it" {
+  printf 'id,designation,qty\n7,M8-6g,100\n' > mid.csv
+  run -0 threadcalc --csv -i mid.csv
+  assert_line --index 0 --regexp '^id,designation,qty,thread,kind,class,'
+  assert_line --index 1 --regexp '^7,M8-6g,100,M8x1.25-6g,external,6g,'
+}
+
 @test "a bare list of designations and JSON Lines with another field name" {
-  printf 'M6\n\n# a comment\nM8x1-6H\n' | threadcalc > out.jsonl
+  printf '# from the drawing\nM6\n\n# a comment\nM8x1-6H\n' | threadcalc > out.jsonl
   run -0 json-field thread < out.jsonl
-  assert_output $'M6x1\nM6x1\nM8x1-6H'
+  assert_output $'M6x1-6g\nM6x1-6H\nM8x1-6H'
   printf '{"part":"A","thread":"M12-6g"}\n' | threadcalc --field thread > out.jsonl
   run -0 check 'assert rows[0]["part"] == "A" and rows[0]["P"] == 1.75 and rows[0]["thread"] == "M12x1.75-6g", rows' < out.jsonl
 }
@@ -121,6 +128,9 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   printf 'part\nA\n' > nofield.csv
   run -1 threadcalc -i nofield.csv
   assert_output "threadcalc: nofield.csv:2: no 'designation' field with a designation"
+  printf '{"designation":"M6"}\n{"designation":"M8","qty":3}\n' > growing.jsonl
+  run -1 threadcalc --csv -i growing.jsonl
+  assert_output --regexp "threadcalc: growing.jsonl:2: .*qty"
   printf '{"designation": 30}\n' > number.jsonl
   run -1 threadcalc -i number.jsonl
   assert_output --partial "number.jsonl:1: no 'designation' field"
@@ -130,7 +140,7 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   [ "${#lines[@]}" -eq 1 ]
   printf 'designation\nM6\n\x00\xff\xfeM\x01\n' > binary.csv
   run -1 threadcalc -i binary.csv
-  assert_line --index 0 --partial '"thread":"M6x1"'
+  assert_line --index 0 --partial '"thread":"M6x1-6g"'
   assert_output --regexp 'threadcalc: binary.csv:3: '
   : > empty.csv
   run -0 threadcalc -i empty.csv
@@ -165,14 +175,19 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   run -2 threadcalc -i x.csv M10
   run -2 threadcalc --length -1 --gcode g76 M10
   run -2 threadcalc --decimals 12 M10
+  run -2 threadcalc --decimals 2 M10  # tolerances are whole micrometres
+  run -2 threadcalc --gcode g76 --length 20000 M10
+  assert_output --partial "thread length 20000 mm is outside (0, 10000]"
+  run -2 threadcalc --gcode passes --length 20 --rpm 1e9 M10
+  run -2 threadcalc --gcode passes --length 20 --accel nan M10
 }
 
 @test "--gcode g76 writes LinuxCNC's cycle with the plan's words" {
   run -0 threadcalc --gcode g76 --length 40 --rpm 400 M30x2-6g
   assert_line --regexp '^G18 G21 G90 G94 G7'
   assert_line "S400 M3"
-  assert_line --index 6 "G0 Z6"
-  assert_line --index 7 "G0 X31.977"
+  assert_line --index 7 "G0 Z6"
+  assert_line --index 8 "G0 X31.977"
   # I = peak 30 - drive line 31.977; K = 2 ap (diameters in G7); J = K/sqrt(8) rounded up.
   assert_line "G76 P2 Z-40 I-1.977 J0.9111 K2.5767 R2 Q0 H1 E0 L0"
   assert_line "M30"
@@ -215,23 +230,26 @@ print("ok")'
   # ISO 965-1's first choices, medium quality: S 5g6g / 5H, L 7g6g / 7H.
   run -0 check '
 got = [(r["thread"], r["class"]) for r in rows]
-assert got == [("M8x1.25-6g", "6g"), ("M20x1.5-6g-LH", "6g"), ("M10x1.5-S", "5g6g"), ("M10x1.5-S", "5H"),
-               ("M10x1.5-L", "7g6g"), ("M10x1.5-L", "7H")], got
+assert got == [("M8x1.25-6g", "6g"), ("M20x1.5-6g-LH", "6g"), ("M10x1.5-5g6g-S", "5g6g"), ("M10x1.5-5H-S", "5H"),
+               ("M10x1.5-7g6g-L", "7g6g"), ("M10x1.5-7H-L", "7H")], got
 ' < out.jsonl
   run -0 --separate-stderr threadcalc M14x1.25-6H
   [[ "$stderr" == *"M14x1.25-6H: ISO 261: only for spark plugs"* ]]
 }
 
-@test "internal and left-hand programs run through gcode-pulse and end ahead of the face" {
+@test "internal and left-hand programs run through gcode-pulse and end back on the drive line ahead of the face" {
   for d in M30x2-6H M30x2-6H-LH M30x2-6g-LH M3-6H; do
-    for style in g76 passes; do
-      threadcalc --gcode "$style" --length 20 --infeed flank "$d" > prog.ngc
-      # The last move before M5 takes the tool back to the safe Z, run-in ahead of the face.
-      run -0 bash -c "grep '^G0' prog.ngc | tail -1"
-      assert_output --regexp '^G0 Z[0-9.]+$'
-    done
-    run -0 bash -c 'gcode-pulse --summary prog.ngc > summary.json'
-    run -0 check 'assert rows[0]["final_z"] > 0, rows' < summary.json
+    threadcalc --gcode g76 --length 20 --infeed flank "$d" > g76.ngc
+    run -0 bash -c "grep '^G0' g76.ngc | tail -1"
+    assert_output --regexp '^G0 Z[0-9.]+$'
+    threadcalc --gcode passes --length 20 --infeed flank "$d" > prog.ngc
+    drive=$(grep -m1 '^G0 X' prog.ngc | cut -c5-)
+    gcode-pulse --summary prog.ngc > summary.json
+    run -0 check "
+r = rows[0]
+assert r['final_z'] > 0, r
+assert near(r['final_x'], $drive / 2, 0.005), (r['final_x'], $drive)  # G7: X words are diameters
+" < summary.json
   done
   # The left-hand passes start 3 P beyond the 20 mm thread, in the groove, and cut out past the face.
   threadcalc --gcode passes --length 20 M30x2-6g-LH > lh.ngc
@@ -239,4 +257,28 @@ assert got == [("M8x1.25-6g", "6g"), ("M20x1.5-6g-LH", "6g"), ("M10x1.5-S", "5g6
   assert_output 9
   run -0 grep -c '^G0 Z-26$' lh.ngc
   assert_output 9
+}
+
+@test "the run-in brings Z up to the thread's speed by the face: the step interval at Z0 is 1/(400 K S)" {
+  # M10: 3000 rpm (100 m/min capped), K1.5: 75 mm/s, 400 steps/mm: 33.3 us per
+  # step. gcode-pulse's 500 mm/s^2 needs 75^2/1000 = 5.625 mm to get there.
+  rate='import json, sys
+z, xs, last, gap = 0, 0, None, None
+for line in sys.stdin:
+    r = json.loads(line)
+    xs += r["dx"]
+    if r["dz"]:
+        if r["dz"] < 0 and z > 0 >= z + r["dz"] and xs and gap is None:
+            gap = r["t"] - last
+        z += r["dz"]
+        last = r["t"]
+print(gap)'
+  threadcalc --gcode passes --length 20 M10 > m10.ngc
+  grep -q '^G0 Z5.625$' m10.ngc
+  run -0 bash -c "gcode-pulse m10.ngc | /usr/bin/python3 -c '$rate'"
+  run -0 py "assert abs($output - 1 / (400 * 75)) < 0.02 / (400 * 75), $output"
+  # With too short a run-in the axis is still accelerating at the face.
+  threadcalc --gcode passes --length 20 --run-in 1 M10 > short.ngc
+  run -0 bash -c "gcode-pulse short.ngc | /usr/bin/python3 -c '$rate'"
+  run -0 py "assert $output > 1.5 / (400 * 75), $output"
 }

@@ -21,7 +21,6 @@ TEST(ThreadDesignation, ReadsTheSpellingsUsersWrite) {
   const ThreadDesignation a = parse_designation("M30x2-6g");
   EXPECT_EQ(a.major_mm, 30);
   EXPECT_EQ(a.pitch_mm, 2);
-  EXPECT_TRUE(a.pitch_given);
   ASSERT_TRUE(a.external);
   EXPECT_EQ(a.external->pitch, (ToleranceZone{6, 'g'}));
   EXPECT_EQ(a.external->crest, (ToleranceZone{6, 'g'}));
@@ -29,7 +28,6 @@ TEST(ThreadDesignation, ReadsTheSpellingsUsersWrite) {
 
   const ThreadDesignation coarse = parse_designation("M10");  // ISO 261: M10 coarse 1.5
   EXPECT_EQ(coarse.pitch_mm, 1.5);
-  EXPECT_FALSE(coarse.pitch_given);
   EXPECT_FALSE(coarse.external || coarse.internal);
 
   const ThreadDesignation split = parse_designation("M30x2-5g6g");
@@ -175,22 +173,29 @@ TEST(ThreadTurning, ReproducesTheSeedsM30x2) {
   EXPECT_NEAR(plan.ap, 1.2883, 1e-4);
   EXPECT_NEAR(plan.chamfer, 1.5383, 1e-4);
   EXPECT_EQ(plan.passes, 8);
-  // The insert's root at ap under d gives d2 in the middle of its zone: the
-  // basic profile has d2 at h3 − 3H/8 over the root.
-  EXPECT_NEAR((plan.root_diameter + 2 * p.external_depth) - (p.major - p.pitch_diameter), l.d2_mid(), 1e-12);
+  // By hand: d2 aimed at the middle of ISO 965-2's 28.493-28.663, 28.578; the
+  // root 2 ap = 2.57674 under d, 27.42326; the crest 3H/4 = 1.29904 over d2,
+  // 29.87704, inside d's 29.682-29.962; the blank 0.1 over that.
+  EXPECT_NEAR(plan.target_pitch_diameter, 28.578, 5e-4);
+  EXPECT_NEAR(plan.root_diameter, 27.42326, 1e-4);
+  EXPECT_NEAR(plan.crest_diameter, 29.87704, 1e-4);
   EXPECT_TRUE(plan.crest_in_zone);
-  EXPECT_GT(plan.blank_diameter, plan.crest_diameter);
+  EXPECT_NEAR(plan.blank_diameter, 29.97704, 1e-4);
 }
 
 TEST(ThreadTurning, InternalRootPutsD2MidZone) {
   const BasicProfile p = basic_profile(30, 2);
   const InternalLimits l = internal_limits(p, parse_designation("M30x2-6H").internal.value());
   const TurningPlan plan = plan_internal(p, l, {});
-  // From the peak (D1) the insert goes H1 to D; D2 lies 3H/8 inside D.
-  EXPECT_NEAR(plan.root_diameter - 2 * 3 * p.height / 8, l.D2_mid(), 1e-12);
-  EXPECT_NEAR(plan.crest_diameter, l.D2_mid() - p.height / 2, 1e-12);
+  // By hand: D2 aimed at the middle of ISO 965-2's 28.701-28.925, 28.813;
+  // ap = H1 + (28.813 − 28.70096)/2 = 1.08253 + 0.05602 = 1.13855 from D1
+  // 27.83494; the insert's crest H/2 = 0.86603 under D2, 27.94697, inside
+  // D1's 27.835-28.210; the bore 0.1 under that.
+  EXPECT_NEAR(plan.target_pitch_diameter, 28.813, 5e-4);
+  EXPECT_NEAR(plan.ap, 1.13855, 1e-4);
+  EXPECT_NEAR(plan.crest_diameter, 27.94697, 1e-4);
   EXPECT_TRUE(plan.crest_in_zone);
-  EXPECT_LT(plan.blank_diameter, plan.crest_diameter);
+  EXPECT_NEAR(plan.blank_diameter, 27.84697, 1e-4);
 }
 
 // M1.6 (P 0.35): Widia's 4 passes would end with a last pass under
@@ -365,6 +370,33 @@ TEST(ThreadProgram, SmallBoreKeepsTheDriveLineOffTheAxis) {
   for (const std::string& line : lines_of(thread_program(ProgramStyle::g76, plan, s)))
     if (line.rfind("G0 X", 0) == 0) drive_x = word(line, 'X');
   EXPECT_NEAR(drive_x, plan.blank_diameter * 0.8, 1e-4);  // a tenth of the bore each side
+}
+
+// Flank infeed at the flank's own 30°: the tool's trailing flank (the +Z
+// side when cutting towards −Z) must lie on the same line in every pass, so
+// only the leading edge cuts. At depth a under the peak that flank sits at
+// z_tip + (depth_tip − a)·tan 30°.
+TEST(ThreadProgram, FlankInfeedKeepsTheTrailingFlankInPlace) {
+  TurningSettings flank;
+  flank.infeed = Infeed::flank;
+  flank.flank_angle_deg = 30;
+  const TurningPlan plan = m30_plan(flank);
+  const std::string program = thread_program(ProgramStyle::passes, plan, m30_program());
+  double z_tip = NAN, x_tip = NAN;
+  std::vector<double> flank_at_peak;  // the trailing flank's z at depth 0 (d = 30)
+  for (const std::string& line : lines_of(program)) {
+    if (line.rfind("G0 Z", 0) == 0) z_tip = word(line, 'Z');
+    if (line.rfind("G0 X", 0) == 0) x_tip = word(line, 'X');
+    if (line.rfind("G33", 0) == 0) {
+      const double depth = (30 - x_tip) / 2;
+      flank_at_peak.push_back(z_tip + depth * std::tan(M_PI / 6));
+    }
+  }
+  ASSERT_EQ(flank_at_peak.size(), plan.depths.size() + 1u);
+  for (double z : flank_at_peak) EXPECT_NEAR(z, flank_at_peak.front(), 2e-4);
+  // Radial infeed moves it by ap·tan 30° = 0.74 mm between the first and the last pass.
+  const std::string radial = thread_program(ProgramStyle::passes, m30_plan(), m30_program());
+  EXPECT_EQ(radial.find("G0 Z5."), std::string::npos);  // every radial pass starts at Z6
 }
 
 TEST(ThreadProgram, RefusesImpossibleSettings) {

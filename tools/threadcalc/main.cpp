@@ -4,52 +4,21 @@
 /// full-profile insert, and the threading program (Karker, Andó & Sudhan Raj).
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <iostream>
-#include <numbers>
 
 #include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
-#include "io/text.hpp"
+#include "threads/designation_input.hpp"
 #include "threads/thread_gcode.hpp"
 #include "threads/thread_report.hpp"
 
 namespace {
 
 using namespace tk::threads;
-
-/// A bare list of designations, one per line ("M30x2-6g"): the first
-/// non-blank line starts with M and a digit. Blank lines and '#' comments
-/// are skipped; each line, commas included (M1,6), is one designation.
-class DesignationLines : public tk::io::LineDecoder {
- public:
-  explicit DesignationLines(std::string field) : field_(std::move(field)) {}
-  bool decode(std::string_view line, const tk::Location&, tk::Record& out) override {
-    line = tk::io::trim(line);
-    if (line.empty() || line.front() == '#') return false;
-    out = tk::Record::object();
-    out[field_] = std::string(line);
-    return true;
-  }
-
- private:
-  std::string field_;
-};
-
-tk::io::NativeFormatProbe designation_lines_probe(const std::string& field) {
-  return [field](std::string_view first) -> std::unique_ptr<tk::io::LineDecoder> {
-    std::size_t i = first.find_first_not_of(" \t");
-    if (i == std::string_view::npos || (first[i] != 'M' && first[i] != 'm')) return nullptr;
-    i = first.find_first_not_of(" \t", i + 1);
-    if (i == std::string_view::npos || !std::isdigit(static_cast<unsigned char>(first[i]))) return nullptr;
-    return std::make_unique<DesignationLines>(field);
-  };
-}
 
 struct Options {
   MemberChoice choice = MemberChoice::from_class;
@@ -91,13 +60,15 @@ void write_records(const std::vector<std::string>& designations, const std::vect
                    const Options& o, const tk::cli::ToolApp& tool) {
   tk::io::RecordWriter writer(tool.output_format());
   std::vector<std::string> fields = report_fields();
-  fields.insert(fields.begin(), o.field);
+  // Designations from arguments make a record of their own; from records,
+  // the designation's column stays where the input has it.
+  if (!designations.empty()) fields.insert(fields.begin(), o.field);
   writer.declare_fields(fields);
   const auto emit = [&](const tk::Record& input, const std::string& text, const tk::Location& where) {
     for (const ThreadResult& result : evaluate_text(text, o, where)) {
       tk::Record record = input;
       add_fields(record, result, o.decimals);
-      writer.write(record);
+      located(where, [&] { writer.write(record); });
       warn_all(result, where, tool);
     }
   };
@@ -127,6 +98,7 @@ struct ProgramOptions {
   double max_rpm = 3000;
   double clearance = 1;
   double run_in = 0;
+  double acceleration = 500;
 };
 
 void write_program(const std::vector<std::string>& designations, Options o, const ProgramOptions& p,
@@ -146,12 +118,15 @@ void write_program(const std::vector<std::string>& designations, Options o, cons
   settings.title = member_designation(result);
   settings.pitch_mm = result.profile.pitch;
   settings.length_mm = p.length;
-  // Constant speed from v_c at the thread's diameter, within the spindle's
-  // range, unless --rpm is given.
-  settings.rpm = p.rpm > 0 ? p.rpm
-                           : std::min(p.max_rpm, 1000 * p.cutting_speed / (std::numbers::pi * result.profile.major));
+  settings.rpm = p.rpm > 0 ? p.rpm : spindle_speed(p.cutting_speed, result.profile.major, p.max_rpm);
   settings.clearance_mm = p.clearance;
   settings.run_in_mm = p.run_in;
+  settings.acceleration_mm_s2 = p.acceleration;
+  try {
+    validate(settings);
+  } catch (const tk::Error& e) {
+    throw tk::UsageError(e.what());  // from the options, not from the data
+  }
   settings.left_hand = result.designation.left_hand;
   const ProgramStyle style = p.style == "g76" ? ProgramStyle::g76 : ProgramStyle::passes;
   std::cout << thread_program(style, result.plan, settings) << std::flush;
@@ -181,10 +156,15 @@ int main(int argc, char** argv) {
   app.add_option("--kind", kind, "auto: as the class says, both for a fit or no class; or external, internal, both")
       ->check(CLI::IsMember({"auto", "external", "internal", "both"}))
       ->capture_default_str();
-  app.add_option("--decimals", o.decimals, "round millimetres to this many places")
-      ->check(tk::cli::count_check(0, 9))
+  app.add_option("--decimals", o.decimals, "round millimetres to this many places (3, a micrometre, or more)")
+      ->check(tk::cli::count_check(3, 9))
       ->capture_default_str();
   const std::string turning_group = "Thread turning (full-profile insert)";
+  CLI::Option* flank_angle =
+      app.add_option("--flank-angle", o.turning.flank_angle_deg, "flank infeed's angle from the radial, degrees")
+          ->check(number_check(NumberDomain::non_negative))
+          ->check(CLI::Range(0.0, 30.0))
+          ->capture_default_str();
   std::vector<CLI::Option*> turning_options{
       app.add_option("--passes", o.turning.passes, "passes (default: the pitch's lower end in Widia's table)")
           ->check(tk::cli::count_check(2, 100)),
@@ -194,13 +174,13 @@ int main(int argc, char** argv) {
           ->check(tk::cli::count_check(0, 10))->capture_default_str(),
       app.add_option("--infeed", infeed, "radial, or flank (modified flank infeed)")
           ->check(CLI::IsMember({"radial", "flank"}))->capture_default_str(),
-      app.add_option("--flank-angle", o.turning.flank_angle_deg, "flank infeed's angle from the radial, degrees")
-          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 30.0))->capture_default_str(),
+      flank_angle,
       app.add_option("--stock", o.turning.topping_stock_mm,
                      "diametral stock the insert tops off the crest, mm (default 0.1, 0.1 P below P 1)")
           ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 5.0)),
-      app.add_option("--chamfer-margin", o.turning.chamfer_margin_mm, "the chamfer's reach below the root, mm")
-          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 10.0))->capture_default_str()};
+      app.add_option("--chamfer-margin", o.turning.chamfer_margin_mm,
+                     "the chamfer's reach below the root, mm (default 0.25, P/2 below P 0.5)")
+          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 10.0))};
   for (CLI::Option* option : turning_options) option->group(turning_group);
   const std::string program_group = "Threading program";
   std::vector<CLI::Option*> program_options{
@@ -214,7 +194,9 @@ int main(int argc, char** argv) {
           ->check(number_check(NumberDomain::positive))->capture_default_str(),
       app.add_option("--clearance", program.clearance, "radial gap of the drive line from the blank (inside: at most a tenth of the bore), mm")
           ->check(number_check(NumberDomain::positive))->capture_default_str(),
-      app.add_option("--run-in", program.run_in, "start this far ahead of the face (left hand: beyond the thread's end), mm (default 3 P)")
+      app.add_option("--accel", program.acceleration, "the Z axis's acceleration, mm/s^2 (sets the default run-in)")
+          ->check(number_check(NumberDomain::positive))->capture_default_str(),
+      app.add_option("--run-in", program.run_in, "start this far ahead of the face (left hand: beyond the thread's end), mm (default: 3 P, or what --accel needs)")
           ->check(number_check(NumberDomain::non_negative))};
   CLI::Option* gcode = app.add_option("--gcode", program.style, "write the threading program instead of records: g76 or passes")
                            ->check(CLI::IsMember({"g76", "passes"}));
@@ -227,7 +209,7 @@ int main(int argc, char** argv) {
                : kind == "both"     ? MemberChoice::both
                                     : MemberChoice::from_class;
     o.turning.infeed = infeed == "flank" ? Infeed::flank : Infeed::radial;
-    if (o.turning.infeed != Infeed::flank && turning_options[4]->count() > 0)
+    if (o.turning.infeed != Infeed::flank && flank_angle->count() > 0)
       throw tk::UsageError("--flank-angle goes with --infeed flank");
     if (!designations.empty() && !inputs.empty()) throw tk::UsageError("give designations or --input, not both");
     if (gcode->count() > 0) {
