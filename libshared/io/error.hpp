@@ -46,4 +46,19 @@ inline void require(bool ok, const std::string& message) {
   if (!ok) throw Error(message);
 }
 
+/// Runs `work` and returns what it returns; an Error it throws with no
+/// location (the library's checks know no file or line) gets `where`. A
+/// UsageError and an Error that has a location pass unchanged.
+template <class Work>
+auto with_location(const Location& where, const Work& work) -> decltype(work()) {
+  try {
+    return work();
+  } catch (const UsageError&) {
+    throw;
+  } catch (const Error& e) {
+    if (!e.where().file.empty() || e.where().line != 0) throw;
+    throw Error(e.what(), where);
+  }
+}
+
 }  // namespace tk

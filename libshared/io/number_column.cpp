@@ -17,33 +17,45 @@ std::optional<double> whole_number(std::string_view text) {
   return value;
 }
 
-class NumberColumnDecoder final : public LineDecoder {
+class ColumnDecoder final : public LineDecoder {
  public:
-  explicit NumberColumnDecoder(std::string field) : field_(std::move(field)) {}
+  ColumnDecoder(std::string field, ColumnValue value) : field_(std::move(field)), value_(std::move(value)) {}
   bool decode(std::string_view line, const Location& where, Record& out) override {
     line = trim(line);
     if (line.empty() || line.front() == '#') return false;
-    const std::optional<double> value = whole_number(line);
-    if (!value) {
-      const std::string shown(line.substr(0, 40));
-      throw Error("'" + shown + (line.size() > 40 ? "...'" : "'") + " is not a finite number (" + field_ + ", one per line)", where);
-    }
     out = Record::object();
-    out[field_] = *value;
+    out[field_] = value_(line, where);
     return true;
   }
 
  private:
   std::string field_;
+  ColumnValue value_;
 };
 
 }  // namespace
 
-NativeFormatProbe number_column_probe(std::string field) {
-  return [field = std::move(field)](std::string_view first_line) -> std::unique_ptr<LineDecoder> {
-    if (!whole_number(trim(first_line))) return nullptr;
-    return std::make_unique<NumberColumnDecoder>(field);
+NativeFormatProbe column_probe(std::string field, std::function<bool(std::string_view)> recognise, ColumnValue value) {
+  return [field = std::move(field), recognise = std::move(recognise),
+          value = std::move(value)](std::string_view first_line) -> std::unique_ptr<LineDecoder> {
+    if (!recognise(trim(first_line))) return nullptr;
+    return std::make_unique<ColumnDecoder>(field, value);
   };
+}
+
+NativeFormatProbe number_column_probe(std::string field) {
+  const auto number = [field](std::string_view line, const Location& where) -> Record {
+    const std::optional<double> value = whole_number(line);
+    if (!value) {
+      const std::string shown(line.substr(0, 40));
+      throw Error("'" + shown + (line.size() > 40 ? "...'" : "'") + " is not a finite number (" + field +
+                      ", one per line)",
+                  where);
+    }
+    return *value;
+  };
+  return column_probe(
+      field, [](std::string_view first) { return whole_number(first).has_value(); }, number);
 }
 
 }  // namespace tk::io

@@ -409,12 +409,7 @@ class PrimeTextDecoder final : public io::LineDecoder {
   explicit PrimeTextDecoder(std::size_t max_bits) : max_bits_(max_bits) {}
 
   bool decode(std::string_view line, const Location& where, Record& out) override {
-    try {
-      return decode_line(trim(line), out);
-    } catch (const Error& e) {
-      if (e.where().file.empty() && e.where().line == 0) throw Error(e.what(), where);
-      throw;
-    }
+    return with_location(where, [&] { return decode_line(trim(line), out); });
   }
 
  private:

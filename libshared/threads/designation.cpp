@@ -3,10 +3,9 @@
 #include <fmt/format.h>
 
 #include <cctype>
-#include <charconv>
-#include <vector>
 
 #include "io/error.hpp"
+#include "io/record_fields.hpp"
 #include "threads/iso261.hpp"
 
 namespace tk::threads {
@@ -64,13 +63,16 @@ std::string printable(std::string_view text) {
   return out;
 }
 
-/// The longest number at the start of `rest` (digits and one point).
+/// The number of digits and points at the start of `rest`, read by the
+/// toolkit's one number parser.
 double take_number(std::string_view& rest, std::string_view what, std::string_view text) {
   std::size_t n = 0;
   while (n < rest.size() && (std::isdigit(static_cast<unsigned char>(rest[n])) || rest[n] == '.')) ++n;
   double value = 0;
-  const auto [end, ec] = std::from_chars(rest.data(), rest.data() + n, value);
-  if (n == 0 || ec != std::errc() || end != rest.data() + n)
+  const io::NumberText parsed = n == 0 ? io::NumberText::not_a_number : io::parse_number_text(rest.substr(0, n), value);
+  if (parsed == io::NumberText::out_of_range)
+    throw Error(fmt::format("designation '{:.40}...': the {} is out of range", printable(text), what));
+  if (parsed != io::NumberText::ok)
     throw Error(fmt::format("designation '{}': no {} where one was expected", printable(text), what));
   rest.remove_prefix(n);
   return value;

@@ -20,6 +20,8 @@ std::string number(double value) {
   return text;
 }
 
+/// To the 0.1 µm that number() prints: nearest, and up.
+double round_to_tenth_micron(double value) { return std::round(value * 1e4) / 1e4; }
 double round_up_to_tenth_micron(double value) { return std::ceil(value * 1e4) / 1e4; }
 
 struct Geometry {
@@ -114,7 +116,7 @@ std::string thread_program(ProgramStyle style, const TurningPlan& plan, const Pr
   if (style == ProgramStyle::g76) {
     if (g.z_start != g.safe_z) out += fmt::format("G0 Z{}\n", number(g.z_start));
     // G7: I, J and K are diameters. J from K as printed, so J·√n reaches it.
-    const double k = std::stod(number(2 * plan.ap));
+    const double k = round_to_tenth_micron(2 * plan.ap);
     const double j = round_up_to_tenth_micron(k / std::sqrt(static_cast<double>(plan.passes)));
     out += fmt::format("G76 P{} Z{} I{} J{} K{} R2 Q{} H{} E0 L0\n", number(s.pitch_mm), number(g.z_end),
                        number(plan.peak_diameter - g.drive_x), number(j), number(k), number(plan.infeed_angle_deg),

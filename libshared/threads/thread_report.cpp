@@ -63,11 +63,21 @@ std::vector<ThreadMember> members_of(const ThreadDesignation& d, MemberChoice ch
   return members;
 }
 
-std::string pitch_series(double major_mm, double pitch_mm) {
+PitchSeries pitch_series(double major_mm, double pitch_mm) {
   const std::optional<Iso261Size> size = iso261_size(major_mm);
-  if (!size) return "no ISO 261 size";
-  if (!iso261_has_pitch(major_mm, pitch_mm)) return "non-standard";
-  return std::abs(size->coarse_pitch_mm - pitch_mm) < 1e-9 ? "coarse" : "fine";
+  if (!size) return PitchSeries::no_iso261_size;
+  if (!iso261_has_pitch(major_mm, pitch_mm)) return PitchSeries::non_standard;
+  return std::abs(size->coarse_pitch_mm - pitch_mm) < 1e-9 ? PitchSeries::coarse : PitchSeries::fine;
+}
+
+const char* series_name(PitchSeries series) {
+  switch (series) {
+    case PitchSeries::coarse: return "coarse";
+    case PitchSeries::fine: return "fine";
+    case PitchSeries::non_standard: return "non-standard";
+    case PitchSeries::no_iso261_size: break;
+  }
+  return "no ISO 261 size";
 }
 
 ThreadResult evaluate(const ThreadDesignation& designation, const ThreadMember& member,
@@ -78,10 +88,10 @@ ThreadResult evaluate(const ThreadDesignation& designation, const ThreadMember& 
   r.profile = basic_profile(designation.major_mm, designation.pitch_mm);
   r.series = pitch_series(designation.major_mm, designation.pitch_mm);
   const std::string name = member_designation(r);
-  if (r.series == "non-standard")
+  if (r.series == PitchSeries::non_standard)
     r.warnings.push_back(fmt::format("{}: ISO 261 lists no {} mm pitch for M{}", name, designation.pitch_mm,
                                      designation.major_mm));
-  else if (r.series == "no ISO 261 size")
+  else if (r.series == PitchSeries::no_iso261_size)
     r.warnings.push_back(fmt::format("{}: ISO 261 lists no {} mm diameter", name, designation.major_mm));
   else if (const char* note = iso261_pitch_note(designation.major_mm, designation.pitch_mm))
     r.warnings.push_back(fmt::format("{}: {}", name, note));
@@ -127,7 +137,7 @@ void add_fields(Record& record, const ThreadResult& r, int decimals) {
   record["class"] = r.member.tolerance.text();
   record["d"] = p.major;
   record["P"] = p.pitch;
-  record["pitch_series"] = r.series;
+  record["pitch_series"] = series_name(r.series);
   record["hand"] = r.designation.left_hand ? "left" : "right";
   record["H"] = mm(p.height);
   record["d2"] = mm(p.pitch_diameter);

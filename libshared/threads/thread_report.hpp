@@ -30,10 +30,14 @@ struct ThreadMember {
 /// (--kind internal for "M10-6g").
 std::vector<ThreadMember> members_of(const ThreadDesignation& designation, MemberChoice choice);
 
-/// Where the pitch stands in ISO 261 for the diameter: "coarse", "fine",
-/// "non-standard" (a pitch ISO 261 does not list for it), or "no ISO 261
-/// size" (a diameter ISO 261 does not list).
-std::string pitch_series(double major_mm, double pitch_mm);
+/// Where the pitch stands in ISO 261 for the diameter: non_standard is a
+/// pitch ISO 261 does not list for it, no_iso261_size a diameter it does
+/// not list.
+enum class PitchSeries { coarse, fine, non_standard, no_iso261_size };
+
+PitchSeries pitch_series(double major_mm, double pitch_mm);
+/// "coarse", "fine", "non-standard", "no ISO 261 size": the output's words.
+const char* series_name(PitchSeries series);
 
 struct ThreadResult {
   ThreadDesignation designation;
@@ -42,7 +46,7 @@ struct ThreadResult {
   std::optional<ExternalLimits> external;
   std::optional<InternalLimits> internal;
   TurningPlan plan;
-  std::string series;
+  PitchSeries series = PitchSeries::coarse;
   std::vector<std::string> warnings;  ///< a non-standard pitch, values from formulas, a crest outside its zone
 };
 

@@ -148,6 +148,9 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   run -1 threadcalc M1e999
   run -1 threadcalc M99999999999999999999
   assert_output --partial "outside [0.001, 1000]"
+  run -1 threadcalc "M$(printf '9%.0s' {1..400})"
+  assert_output --partial "the diameter is out of range"
+  [ "${#lines[@]}" -eq 1 ]
   run -1 threadcalc M30xnan
   run -1 threadcalc M30x2-6g-6g
   assert_output --partial "two external tolerance classes"

@@ -414,8 +414,9 @@ TEST(ThreadReport, MembersAndSeries) {
   EXPECT_EQ(members_of(parse_designation("M10-6g"), MemberChoice::from_class).size(), 1u);
   EXPECT_THROW(members_of(parse_designation("M10-6g"), MemberChoice::internal), tk::Error);
   EXPECT_EQ(members_of(parse_designation("M10-6g"), MemberChoice::both).size(), 2u);
-  EXPECT_EQ(pitch_series(30, 3.5), "coarse");
-  EXPECT_EQ(pitch_series(30, 2), "fine");
-  EXPECT_EQ(pitch_series(30, 2.2), "non-standard");
-  EXPECT_EQ(pitch_series(31, 2), "no ISO 261 size");
+  EXPECT_EQ(pitch_series(30, 3.5), PitchSeries::coarse);  // ISO 261: M30 coarse 3.5, fine 3, 2, 1.5, 1
+  EXPECT_EQ(pitch_series(30, 2), PitchSeries::fine);
+  EXPECT_EQ(pitch_series(30, 2.2), PitchSeries::non_standard);
+  EXPECT_EQ(pitch_series(31, 2), PitchSeries::no_iso261_size);
+  EXPECT_STREQ(series_name(PitchSeries::no_iso261_size), "no ISO 261 size");
 }

@@ -27,22 +27,9 @@ struct Options {
   std::string field = "designation";
 };
 
-/// Runs `work`, giving its errors `where` (the library's carry no location).
-template <class Work>
-auto located(const tk::Location& where, const Work& work) {
-  try {
-    return work();
-  } catch (const tk::UsageError&) {
-    throw;
-  } catch (const tk::Error& e) {
-    if (!e.where().file.empty()) throw;
-    throw tk::Error(e.what(), where);
-  }
-}
-
 /// Parses and evaluates one designation; errors get `where`.
 std::vector<ThreadResult> evaluate_text(const std::string& text, const Options& o, const tk::Location& where) {
-  return located(where, [&] {
+  return tk::with_location(where, [&] {
     const ThreadDesignation designation = parse_designation(text);
     std::vector<ThreadResult> results;
     for (const ThreadMember& member : members_of(designation, o.choice))
@@ -68,7 +55,7 @@ void write_records(const std::vector<std::string>& designations, const std::vect
     for (const ThreadResult& result : evaluate_text(text, o, where)) {
       tk::Record record = input;
       add_fields(record, result, o.decimals);
-      located(where, [&] { writer.write(record); });
+      tk::with_location(where, [&] { writer.write(record); });
       warn_all(result, where, tool);
     }
   };
@@ -106,13 +93,14 @@ void write_program(const std::vector<std::string>& designations, Options o, cons
   if (designations.size() != 1) throw tk::UsageError("--gcode writes the program of one DESIGNATION");
   if (!(p.length > 0)) throw tk::UsageError("--gcode needs the thread's --length");
   const tk::Location where{"argument 1", 0};
+  const ThreadDesignation d = tk::with_location(where, [&] { return parse_designation(designations[0]); });
   if (o.choice == MemberChoice::from_class) {
-    const ThreadDesignation d = located(where, [&] { return parse_designation(designations[0]); });
     if (d.external && d.internal) throw tk::UsageError("a fit has two members: choose one with --kind");
     o.choice = d.internal ? MemberChoice::internal : MemberChoice::external;
   }
   if (o.choice == MemberChoice::both) throw tk::UsageError("--gcode writes one member: --kind external or internal");
-  const ThreadResult result = evaluate_text(designations[0], o, where).front();
+  const ThreadResult result =
+      tk::with_location(where, [&] { return evaluate(d, members_of(d, o.choice).front(), o.turning); });
   warn_all(result, where, tool);
   ProgramSettings settings;
   settings.title = member_designation(result);
