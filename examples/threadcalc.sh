@@ -2,7 +2,8 @@
 # threadcalc: from a customer's order list of threads to limits of size and
 # a threading program.
 #   1. the order list (CSV) -> ISO 965-1 limits of size and turning data
-#      for every thread, the order's columns kept;
+#      for every thread (the blank a full-profile insert tops off, the
+#      passes, the retract angle of a run-out), the order's columns kept;
 #   2. the bolt of one order line -> a plain G33 multi-pass program with
 #      modified flank infeed, and LinuxCNC's G76 cycle for the same thread;
 #   3. the G33 program run through gcode-pulse, which times it.
@@ -29,7 +30,7 @@ import csv, sys
 for r in csv.DictReader(open(sys.argv[1])):
     if r["kind"] == "external":
         print(f'  {r["order"]} {r["thread"]:<18} d2 {r["d2_min"]}..{r["d2_max"]}  d {r["d_min"]}..{r["d_max"]}  '
-              f'ap {r["ap"]}, blank {r["blank"]}, {r["passes"]} passes')
+              f'ap {r["ap"]}, blank {r["blank"]}, {r["passes"]} passes, retract {r["retract_angle"]} deg')
     else:
         print(f'  {r["order"]} {r["thread"]:<18} D2 {r["D2_min"]}..{r["D2_max"]}  D1 {r["D1_min"]}..{r["D1_max"]}  '
               f'ap {r["ap"]}, bore {r["blank"]}, {r["passes"]} passes')

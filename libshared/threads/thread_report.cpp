@@ -126,7 +126,7 @@ std::vector<std::string> report_fields() {
           "flat_major", "flat_minor",
           "es", "Td", "Td2", "d_max", "d_min", "d2_max", "d2_min", "d3_max", "d_mid", "d2_mid", "R_min",
           "EI", "TD1", "TD2", "D_min", "D1_min", "D1_max", "D2_min", "D2_max", "D1_mid", "D2_mid",
-          "ap", "blank", "crest", "chamfer", "passes", "passes_from", "pass_depths", "infeed", "computed"};
+          "ap", "blank", "crest", "chamfer", "run_out", "retract_angle", "passes", "passes_from", "pass_depths", "infeed", "computed"};
 }
 
 void add_fields(Record& record, const ThreadResult& r, int decimals) {
@@ -177,6 +177,8 @@ void add_fields(Record& record, const ThreadResult& r, int decimals) {
   record["blank"] = mm(plan.blank_diameter);
   record["crest"] = mm(plan.crest_diameter);
   record["chamfer"] = mm(plan.chamfer);
+  record["run_out"] = mm(plan.run_out);
+  record["retract_angle"] = rounded(plan.retract_angle_deg, decimals);  // degrees
   record["passes"] = plan.passes;
   record["passes_from"] = plan.passes_source;
   record["pass_depths"] = depth_list(plan.depths, decimals);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "io/error.hpp"
 
@@ -26,6 +27,8 @@ constexpr std::array<PassRow, 8> widia_passes{{
 void finish_plan(TurningPlan& plan, const TurningSettings& settings, double pitch) {
   plan.root_diameter = plan.peak_diameter + (plan.external ? -2 : 2) * plan.ap;
   plan.chamfer = plan.ap + (std::isnan(settings.chamfer_margin_mm) ? std::min(0.25, pitch / 2) : settings.chamfer_margin_mm);
+  plan.run_out = std::isnan(settings.run_out_mm) ? 1.25 * pitch : settings.run_out_mm;
+  plan.retract_angle_deg = std::atan2(plan.run_out, plan.ap) * 180 / std::numbers::pi;
   if (settings.passes > 0) {
     plan.passes = settings.passes;
     plan.passes_source = "given";
@@ -49,7 +52,7 @@ void finish_plan(TurningPlan& plan, const TurningSettings& settings, double pitc
 
 double topping_stock(const TurningSettings& settings, double pitch) {
   if (!std::isnan(settings.topping_stock_mm)) return settings.topping_stock_mm;
-  return 0.1 * std::min(1.0, pitch);
+  return 0.15 * std::min(1.0, pitch);
 }
 
 }  // namespace
@@ -65,6 +68,8 @@ void validate(const TurningSettings& s) {
           fmt::format("the topping stock {} mm is outside 0-5 mm", s.topping_stock_mm));
   require(std::isnan(s.chamfer_margin_mm) || (s.chamfer_margin_mm >= 0 && s.chamfer_margin_mm <= 10),
           fmt::format("the chamfer margin {} mm is outside 0-10 mm", s.chamfer_margin_mm));
+  require(std::isnan(s.run_out_mm) || (s.run_out_mm >= 0 && s.run_out_mm <= 100),
+          fmt::format("the run-out {} mm is outside 0-100 mm", s.run_out_mm));
 }
 
 int recommended_passes(double pitch_mm) {

@@ -28,11 +28,16 @@ struct TurningSettings {
   double flank_angle_deg = 27;
   /// Diametral stock the full-profile insert tops off the crest: the blank
   /// is this much over (external) or under (internal) the crest it forms.
-  /// NaN: 0.1 mm (Tungaloy's finish stock), 0.1 P below a 1 mm pitch.
+  /// NaN: 0.15 mm (what the seed's M30x2 "Prog d" 30.027 implies over its
+  /// crest 29.877), 0.15 P below a 1 mm pitch.
   double topping_stock_mm = std::numeric_limits<double>::quiet_NaN();
   /// The 45-degree chamfer reaches this far (radially) below the thread's
   /// root. NaN: 0.25 mm (the seed's), P/2 below a 0.5 mm pitch.
   double chamfer_margin_mm = std::numeric_limits<double>::quiet_NaN();
+  /// Axial length over which the tool leaves the root for the peak at the
+  /// thread's end. NaN: 1.25 P, the 2.5 mm behind the seed's M30x2
+  /// "Retract" 62.737 degrees.
+  double run_out_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Throws tk::Error naming the bad setting (negative stock, passes < 2, a
@@ -55,6 +60,10 @@ struct TurningPlan {
   bool crest_in_zone = true;  ///< that crest lies within the d or D1 tolerance zone
   double blank_diameter = 0;  ///< turned or bored before threading
   double chamfer = 0;         ///< 45-degree chamfer, radial = axial size
+  double run_out = 0;         ///< axial length of the pull-out at the thread's end
+  /// The pull-out's angle from the radial (X) direction, degrees:
+  /// atan(run_out / ap), the seed's "Retract".
+  double retract_angle_deg = 0;
   int passes = 0;
   std::string passes_source;
   std::vector<double> depths;  ///< cumulative radial depth after each pass; the last is ap

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <regex>
 #include <sstream>
 
@@ -160,10 +161,11 @@ TEST(ThreadTurning, WidiaPassesByPitch) {
   EXPECT_GT(recommended_passes(12), 15);
 }
 
-// The seed's screen for M30x2-6g: Td2 0.1700, es 0.0380, ap 1.2883,
-// chamfer 1.5383 x 45°, 8 passes. Its ap takes h3 as 0.6134 P (rounded);
-// ISO 68-1's 17H/24 = 0.613435 P puts ours 0.07 µm deeper.
-TEST(ThreadTurning, ReproducesTheSeedsM30x2) {
+// The paper's screen (Karker et al., Fig. 5) for M30x2-6g: Td2 0.1700, es
+// 0.0380, ap 1.2883, chamfer 1.5383 x 45°, Prog d 30.0270, passes 8, Retract
+// 62.7370°. Its ap takes h3 as 0.6134 P (rounded); ISO 68-1's 17H/24 =
+// 0.613435 P puts ours 0.07 µm deeper.
+TEST(ThreadTurning, ReproducesThePapersM30x2) {
   const BasicProfile p = basic_profile(30, 2);
   const ExternalLimits l = external_limits(p, parse_designation("M30x2-6g").external.value());
   EXPECT_NEAR(l.Td2, 0.170, 1e-12);
@@ -175,12 +177,37 @@ TEST(ThreadTurning, ReproducesTheSeedsM30x2) {
   EXPECT_EQ(plan.passes, 8);
   // By hand: d2 aimed at the middle of ISO 965-2's 28.493-28.663, 28.578; the
   // root 2 ap = 2.57674 under d, 27.42326; the crest 3H/4 = 1.29904 over d2,
-  // 29.87704, inside d's 29.682-29.962; the blank 0.1 over that.
+  // 29.877 (= d + es − Td2/2), inside d's 29.682-29.962; the blank 0.15 over
+  // that, the paper's Prog d 30.0270, over the nominal 30 as its text says.
   EXPECT_NEAR(plan.target_pitch_diameter, 28.578, 5e-4);
   EXPECT_NEAR(plan.root_diameter, 27.42326, 1e-4);
-  EXPECT_NEAR(plan.crest_diameter, 29.87704, 1e-4);
+  EXPECT_NEAR(plan.crest_diameter, 30 - 0.038 - 0.170 / 2, 1e-9);
   EXPECT_TRUE(plan.crest_in_zone);
-  EXPECT_NEAR(plan.blank_diameter, 29.97704, 1e-4);
+  EXPECT_NEAR(plan.blank_diameter, 30.0270, 5e-5);
+  EXPECT_GT(plan.blank_diameter, 30);
+  // Retract: the pull-out rises ap over 2.5 mm (1.25 P) along Z, its angle
+  // from the radial atan(2.5/ap): the paper's ap 1.2883 gives 62.7370°
+  // (tan 1.94054), ours 1.288369 gives 62.7358°.
+  EXPECT_NEAR(plan.run_out, 2.5, 1e-12);
+  EXPECT_NEAR(std::atan(2.5 / 1.2883) * 180 / std::numbers::pi, 62.7370, 5e-5);
+  EXPECT_NEAR(plan.retract_angle_deg, 62.7358, 5e-5);
+}
+
+// The retract angle follows the run-out: 0 is a radial pull-out, a run-out
+// equal to ap is 45 degrees.
+TEST(ThreadTurning, RetractAngleFromTheRunOut) {
+  const BasicProfile p = basic_profile(10, 1.5);
+  const ExternalLimits l = external_limits(p, default_external_class(10));
+  EXPECT_NEAR(plan_external(p, l, {}).run_out, 1.875, 1e-12);
+  TurningSettings radial;
+  radial.run_out_mm = 0;
+  EXPECT_EQ(plan_external(p, l, radial).retract_angle_deg, 0);
+  TurningSettings diagonal;
+  diagonal.run_out_mm = plan_external(p, l, {}).ap;
+  EXPECT_NEAR(plan_external(p, l, diagonal).retract_angle_deg, 45, 1e-9);
+  TurningSettings bad;
+  bad.run_out_mm = -1;
+  EXPECT_THROW(plan_external(p, l, bad), tk::Error);
 }
 
 TEST(ThreadTurning, InternalRootPutsD2MidZone) {
@@ -190,12 +217,12 @@ TEST(ThreadTurning, InternalRootPutsD2MidZone) {
   // By hand: D2 aimed at the middle of ISO 965-2's 28.701-28.925, 28.813;
   // ap = H1 + (28.813 − 28.70096)/2 = 1.08253 + 0.05602 = 1.13855 from D1
   // 27.83494; the insert's crest H/2 = 0.86603 under D2, 27.94697, inside
-  // D1's 27.835-28.210; the bore 0.1 under that.
+  // D1's 27.835-28.210; the bore 0.15 under that.
   EXPECT_NEAR(plan.target_pitch_diameter, 28.813, 5e-4);
   EXPECT_NEAR(plan.ap, 1.13855, 1e-4);
   EXPECT_NEAR(plan.crest_diameter, 27.94697, 1e-4);
   EXPECT_TRUE(plan.crest_in_zone);
-  EXPECT_NEAR(plan.blank_diameter, 27.84697, 1e-4);
+  EXPECT_NEAR(plan.blank_diameter, 27.79697, 1e-4);
 }
 
 // M1.6 (P 0.35): Widia's 4 passes would end with a last pass under
@@ -222,10 +249,10 @@ TEST(ThreadTurning, FewerPassesWhenTheLastWouldRub) {
 TEST(ThreadTurning, TopsOffStockScaledWithFinePitches) {
   const BasicProfile p = basic_profile(1, 0.25);
   const TurningPlan plan = plan_external(p, external_limits(p, default_external_class(1)), {});
-  EXPECT_NEAR(plan.blank_diameter - plan.crest_diameter, 0.025, 1e-12);  // 0.1 P
+  EXPECT_NEAR(plan.blank_diameter - plan.crest_diameter, 0.0375, 1e-12);  // 0.15 P
   const BasicProfile m30 = basic_profile(30, 2);
   const TurningPlan coarse = plan_external(m30, external_limits(m30, default_external_class(30)), {});
-  EXPECT_NEAR(coarse.blank_diameter - coarse.crest_diameter, 0.1, 1e-12);
+  EXPECT_NEAR(coarse.blank_diameter - coarse.crest_diameter, 0.15, 1e-12);
 }
 
 namespace {

@@ -164,11 +164,14 @@ int main(int argc, char** argv) {
           ->check(CLI::IsMember({"radial", "flank"}))->capture_default_str(),
       flank_angle,
       app.add_option("--stock", o.turning.topping_stock_mm,
-                     "diametral stock the insert tops off the crest, mm (default 0.1, 0.1 P below P 1)")
+                     "diametral stock the insert tops off the crest, mm (default 0.15, 0.15 P below P 1)")
           ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 5.0)),
       app.add_option("--chamfer-margin", o.turning.chamfer_margin_mm,
                      "the chamfer's reach below the root, mm (default 0.25, P/2 below P 0.5)")
-          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 10.0))};
+          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 10.0)),
+      app.add_option("--run-out", o.turning.run_out_mm,
+                     "axial length of the pull-out at the thread's end, for retract_angle, mm (default 1.25 P)")
+          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 100.0))};
   for (CLI::Option* option : turning_options) option->group(turning_group);
   const std::string program_group = "Threading program";
   std::vector<CLI::Option*> program_options{
