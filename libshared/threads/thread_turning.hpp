@@ -28,14 +28,14 @@ struct TurningSettings {
   double flank_angle_deg = 27;
   /// Diametral stock the full-profile insert tops off the crest: the blank
   /// is this much over (external) or under (internal) the crest it forms.
-  /// NaN: 0.15 mm (what the seed's M30x2 "Prog d" 30.027 implies over its
+  /// NaN: 0.15 mm (what the paper's M30x2 "Prog d" 30.027 implies over its
   /// crest 29.877), 0.15 P below a 1 mm pitch.
   double topping_stock_mm = std::numeric_limits<double>::quiet_NaN();
   /// The 45-degree chamfer reaches this far (radially) below the thread's
-  /// root. NaN: 0.25 mm (the seed's), P/2 below a 0.5 mm pitch.
+  /// root. NaN: 0.25 mm (the paper's), P/2 below a 0.5 mm pitch.
   double chamfer_margin_mm = std::numeric_limits<double>::quiet_NaN();
   /// Axial length over which the tool leaves the root for the peak at the
-  /// thread's end. NaN: 1.25 P, the 2.5 mm behind the seed's M30x2
+  /// thread's end. NaN: 1.25 P, the 2.5 mm behind the paper's M30x2
   /// "Retract" 62.737 degrees.
   double run_out_mm = std::numeric_limits<double>::quiet_NaN();
 };
@@ -48,7 +48,7 @@ struct TurningPlan {
   bool external = true;
   /// The thread's peak, where infeed depths are measured from: the basic
   /// major diameter d for an external thread, the basic minor D1 for an
-  /// internal one (the seed's convention for ap).
+  /// internal one (the paper's convention for ap).
   double peak_diameter = 0;
   double target_pitch_diameter = 0;  ///< the middle of the pitch diameter's zone
   /// Radial infeed from the peak to the root that gives target_pitch_diameter
@@ -62,7 +62,7 @@ struct TurningPlan {
   double chamfer = 0;         ///< 45-degree chamfer, radial = axial size
   double run_out = 0;         ///< axial length of the pull-out at the thread's end
   /// The pull-out's angle from the radial (X) direction, degrees:
-  /// atan(run_out / ap), the seed's "Retract".
+  /// atan(run_out / ap), the paper's "Retract".
   double retract_angle_deg = 0;
   int passes = 0;
   std::string passes_source;
