@@ -149,7 +149,7 @@ TEST(FeedController, EquivalentControlsGiveTheirCharacteristicPolynomials) {
     c.gains.switching = 0, c.gains.printed_bracket = k.printed;
     c.reference = Reference::step(0, 0);
     c.initial_velocity_mm_s = 0;
-    c.period_s = 1e-5, c.substeps = 1, c.duration_s = 4;
+    c.period_s = 1e-5, c.substeps = 1, c.duration_s = 2;
     const double m = c.plant.mass_kg, b = c.plant.damping_kg_s, mu = c.gains.mu, lambda = c.gains.lambda;
     const double damping = k.printed ? b : b - k.b_hat + k.m_hat * mu;
     const double disc = std::sqrt(damping * damping - 4 * m * k.m_hat * lambda);
@@ -161,13 +161,15 @@ TEST(FeedController, EquivalentControlsGiveTheirCharacteristicPolynomials) {
                                    : (1 - r1 * s.t_s) * std::exp(r1 * s.t_s);  // the double root
       worst = std::max(worst, std::abs(s.x_mm - want));
     }
-    EXPECT_LT(worst, 2e-4) << k.m_hat << " " << k.printed;
-    if (k.m_hat == 10 && !k.printed) EXPECT_EQ(r1, -1);  // s² + 2s + 1
-    // The printed law's slow root, about −m̂λ/b, keeps over 80 % of the offset at 4 s.
+    EXPECT_LT(worst, 1e-4) << k.m_hat << " " << k.printed;  // O(T) of the fast root: 25/s · 1e-5 s
+    if (k.m_hat == 10 && !k.printed) {
+      EXPECT_EQ(r1, -1);  // s² + 2s + 1
+    }
+    // The printed law's slow root, about −m̂λ/b, keeps over 90 % of the offset at 2 s.
     if (k.printed) {
-      EXPECT_GT(samples.back().x_mm, 0.8);
+      EXPECT_GT(samples.back().x_mm, 0.9);
     } else {
-      EXPECT_LT(samples.back().x_mm, 0.7);
+      EXPECT_LT(samples.back().x_mm, 0.85);
     }
   }
 }
