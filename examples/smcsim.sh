@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# smcsim: the seed's controller comparison on a linear-motor feed drive, and
+# smcsim: the paper's controller comparison on a linear-motor feed drive, and
 # choosing the switching gain Λ of a sliding-mode controller for a job.
-#   1. the five settings of the seed (10 s of the 1 mm, 3 rad/s sine under the
-#      default micro-milling cut), one --summary each, as a table;
+#   1. the paper's five settings (10 s of the 1 mm, 3 rad/s sine under the
+#      default micro-milling cut), one --summary each, as a table: with its
+#      gains read in kg·mm/s² (the default) and in newtons (--units m), and
+#      Λ = 400 with the bracket and the sign the paper prints;
 #   2. a sweep of Λ from 10 to 1000 (run on every core) piped to awk: the Λ
 #      that tracks best while keeping chattering within a budget (at most
 #      10 % of the drive force's power above 1 kHz), beside the plain best;
@@ -13,14 +15,15 @@ set -euo pipefail
 out="${1:-${TMPDIR:-/tmp}/smcsim-example}"
 mkdir -p "$out"
 
-echo "== 1. the seed's comparison (rms and max error in mm, chattering = total variation of F in N/s)"
-printf '%-28s %10s %10s %11s %9s\n' setting rms_error max_error chattering hf_share
-for setting in "smc --Lambda 40" "smc --Lambda 400" "sta --alpha 200 --beta 200" pid ppd; do
-  # shellcheck disable=SC2086  # the setting is the controller and its gains, split on purpose
+echo "== 1. the paper's comparison (rms and max error in mm, chattering = total variation of F in N/s)"
+printf '%-50s %10s %10s %11s %9s\n' setting rms_error max_error chattering hf_share
+for setting in "smc --Lambda 40" "smc --Lambda 400" "sta --alpha 200 --beta 200" pid ppd \
+               "smc --Lambda 40 --units m" "smc --Lambda 400 --units m" "sta --alpha 200 --beta 200 --units m" \
+               "smc --Lambda 400 --seed-bracket" "smc --Lambda 400 --seed-bracket --seed-sign"; do
+  # shellcheck disable=SC2086  # the setting is the controller and its options, split on purpose
   smcsim --controller $setting --summary --csv |
-    awk -F, -v name="$setting" 'NR == 2 { printf "%-28s %10.6f %10.6f %11.1f %9.4f\n", name, $5, $6, $9, $10 }'
+    awk -F, -v name="$setting" 'NR == 2 { printf "%-50s %10.6f %10.6f %11.1f %9.4f\n", name, $5, $6, $9, $10 }'
 done
-
 echo
 echo "== 2. the best Λ (3 s runs; rms error with hf_share <= 0.1, and without a budget)"
 smcsim sweep --controller smc --Lambda 10:1000:10 --duration 3 --csv > "$out/sweep.csv"

@@ -66,7 +66,10 @@ double FeedController::force(const ControlInput& in) {
   switch (g_.kind) {
     case ControllerKind::smc:
     case ControllerKind::sta: {
-      const double equivalent = m_hat_ * (in.a_ref + g_.mu * in.error_rate + g_.lambda * in.error) + b_hat_ * in.v;
+      // The printed bracket feeds the friction forward on ẋ_ref only (eq. 8, 9, b/m read as b̂/m̂).
+      const double equivalent = g_.printed_bracket
+                                    ? m_hat_ * (in.a_ref + b_hat_ / m_hat_ * in.v_ref + g_.lambda * in.error)
+                                    : m_hat_ * (in.a_ref + g_.mu * in.error_rate + g_.lambda * in.error) + b_hat_ * in.v;
       if (g_.kind == ControllerKind::smc) {
         const double switched = g_.boundary_layer > 0 ? std::clamp(s / g_.boundary_layer, -1.0, 1.0) : sign_s;
         return equivalent + g_.switching_sign * g_.switching * switched;

@@ -4,12 +4,17 @@
 ///
 /// With e = x_ref − x the error, S = ė + μ e + λ ∫e the PID-type sliding
 /// surface (the seed's eq. 3), and the plant m ẍ + b ẋ = F − F_d:
-///   Ṡ = ẍ_ref − ẍ + μ ė + λ e = ẍ_ref + μ ė + λ e − (F − F_d − b ẋ)/m.
+///   m Ṡ = m (ẍ_ref + μ ė + λ e) − F + F_d + b ẋ.
 /// The equivalent control F_eq = m̂ (ẍ_ref + μ ė + λ e) + b̂ ẋ makes Ṡ ≈ 0;
 /// the switching term must then push Ṡ against S, so it enters with a PLUS
 /// sign: F = F_eq + Λ sign(S) gives Ṡ ≈ −(Λ/m) sign(S) + (model error)/m.
 /// The seed's −Λ sign(S) with this e would drive S away from 0 (a unit test
 /// shows the loop diverging).
+///
+/// The seed's printed bracket (eq. 7-9), m̂ [ẍ_ref + (b̂/m̂) ẋ_ref + λ e], is
+/// the equivalent control only when μ = b/m; with another μ it leaves
+///   m Ṡ = (m − m̂)(ẍ_ref + λ e) + (b − b̂) ẋ_ref − (b − m μ) ė + F_d − F_sw,
+/// the friction on the error velocity uncancelled (smcsim(1), CONTROLLERS).
 #pragma once
 
 #include <string>
@@ -30,6 +35,7 @@ struct ControllerGains {
   double boundary_layer = 0;     ///< > 0: sat(S/φ) instead of sign(S), in L/s
   double alpha = 200, beta = 200;  ///< super-twisting
   double switching_sign = +1;    ///< −1 reproduces the seed's written sign (unstable)
+  bool printed_bracket = false;  ///< the seed's m̂ [ẍ_ref + (b̂/m̂) ẋ_ref + λ e] instead of F_eq
   double pid_bandwidth_hz = 20;  ///< PID default gains: a triple pole of m̂ s³ + ... at 2π·this
   double kp = -1, ki = -1, kd = -1;  ///< < 0: from the bandwidth
   double pid_feedforward = 1;    ///< PID: share of m̂ ẍ_ref + b̂ ẋ_ref fed forward, 0-1

@@ -1,35 +1,21 @@
 #!/usr/bin/env bats
-# Command-line behaviour of smcsim. The seed's findings (Rubio, Ibeas &
-# Kollár) are checked as inequalities between summary figures of runs made
-# here with the defaults, never against output captured once; the sweep
-# against single runs; a sampled reference file against the analytic sine.
+# Command-line behaviour of smcsim: the sweep against single runs, a sampled
+# reference file against the analytic sine, inputs and errors. The paper's
+# findings, per reading of its gains, are in smcsim_paper_oracle.bats.
 
 bats_require_minimum_version 1.5.0
 
 setup() {
   load test_helper
+  load smcsim_helpers
   cd "$BATS_TEST_TMPDIR"
   SMC="$FIXTURES/smcsim"
-}
-
-# figures "LABEL ARGS..." ...: one summary per argument (a label, then
-# smcsim's options), printed as one JSON object {label: summary, ...}.
-figures() {
-  local spec label args
-  for spec in "$@"; do
-    label="${spec%% *}" args=""
-    [ "$spec" = "$label" ] || args="${spec#* }"
-    # shellcheck disable=SC2086
-    smcsim --summary $args > "figure_$label.json" || return 1
-  done
-  py 'import json, sys
-print(json.dumps({label: json.load(open("figure_%s.json" % label)) for label in sys.argv[1:]}))' "${@%% *}"
 }
 
 @test "--help, --version and the man page" {
   run smcsim --help
   assert_success
-  for option in --controller --Lambda --alpha --beta --seed-sign --reference-file --summary --every --svg --units sweep; do
+  for option in --controller --Lambda --alpha --beta --seed-sign --seed-bracket --reference-file --summary --every --svg --units sweep; do
     assert_output --partial -- "$option"
   done
   run smcsim --version
@@ -98,38 +84,6 @@ assert abs(runs["settled"]["measured_s"] - 9) < 1e-9
 assert runs["settled"]["max_error_mm"] <= runs["smc"]["max_error_mm"]
 print("ok")' <<< "$(figures "smc" "sta --controller sta" "pid --controller pid" "ppd --controller ppd" \
                            "short --duration 2 --period 2e-4" "settled --settle 1")"
-  assert_output "ok"
-}
-
-@test "the seed's findings from the defaults (and the two it does not reproduce)" {
-  run py '
-import json, sys
-r = json.loads(sys.stdin.read())
-rms = {k: v["rms_error_mm"] for k, v in r.items()}
-chat = {k: v["chattering"] for k, v in r.items()}
-hf = {k: v["hf_share"] for k, v in r.items()}
-checks = [
-    ("smc: Lambda 40 tracks ten times worse than Lambda 400", rms["smc40"] > 10 * rms["smc400"]),
-    ("Lambda 400 chatters: over 20 times sta (200, 200)", chat["smc400"] > 20 * chat["sta"]),
-    ("Lambda 400: over a tenth of the power above 1 kHz", hf["smc400"] > 0.1),
-    ("sta (200, 200): under a hundredth", hf["sta"] < 0.01),
-    ("sta (200, 200) tracks far better than Lambda 40", rms["sta"] < rms["smc40"] / 5),
-    ("not reproduced: sta (200, 200) tracks worse than Lambda 400", rms["sta"] > rms["smc400"]),
-    ("beta 5000 tracks better than Lambda 400", rms["sta5000"] < rms["smc400"]),
-    ("... and still chatters under a twentieth of it", chat["sta5000"] < chat["smc400"] / 20),
-    ("ppd tracks ten times worse than Lambda 400", rms["ppd"] > 10 * rms["smc400"]),
-    ("not reproduced: pid (20 Hz, feed-forward) tracks better than Lambda 400", rms["pid"] < rms["smc400"]),
-    ("pid detuned (5 Hz, no feed-forward) tracks worse than Lambda 400", rms["pid5"] > rms["smc400"]),
-    ("the seed-s sign runs away", rms["seedsign"] > 1),
-    ("--units m: Lambda 40 tracks better than Lambda 400", rms["m40"] < rms["m400"]),
-]
-failed = [name for name, ok in checks if not ok]
-assert not any(v["diverged"] for v in r.values())
-print("failed: %s\n%s" % (failed, json.dumps(rms)) if failed else "ok")' <<< "$(figures \
-      "smc40 --Lambda 40" "smc400 --Lambda 400" "sta --controller sta --alpha 200 --beta 200" \
-      "sta5000 --controller sta --alpha 100 --beta 5000" "ppd --controller ppd" "pid --controller pid" \
-      "pid5 --controller pid --pid-bandwidth 5 --pid-ff 0" "seedsign --seed-sign --Lambda 400" \
-      "m40 --units m --Lambda 40" "m400 --units m --Lambda 400")"
   assert_output "ok"
 }
 

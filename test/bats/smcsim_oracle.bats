@@ -12,15 +12,8 @@ setup_file() {
 setup() {
   load test_helper
   /usr/bin/python3 -c 'import scipy.integrate' 2>/dev/null || skip "SciPy (python3-scipy) is not installed"
+  load smcsim_helpers
   cd "$BATS_TEST_TMPDIR"
-  IVP="$TOOLKIT_ROOT/test/oracle/feed_drive_ivp.py"
-}
-
-# ivp ARGS...: the oracle script; its exit status 77 means SciPy is missing.
-ivp() {
-  run /usr/bin/python3 "$IVP" "$@"
-  [ "$status" -ne 77 ] || skip "$output"
-  echo "$output"
 }
 
 @test "PID with the cut, T = 0.1 ms, 10 substeps: x within 1e-6 of solve_ivp (and 1e-3 of the cut's effect)" {

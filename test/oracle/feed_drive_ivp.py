@@ -18,6 +18,22 @@ The loop (smcsim's smooth case: --encoder 0 --position-filter 0
   The integration restarts at every sample and at every tooth entry and
   exit (where F_d has a kink), so DOP853 never steps over a corner.
 
+The sliding-mode loops (mode 'law') replace the PID by the paper's laws
+(Rubio, Ibeas & Kollar, eq. 3, 6, 8, 9), with the same samples:
+    S_k = (v_ref - v^_k) + mu e_k + lambda I_k                       (eq. 3)
+  the equivalent part either as eq. 6 solved for F with the estimates,
+    surface: m^ (a_ref + mu (v_ref - v^_k) + lambda e_k) + b^ v^_k,
+  or the bracket printed in eq. 8 and 9 (b/m read as b^/m^),
+    printed: m^ (a_ref + (b^/m^) v_ref + lambda e_k),
+  and the switching part with sigma = +1 (the sign that stabilises) or
+  sigma = -1 (the printed -Lambda sign(S)):
+    smc: F_k = equivalent + sigma Lambda sign(S_k)                     (eq. 8)
+    sta: F_k = equivalent + sigma (alpha |S_k|^1/2 sign(S_k) + w_k),
+         w_{k+1} = w_k + T beta sign(S_k)                            (eq. 9)
+  The gains are given in smcsim's --units (length unit u = 1e-3 m for mm,
+  1 m for m; forces in kg u/s^2) and turned into SI here: Lambda u newtons,
+  alpha sqrt(u) N/(m/s)^1/2 (S is in u/s under the root), beta u N/s.
+
 Everything is in SI units (m, N); smcsim writes mm and N.
 
 Usage (smcsim on PATH, or --smcsim PATH):
@@ -33,6 +49,11 @@ Usage (smcsim on PATH, or --smcsim PATH):
   feed_drive_ivp.py exact    [--period T] [--substeps 1,2,4,8] [--tol 1e-10]
       without the cut the held-force step is exact: every substep count
       must match the oracle to within R
+  feed_drive_ivp.py law      --controller smc|sta [--bracket surface|printed] [--seed-sign]
+                             [--Lambda L] [--alpha A] [--beta B] [--units mm|m] [--duration D]
+                             [--period T] [--substeps N] [--no-cut] [--tol R] [--ftol RF]
+      the sliding-mode loop: x and F within R (default 1e-6) and RF
+      (default 1e-4) of the oracle, relative to their largest values
 Exit status 0 on success, 1 on a failed check, 77 when SciPy is missing.
 """
 import argparse
@@ -57,11 +78,20 @@ AMPLITUDE, OMEGA = 1e-3, 3.0          # reference 1 mm sin(3 t), in metres
 FORCE_LIMIT = 2.0 * 50.0 * 10.0       # K_t K_a V, N
 TEETH, DIAMETER, SPINDLE, AXIAL = 2, 0.9, 11520.0, 0.9  # -, mm, rpm, mm (a full slot)
 KTC, KRC = 767.01, 168.8              # N/mm^2
-DURATION = 0.2
+MU, LAMBDA = 2.0, 1.0                 # the surface's (mu, lambda), 1/s and 1/s^2
+
+
+def law_args(opts):
+    """smcsim's options for the loop's controller: the PID, or the law of mode 'law'."""
+    if opts.mode != "law":
+        return ["--controller", "pid", "--kp", repr(KP), "--ki", repr(KI), "--kd", repr(KD), "--pid-ff", "1"]
+    args = ["--controller", opts.controller, "--mu", repr(MU), "--lambda", repr(LAMBDA), "--units", opts.units,
+            "--Lambda", repr(opts.Lambda), "--alpha", repr(opts.alpha), "--beta", repr(opts.beta)]
+    return args + (["--seed-bracket"] if opts.bracket == "printed" else []) + (["--seed-sign"] if opts.seed_sign else [])
 
 
 def smcsim_args(opts, substeps, cut):
-    args = [opts.smcsim, "--controller", "pid", "--kp", repr(KP), "--ki", repr(KI), "--kd", repr(KD), "--pid-ff", "1",
+    args = [opts.smcsim] + law_args(opts) + [
             "--mass", repr(MASS), "--damping", repr(DAMPING),
             "--mass-estimate", repr(MASS_HAT), "--damping-estimate", repr(DAMPING_HAT),
             "--kt", "2", "--ka", "50", "--voltage-limit", "10",
@@ -70,7 +100,7 @@ def smcsim_args(opts, substeps, cut):
             "--axial-depth", repr(AXIAL), "--feed", repr(opts.feed), "--ktc", repr(KTC), "--krc", repr(KRC),
             "--kte", "0", "--kre", "0",
             "--encoder", "0", "--position-filter", "0", "--velocity-filter", "0",
-            "--duration", repr(DURATION), "--period", repr(opts.period), "--substeps", str(substeps),
+            "--duration", repr(opts.duration), "--period", repr(opts.period), "--substeps", str(substeps),
             "--every", "1", "--csv"]
     if not cut:
         args.append("--no-cut")
@@ -128,14 +158,43 @@ class Cut:
         return sorted(out)
 
 
-def oracle(period, feed, cut_on):
-    """The sampled loop: x_k and F_k at t_k = k T, k = 0 .. periods - 1."""
+def pid_law(period):
+    def force(a_ref, v_ref, e, e_rate, integral, v_hat):
+        return MASS_HAT * a_ref + DAMPING_HAT * v_ref + KP * e + KI * integral + KD * e_rate
+    return force
+
+
+def sliding_law(opts, period):
+    """Eq. 8 or 9 with the chosen bracket and sign, in SI units."""
+    u = 1e-3 if opts.units == "mm" else 1.0
+    big_lambda, alpha, beta = opts.Lambda * u, opts.alpha * math.sqrt(u), opts.beta * u
+    sigma = -1.0 if opts.seed_sign else 1.0
+    w = [0.0]  # the super-twisting integral, N
+
+    def force(a_ref, v_ref, e, e_rate, integral, v_hat):
+        s = e_rate + MU * e + LAMBDA * integral
+        sign = (s > 0) - (s < 0)
+        if opts.bracket == "printed":
+            equivalent = MASS_HAT * (a_ref + DAMPING_HAT / MASS_HAT * v_ref + LAMBDA * e)
+        else:
+            equivalent = MASS_HAT * (a_ref + MU * e_rate + LAMBDA * e) + DAMPING_HAT * v_hat
+        if opts.controller == "smc":
+            return equivalent + sigma * big_lambda * sign
+        f = equivalent + sigma * (alpha * math.sqrt(abs(s)) * sign + w[0])
+        w[0] += period * beta * sign
+        return f
+    return force
+
+
+def oracle(opts, period, feed, cut_on):
+    """The sampled loop: t_k = k T, x_k, F_k and e_k, k = 0 .. periods - 1."""
     cut = Cut(feed, cut_on)
-    periods = round(DURATION / period)
+    law = sliding_law(opts, period) if opts.mode == "law" else pid_law(period)
+    periods = round(opts.duration / period)
     x, v = 0.0, AMPLITUDE * OMEGA  # on the reference: x_ref(0) = 0, v_ref(0) = A omega
     x_prev = None
     integral = 0.0
-    xs, fs = np.empty(periods), np.empty(periods)
+    xs, fs, es = np.empty(periods), np.empty(periods), np.empty(periods)
 
     def rhs(t, y, force):
         return [y[1], (force - DAMPING * y[1] - cut.force(t)) / MASS]
@@ -147,9 +206,9 @@ def oracle(period, feed, cut_on):
         a_ref = -AMPLITUDE * OMEGA * OMEGA * math.sin(OMEGA * t)
         v_hat = v if k == 0 else (x - x_prev) / period
         e = x_ref - x
-        force = MASS_HAT * a_ref + DAMPING_HAT * v_ref + KP * e + KI * integral + KD * (v_ref - v_hat)
+        force = law(a_ref, v_ref, e, v_ref - v_hat, integral, v_hat)
         force = max(-FORCE_LIMIT, min(FORCE_LIMIT, force))
-        xs[k], fs[k] = x, force
+        xs[k], fs[k], es[k] = x, force, e
         integral += e * period
         x_prev = x
         # Hold F over [t_k, t_{k+1}), restarting at each corner of F_d.
@@ -162,11 +221,11 @@ def oracle(period, feed, cut_on):
                 raise RuntimeError(sol.message)
             y = sol.y[:, -1]
         x, v = float(y[0]), float(y[1])
-    return np.arange(periods) * period, xs, fs
+    return np.arange(periods) * period, xs, fs, es
 
 
 def deviation(opts, substeps, cut_on, reference):
-    t_ref, x_ref, f_ref = reference
+    t_ref, x_ref, f_ref = reference[:3]
     t, x, f = run_smcsim(opts, substeps, cut_on)
     if len(t) != len(t_ref) or np.max(np.abs(t - t_ref)) > 1e-12:
         raise SystemExit(f"smcsim wrote {len(t)} samples, the oracle has {len(t_ref)} (or the times differ)")
@@ -177,7 +236,7 @@ def deviation(opts, substeps, cut_on, reference):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("mode", choices=["compare", "converge", "exact"])
+    p.add_argument("mode", choices=["compare", "converge", "exact", "law"])
     p.add_argument("--smcsim", default="smcsim")
     p.add_argument("--period", type=float, default=1e-4)
     p.add_argument("--substeps", default=None)
@@ -187,34 +246,56 @@ def main():
     p.add_argument("--ftol", type=float, default=1e-4, help="compare: bound on F's max relative deviation")
     p.add_argument("--effect-share", type=float, default=1e-3,
                    help="compare: bound on x's deviation over the cut's effect on x")
+    p.add_argument("--duration", type=float, default=0.2, help="s")
+    p.add_argument("--controller", choices=["smc", "sta"], default="smc", help="law: the sliding-mode law")
+    p.add_argument("--bracket", choices=["surface", "printed"], default="surface",
+                   help="law: the equivalent control from eq. 6, or the bracket printed in eq. 8-9")
+    p.add_argument("--seed-sign", action="store_true", help="law: switch with -Lambda sign(S) as printed")
+    p.add_argument("--Lambda", type=float, default=400.0)
+    p.add_argument("--alpha", type=float, default=200.0)
+    p.add_argument("--beta", type=float, default=200.0)
+    p.add_argument("--units", choices=["mm", "m"], default="mm", help="law: the gains' length unit, as smcsim's")
     p.add_argument("--min-order", type=float, default=1.8)
     p.add_argument("--max-order", type=float, default=2.3)
     opts = p.parse_args()
     failed = False
 
-    if opts.mode == "compare":
+    if opts.mode in ("law", "compare"):  # one run against the oracle
         substeps = int(opts.substeps or 10)
         tol = opts.tol if opts.tol is not None else 1e-6
-        reference = oracle(opts.period, opts.feed, not opts.no_cut)
+        reference = oracle(opts, opts.period, opts.feed, not opts.no_cut)
         dx, df = deviation(opts, substeps, not opts.no_cut, reference)
+        ok_x, ok_f = dx <= tol, df <= opts.ftol
+        verdict = f"max relative deviation x {dx:.3e} (<= {tol:g}: {ok_x}), F {df:.3e} (<= {opts.ftol:g}: {ok_f})"
+    if opts.mode == "law":
+        # The other bracket must land far from this oracle, or the check could not tell them apart.
+        this = opts.bracket
+        opts.bracket = "printed" if this == "surface" else "surface"
+        other_dx, _ = deviation(opts, substeps, not opts.no_cut, reference)
+        opts.bracket = this
+        ok_other = other_dx >= 100 * tol
+        print(f"{opts.controller}, {opts.bracket} bracket, sign {'-' if opts.seed_sign else '+'}, units {opts.units}, "
+              f"{opts.duration:g} s at T {opts.period:g} s: {verdict}; the other bracket's x {other_dx:.3e} "
+              f"(>= {100 * tol:g}: {ok_other}); oracle max |e| {np.max(np.abs(reference[3])) * 1e3:.4g} mm")
+        failed = not (ok_x and ok_f and ok_other)
+    elif opts.mode == "compare":
         # How much the cut moves the axis, to show the comparison can see it.
         effect = 0.0
         if not opts.no_cut:
-            _, x_free, _ = oracle(opts.period, opts.feed, False)
+            x_free = oracle(opts, opts.period, opts.feed, False)[1]
             effect = np.max(np.abs(reference[1] - x_free)) / np.max(np.abs(reference[1]))
         # The cut moves x by only ~1e-5 of its range, so the deviation must
         # also be small against that effect (a 2 % error in F_d is 3e-7 of x,
         # under 1e-6, but 2e-2 of the effect); F amplifies x's deviation by
         # k_d / T through the differenced velocity, hence its looser bound.
-        ok_x, ok_effect, ok_f = dx <= tol, opts.no_cut or dx <= opts.effect_share * effect, df <= opts.ftol
-        print(f"T {opts.period:g} s, {substeps} substeps, cut {'off' if opts.no_cut else 'on'}: "
-              f"max relative deviation x {dx:.3e} (<= {tol:g}: {ok_x}), F {df:.3e} (<= {opts.ftol:g}: {ok_f}); "
+        ok_effect = opts.no_cut or dx <= opts.effect_share * effect
+        print(f"T {opts.period:g} s, {substeps} substeps, cut {'off' if opts.no_cut else 'on'}: {verdict}; "
               f"the cut moves x by {effect:.3e}, deviation / effect {dx / effect if effect else 0:.3e} "
               f"(<= {opts.effect_share:g}: {ok_effect})")
         failed = not (ok_x and ok_effect and ok_f)
     elif opts.mode == "converge":
         counts = [int(s) for s in (opts.substeps or "1,2,4,8").split(",")]
-        reference = oracle(opts.period, opts.feed, True)
+        reference = oracle(opts, opts.period, opts.feed, True)
         errors = [deviation(opts, n, True, reference)[0] for n in counts]
         for n, err in zip(counts, errors):
             print(f"T {opts.period:g} s, {n} substeps: max relative deviation of x {err:.4e}")
@@ -228,7 +309,7 @@ def main():
     else:
         counts = [int(s) for s in (opts.substeps or "1,2,4,8").split(",")]
         tol = opts.tol if opts.tol is not None else 1e-10
-        reference = oracle(opts.period, opts.feed, False)
+        reference = oracle(opts, opts.period, opts.feed, False)
         for n in counts:
             dx, df = deviation(opts, n, False, reference)
             ok = dx <= tol

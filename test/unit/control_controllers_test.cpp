@@ -131,6 +131,49 @@ TEST(FeedController, PidSampledLoopFollowsTheTriplePoleResponse) {
   EXPECT_GT(worst, 1e-9) << "a sampled loop cannot be exact";
 }
 
+/// Without switching (Λ = 0) and with x_ref ≡ 0, x(0) = x0, ẋ(0) = 0, the two
+/// equivalent controls give linear loops (smcsim(1), CONTROLLERS):
+///   F_eq    = m̂ (μ ė + λ e) + b̂ ẋ:   m ẍ + (b − b̂ + m̂ μ) ẋ + m̂ λ x = 0,
+///   printed = m̂ λ e:                  m ẍ + b ẋ + m̂ λ x = 0,
+/// so x = x0 (r2 e^{r1 t} − r1 e^{r2 t}) / (r2 − r1) with the roots r1, r2.
+/// With the exact model F_eq's loop is the surface's s² + μ s + λ (eq. 5's
+/// Ṡ = 0), the printed one's s² + (b/m) s + λ: they agree only at μ = b/m.
+TEST(FeedController, EquivalentControlsGiveTheirCharacteristicPolynomials) {
+  struct Case {
+    double m_hat, b_hat;
+    bool printed;
+  };
+  for (const Case k : {Case{10, 250, false}, Case{10, 250, true}, Case{7, 200, false}, Case{7, 200, true}}) {
+    FeedDriveConfig c = smooth_config(ControllerKind::smc, 1);
+    c.mass_estimate_kg = k.m_hat, c.damping_estimate_kg_s = k.b_hat;
+    c.gains.switching = 0, c.gains.printed_bracket = k.printed;
+    c.reference = Reference::step(0, 0);
+    c.initial_velocity_mm_s = 0;
+    c.period_s = 1e-5, c.substeps = 1, c.duration_s = 2;
+    const double m = c.plant.mass_kg, b = c.plant.damping_kg_s, mu = c.gains.mu, lambda = c.gains.lambda;
+    const double damping = k.printed ? b : b - k.b_hat + k.m_hat * mu;
+    const double disc = std::sqrt(damping * damping - 4 * m * k.m_hat * lambda);
+    const double r1 = (-damping + disc) / (2 * m), r2 = (-damping - disc) / (2 * m);
+    double worst = 0;
+    const std::vector<FeedDriveSample> samples = run(c);
+    for (const FeedDriveSample& s : samples) {
+      const double want = disc > 0 ? (r2 * std::exp(r1 * s.t_s) - r1 * std::exp(r2 * s.t_s)) / (r2 - r1)
+                                   : (1 - r1 * s.t_s) * std::exp(r1 * s.t_s);  // the double root
+      worst = std::max(worst, std::abs(s.x_mm - want));
+    }
+    EXPECT_LT(worst, 1e-4) << k.m_hat << " " << k.printed;  // O(T) of the fast root: 25/s · 1e-5 s
+    if (k.m_hat == 10 && !k.printed) {
+      EXPECT_EQ(r1, -1);  // s² + 2s + 1
+    }
+    // The printed law's slow root, about −m̂λ/b, keeps over 90 % of the offset at 2 s.
+    if (k.printed) {
+      EXPECT_GT(samples.back().x_mm, 0.9);
+    } else {
+      EXPECT_LT(samples.back().x_mm, 0.85);
+    }
+  }
+}
+
 TEST(FeedController, LawsByHand) {
   ControlInput in{};
   in.x_ref = 1, in.v_ref = 2, in.a_ref = 3, in.x = 0.5, in.v = 1.5;
@@ -141,11 +184,18 @@ TEST(FeedController, LawsByHand) {
   EXPECT_DOUBLE_EQ(smc.force(in), 291.5);
   g.boundary_layer = 1.4;  // sat(−0.7/1.4) = −0.5
   EXPECT_DOUBLE_EQ(FeedController(g, 7, 200, 1e-4).force(in), 331.5 - 20);
+  g.printed_bracket = true;  // 7 (3 + (200/7)·2 + 1·0.5) − 20: 24.5 + 400 − 20
+  EXPECT_NEAR(FeedController(g, 7, 200, 1e-4).force(in), 404.5, 1e-12);
+  g.boundary_layer = 0, g.switching_sign = -1;  // and the seed's sign: + 40
+  EXPECT_NEAR(FeedController(g, 7, 200, 1e-4).force(in), 464.5, 1e-12);
   g = ControllerGains{};
   g.kind = ControllerKind::sta;  // α 200, β 200: 331.5 + 200·√0.7·(−1) + w, then w −= 1e-4·200
   FeedController sta(g, 7, 200, 1e-4);
   EXPECT_NEAR(sta.force(in), 331.5 - 200 * std::sqrt(0.7), 1e-12);
   EXPECT_NEAR(sta.force(in), 331.5 - 200 * std::sqrt(0.7) - 0.02, 1e-12);
+  g.printed_bracket = true;  // the same switching on 424.5
+  FeedController sta_printed(g, 7, 200, 1e-4);
+  EXPECT_NEAR(sta_printed.force(in), 424.5 - 200 * std::sqrt(0.7), 1e-12);
   g = ControllerGains{};
   g.kind = ControllerKind::pid, g.kp = 10, g.ki = 100, g.kd = 4, g.pid_feedforward = 0.5;
   // 0.5 (7·3 + 200·2) + 10·0.5 + 100·0.25 + 4·0.5

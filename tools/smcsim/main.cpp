@@ -163,9 +163,12 @@ void run_single(const FeedDriveConfig& config, bool summary_only, std::uint64_t 
   writer.flush();
   if (plotting) {
     const ControllerGains& g = config.gains;
-    const std::string gains = g.kind == ControllerKind::smc   ? fmt::format(" --Lambda {:g}", g.switching)
-                              : g.kind == ControllerKind::sta ? fmt::format(" --alpha {:g} --beta {:g}", g.alpha, g.beta)
-                                                              : std::string();
+    const bool sliding = g.kind == ControllerKind::smc || g.kind == ControllerKind::sta;
+    std::string gains = g.kind == ControllerKind::smc   ? fmt::format(" --Lambda {:g}", g.switching)
+                        : g.kind == ControllerKind::sta ? fmt::format(" --alpha {:g} --beta {:g}", g.alpha, g.beta)
+                                                        : std::string();
+    if (sliding && g.printed_bracket) gains += " --seed-bracket";
+    if (sliding && g.switching_sign < 0) gains += " --seed-sign";
     plot.write(svg_path, fmt::format("smcsim --controller {}{}: {}", controller_name(g.kind), gains, config.reference.describe()));
   }
   if (summary.diverged && !summary_only)
@@ -188,7 +191,7 @@ int main(int argc, char** argv) {
   GainGrids grids;
   std::string controller = "smc", units = "mm", reference = "sine", reference_file, svg_path;
   double amplitude = 1, omega = 3, step_at = 0, slope = 1;
-  bool summary_only = false, seed_sign = false, no_cut = false;
+  bool summary_only = false, seed_sign = false, seed_bracket = false, no_cut = false;
   std::uint64_t every = 10;
   const CLI::Validator finite_value = tk::cli::number_check(tk::cli::NumberDomain::finite), non_negative = tk::cli::number_check(tk::cli::NumberDomain::non_negative),
                        positive = tk::cli::number_check(tk::cli::NumberDomain::positive), fraction = tk::cli::number_check(tk::cli::NumberDomain::fraction);
@@ -202,6 +205,7 @@ int main(int argc, char** argv) {
   app.add_option("--lambda", c.gains.lambda, "surface: λ, 1/s²")->check(non_negative)->capture_default_str()->group(ctl);
   app.add_option("--boundary-layer", c.gains.boundary_layer, "smc: sat(S/φ) instead of sign(S); φ in length units per second (0: sign)")->check(non_negative)->capture_default_str()->type_name("PHI")->group(ctl);
   app.add_flag("--seed-sign", seed_sign, "switch with −Λ sign(S) as the seed writes it (destabilises: see smcsim(1))")->group(ctl);
+  app.add_flag("--seed-bracket", seed_bracket, "smc, sta: m̂[ẍ_ref + (b̂/m̂)ẋ_ref + λe] as the seed's eq. 8-9 print it, not F_eq (see smcsim(1))")->group(ctl);
   app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")->check(positive)->capture_default_str()->type_name("HZ")->group(ctl);
   app.add_option("--kp", c.gains.kp, "pid: proportional gain, kg/s² (N/m)")->check(non_negative)->group(ctl);
   app.add_option("--ki", c.gains.ki, "pid: integral gain, kg/s³")->check(non_negative)->group(ctl);
@@ -264,6 +268,7 @@ int main(int argc, char** argv) {
   return tool.run(argc, argv, [&] {
     c.gains.kind = parse_controller_kind(controller);
     c.gains.switching_sign = seed_sign ? -1 : 1;
+    c.gains.printed_bracket = seed_bracket;
     c.length_unit_m = units == "m" ? 1 : 1e-3;
     c.cut.enabled = !no_cut;
     const auto given = [&](const char* option) { return app.get_option(option)->count() > 0; };
