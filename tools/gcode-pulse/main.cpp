@@ -42,8 +42,9 @@ int main(int argc, char** argv) {
   CLI::App& app = tool.app();
   app.add_option("--steps-per-mm", steps, "steps per mm of X, Y and Z")->capture_default_str()->type_name("X,Y,Z");
   app.add_option("--method", method,
-                 "nearest (the neighbour nearest the programmed path), direct (the paper's: nearest the line "
-                 "from the current point to the end, re-origined every step), bresenham or dda")
+                 "nearest (the neighbour nearest the programmed path), direct (Panayotov & Goranov's: the "
+                 "neighbour nearest where the line from the current point to the end leaves the box of one "
+                 "step, the line drawn again after every step), bresenham or dda")
       ->check(CLI::IsMember(std::vector<std::string>(tk::motion::kStepMethodNames.begin(),
                                                      tk::motion::kStepMethodNames.end())))
       ->capture_default_str()
