@@ -457,8 +457,9 @@ for name, d, b in zip(names, map(json.loads, open(sys.argv[1])), map(json.loads,
 # 0.003679 (g19_arc); on the corpus 0.003643 (nearest, tort), 0.006909
 # (bresenham, tort), 0.006384 (dda, tort). No exception. (Arcs of a radius
 # of one or two steps can exceed it: not in the fixtures or the corpus.)
-# The paper's direct method is not held to it: its lines stray by up to an
-# eighth of their length (gcode-pulse_paper_oracle.bats).
+# The paper's direct method is not held to it: on its lines each minor axis
+# falls behind by up to an eighth of the major axis' steps
+# (gcode-pulse_paper_oracle.bats).
 @test "every method but the paper's direct keeps max_deviation_mm below one step diagonal on the fixtures (and the corpus)" {
   files=("$GCODE"/*.ngc)
   if [ -d "$CORPUS" ]; then mapfile -t -O "${#files[@]}" files < <(corpus_files); fi

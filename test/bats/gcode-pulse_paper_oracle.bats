@@ -100,7 +100,7 @@ print("ok")'
 # to the end rounds to the diagonal. On the 10 x 2.5 mm line (2,000 x 500
 # steps) that is 1,000 steps along X, 250 steps (1.25 mm) off in Y, 1.21 mm
 # from the line; the nearest method stays within half a step diagonal.
-@test "the paper's direct method strays from a long line by an eighth of its length; nearest does not" {
+@test "the paper's direct method strays from a 10 x 2.5 mm line by 1.2 mm; nearest stays within a step" {
   program 10,2.5,0 > path.ngc
   gcode-pulse --method direct --summary path.ngc > direct.json
   gcode-pulse --method nearest --summary path.ngc > nearest.json

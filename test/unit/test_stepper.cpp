@@ -315,6 +315,21 @@ TEST(Stepper, DirectDeviatesInProportionToTheLength) {
     EXPECT_LT(largest_deviation(StepMethod::direct, length), 1.01 * eighth + 0.005) << length;
     EXPECT_LT(largest_deviation(StepMethod::nearest, length), 0.005) << length;
   }
+  // In 3D: at the major axis' k-th step, each other axis, n_i k / N on the
+  // line, lags by at most N/8 of its own steps (and a step).
+  std::mt19937_64 random(9);
+  std::uniform_int_distribution<int> steps(-3000, 3000);
+  for (int line = 0; line < 40; ++line) {
+    Stepper stepper(StepMethod::direct, {1, 1, 1});
+    Motion motion;
+    motion.end = {3000, static_cast<double>(steps(random)), static_cast<double>(steps(random))};
+    const Walk w = walk(stepper, motion);
+    double worst = 0;
+    for (const auto& point : w.points)
+      for (int axis = 1; axis < 3; ++axis)
+        worst = std::max(worst, std::fabs(motion.end[axis] * static_cast<double>(point[0]) / 3000 - static_cast<double>(point[axis])));
+    EXPECT_LE(worst, 3000.0 / 8 + 1) << motion.end[1] << " " << motion.end[2];
+  }
 }
 
 TEST(Stepper, MethodsByName) {
