@@ -6,9 +6,10 @@
 ///
 /// The first byte chooses the options and the rest is the program (the
 /// seeds are programs with one such byte in front):
-///   byte % 3        method: direct, bresenham, dda
+///   byte % 3        method: nearest (or direct, below), bresenham, dda
 ///   byte / 3 % 2    lenient off, on
 ///   byte / 6 % 3    steps per mm: {200,200,400}, {1,1,1}, {1000,3,57}
+///   byte / 18 % 2   with byte % 3 = 0: nearest, direct (the paper's rule)
 /// Coordinates are limited to ±1000 mm (InterpreterOptions::max_coordinate_mm)
 /// and inputs should be run with -max_len=4096.
 ///
@@ -64,7 +65,8 @@ constexpr std::array<std::array<double, 3>, 3> kStepsPerMm{{{200, 200, 400}, {1,
 
 PulseOptions options_from(unsigned char byte) {
   PulseOptions options;
-  options.method = static_cast<StepMethod>(byte % 3);
+  constexpr StepMethod kMethods[3] = {StepMethod::nearest, StepMethod::bresenham, StepMethod::dda};
+  options.method = byte % 3 == 0 && (byte / 18) % 2 != 0 ? StepMethod::direct : kMethods[byte % 3];
   options.interpreter.lenient = (byte / 3) % 2 != 0;
   options.steps_per_mm = kStepsPerMm[(byte / 6) % 3];
   options.interpreter.max_coordinate_mm = kMaxCoordinateMm;

@@ -20,7 +20,7 @@
 namespace tk::motion {
 
 struct PulseOptions {
-  StepMethod method = StepMethod::direct;
+  StepMethod method = StepMethod::nearest;
   std::array<double, 3> steps_per_mm{200, 200, 400};
   MachineLimits limits;
   InterpreterOptions interpreter;

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "io/error.hpp"
 
@@ -16,6 +17,12 @@ namespace {
 int sign_of(std::int64_t value) { return (value > 0) - (value < 0); }
 
 }  // namespace
+
+StepMethod step_method_named(std::string_view name) {
+  for (std::size_t i = 0; i < kStepMethodNames.size(); ++i)
+    if (name == kStepMethodNames[i]) return static_cast<StepMethod>(i);
+  throw Error("unknown stepping method '" + std::string(name) + "'");
+}
 
 Stepper::Stepper(StepMethod method, std::array<double, 3> steps_per_mm) : method_(method), steps_per_mm_(steps_per_mm) {
   for (int axis = 0; axis < 3; ++axis) {
@@ -47,7 +54,7 @@ double Stepper::run(const Motion& motion, const std::function<void(std::span<con
 // (perpendicular to it) and its position `along` the line. A move s (a set
 // of axes, each one step toward the target) changes them by s - (s.u)u and
 // s.u, so the new squared deviation is |e|^2 + 2 e.s + |s_perp|^2: the
-// direct method compares 2 e.s + |s_perp|^2 over at most 7 moves, with
+// nearest method compares 2 e.s + |s_perp|^2 over at most 7 moves, with
 // |s_perp|^2 computed once per line.
 double Stepper::run_line(const Motion& motion, Chunk& out) {
   const auto target = quantise(motion.end);
@@ -138,6 +145,24 @@ double Stepper::run_line(const Motion& motion, Chunk& out) {
   };
 
   if (method_ == StepMethod::direct) {
+    // Panayotov & Goranov, in lattice units (the box of one step is then a
+    // cube): from the current point, the line to the target with n steps
+    // left on each axis leaves the box where the axis with the most left,
+    // N, reaches its face (t = 1/N), at n_i/N of a step on every other
+    // axis. The nearest of the 26 points rounds each coordinate to -1, 0
+    // or +1 on its own, so an axis steps when |n_i|/N is at least 1/2; a
+    // tie ("any matching vector can be chosen") goes to the larger stride.
+    // Re-origin: n changes, and with it the line. N falls by one an event.
+    for (;;) {
+      std::int64_t most = 0;
+      for (int axis = 0; axis < 3; ++axis) most = std::max<std::int64_t>(most, std::llabs(remaining[axis]));
+      if (most == 0) break;
+      int mask = 0;
+      for (int axis = 0; axis < 3; ++axis)
+        if (2 * std::llabs(remaining[axis]) >= most) mask |= 1 << axis;
+      apply(mask);
+    }
+  } else if (method_ == StepMethod::nearest) {
     // Moves with more axes first, so a tie goes to the larger stride.
     static constexpr int kOrder[7] = {7, 3, 5, 6, 1, 2, 4};
     int allowed = moving_axes();

@@ -1,11 +1,15 @@
 /// @file stepper.hpp
 /// @brief Turns lines and arcs into unit moves on the step lattice (every
-/// axis -1, 0 or +1 per event: one of the 26 neighbours), by three methods:
+/// axis -1, 0 or +1 per event: one of the 26 neighbours), by four methods:
 ///
-/// - direct (Panayotov & Goranov's single-impulse calculation): from the
-///   current lattice point, of the neighbours that make progress toward
-///   the target, take the one whose new position lies closest to the
-///   ideal path; re-origin there and repeat.
+/// - direct (Panayotov & Goranov's single-impulse calculation, as printed):
+///   the line from the current lattice point to the end pierces the box of
+///   one step around the point; move to the neighbour nearest that
+///   puncture, re-origin there (a new line to the end) and repeat. The
+///   paper gives no rule for arcs: they are walked as by `nearest`.
+/// - nearest: of the neighbours that make progress toward the target, the
+///   one whose new position lies closest to the programmed path (the line
+///   stays the programmed one, it is not recomputed after each step).
 /// - bresenham: the classic integer line algorithm (the major axis steps
 ///   every event, minor axes when their error term crosses) and its
 ///   midpoint generalisation for arcs.
@@ -21,13 +25,19 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "motion/gcode.hpp"
 
 namespace tk::motion {
 
-enum class StepMethod : std::uint8_t { direct, bresenham, dda };
+enum class StepMethod : std::uint8_t { direct, nearest, bresenham, dda };
+
+/// The methods' command-line names, in the enum's order.
+inline constexpr std::array<const char*, 4> kStepMethodNames{"direct", "nearest", "bresenham", "dda"};
+/// The method of that name; an Error for any other name.
+StepMethod step_method_named(std::string_view name);
 
 /// One event: the unit move of each axis, how far along the block's ideal
 /// path (mm from its start) the new lattice point lies, and the square of

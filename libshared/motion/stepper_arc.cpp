@@ -100,12 +100,14 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
     event.deviation_sq = radial * radial + axial * axial;
     out.push(event);
   };
+  // The paper prints no rule for arcs: its direct method walks them as the
+  // nearest method does, by the neighbour nearest the helix.
+  const bool nearest_walk = method_ == StepMethod::nearest || method_ == StepMethod::direct;
   // Cost of a candidate point: its squared distance from the ideal helix,
   // to first order (no square roots: only the ranking matters), with phi
   // advanced by the small-angle estimate of its turn. Bresenham's midpoint
   // decision is in the plane alone (the normal axis follows on its own),
   // so it weighs the radial error only.
-  const bool weigh_axial = method_ == StepMethod::direct;
   // Per event (`prepare`): the current point, and the ideal radius there
   // (its change over one step is far below the errors being ranked).
   double b0 = 0, b1 = 0, r_sq = 0;
@@ -124,7 +126,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
     const double phi_new = phi + turn;
     const double radial = (rho_sq - r_sq) * inv_2r;
     const double axial =
-        weigh_axial ? (static_cast<double>(at2 + d2) * h2 - g.height(phi_new)) * axial_to_normal : 0.0;
+        nearest_walk ? (static_cast<double>(at2 + d2) * h2 - g.height(phi_new)) * axial_to_normal : 0.0;
     return radial * radial + axial * axial;
   };
 
@@ -179,7 +181,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
           turn = candidate_turn;
         }
       };
-      if (method_ == StepMethod::direct && !rise) {
+      if (nearest_walk && !rise) {
         // The common case, no rise to make: the three in-plane neighbours
         // the tangent's way, ranked without branches (which of them wins
         // is what a branch predictor cannot guess). Same order and ties as
@@ -198,7 +200,7 @@ double Stepper::run_arc(const Motion& motion, Chunk& out) {
           best1 = c_wins || !b_beats_a ? now_sign1 : 0;
           turn = c_wins ? turn_c : b_beats_a ? turn_b : turn_a;
         }
-      } else if (method_ == StepMethod::direct) {
+      } else if (nearest_walk) {
         // The neighbours around the tangent: each in-plane axis still or one
         // step the tangent's way (a move against the tangent on an axis never
         // lies nearer an arc that turns less than 90 degrees in one step).

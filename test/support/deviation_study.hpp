@@ -1,9 +1,9 @@
 /// @file deviation_study.hpp
-/// @brief The seed's claim, measured: a stepping method's largest and RMS
-/// distance from the ideal path over random moves (lines of up to 10 mm per
+/// @brief How closely a stepping method follows the path: its largest and
+/// RMS distance from the ideal path over random moves (lines of up to 10 mm per
 /// axis in XY and 1 mm in Z, alternating with arcs of radius 0.2 to 10.2 mm
 /// and 0.1 to 6.1 radians, every other one a helix). Shared by the unit
-/// test that asserts the claim and the benchmark that reports it.
+/// test that compares the methods and the benchmark that reports them.
 #pragma once
 
 #include <array>

@@ -1,5 +1,6 @@
 /// @file main.cpp
-/// @brief gcode-pulse: G-code to timed step pulses (direct single-impulse
+/// @brief gcode-pulse: G-code to timed step pulses (the nearest neighbour
+/// to the programmed path, Panayotov & Goranov's direct single-impulse
 /// calculation, Bresenham or DDA), or a summary of them.
 #include <unistd.h>
 
@@ -33,15 +34,19 @@ int main(int argc, char** argv) {
                         "Turn G-code (RS274/NGC as LinuxCNC and grbl run it) into timed step pulses, one event "
                         "per lattice move (t, dx, dy, dz), or a summary of them.",
                         "See gcode-pulse(1).");
-  std::string steps = "200,200,400", method = "direct", svg_path, window_text, machine_file, axis_max_feed, axis_accel,
+  std::string steps = "200,200,400", method = "nearest", svg_path, window_text, machine_file, axis_max_feed, axis_accel,
               start;
   bool summary_only = false, lenient = false, binary = false;
   double accel = 500, rapid = 5000, max_feed = 0, junction_deviation = 0.01;
   std::size_t lookahead = 256;
   CLI::App& app = tool.app();
   app.add_option("--steps-per-mm", steps, "steps per mm of X, Y and Z")->capture_default_str()->type_name("X,Y,Z");
-  app.add_option("--method", method, "direct (the seed's nearest-neighbour calculation), bresenham or dda")
-      ->check(CLI::IsMember({"direct", "bresenham", "dda"}))
+  app.add_option("--method", method,
+                 "nearest (the neighbour nearest the programmed path), direct (Panayotov & Goranov's: the "
+                 "neighbour nearest where the line from the current point to the end leaves the box of one "
+                 "step, the line drawn again after every step), bresenham or dda")
+      ->check(CLI::IsMember(std::vector<std::string>(tk::motion::kStepMethodNames.begin(),
+                                                     tk::motion::kStepMethodNames.end())))
       ->capture_default_str()
       ->type_name("NAME");
   app.add_flag("--summary", summary_only, "write one summary record instead of the pulses");
@@ -97,9 +102,7 @@ int main(int argc, char** argv) {
     settings.override_with(given);
     tk::motion::PulseOptions options;
     settings.apply_to(options);
-    options.method = method == "bresenham" ? tk::motion::StepMethod::bresenham
-                     : method == "dda"     ? tk::motion::StepMethod::dda
-                                           : tk::motion::StepMethod::direct;
+    options.method = tk::motion::step_method_named(method);
     options.interpreter.lenient = lenient;
 
     if (binary && summary_only) throw tk::UsageError("--binary and --summary exclude each other");
