@@ -76,7 +76,7 @@ inline double correction_coefficient(const FeedOverrideParams& law, double ma) {
 inline double aggregate_override(const FeedOverrideParams& law, bool below_mz, double wk, double oa) {
   double on;
   if (below_mz)
-    on = 200 * (oa / 200 + wk - wk * oa / 200);  // (3)
+    on = oa + wk * (200 - oa);  // (3), 200 (O_a/200 + W_k - W_k O_a/200) multiplied out: never below O_a in rounding
   else if (law.variant == OverrideVariant::original)
     on = wk * oa;  // (4)
   else

@@ -133,8 +133,8 @@ assert all(a >= b >= 40 for a, b in zip(o, o[1:])) and o[0] < 180 and near(o[-1]
 
 @test "stream mode agrees with the Python law written from the paper: both variants, several parameter sets" {
   random_loads 6000 5 > loads.jsonl
-  for params in "" "--mz 45 --initial-override 10" "--variant modified" "--variant modified --k 0.5 --p 0.3 --d 10" \
-                "--variant modified --k 1 --p 1 --d 0 --mz 80" "--mz 75 --min-override 10" "--mz 100"; do
+  for params in "" "--mz 45 --initial-override 10" "--variant modified" "--variant modified --k 0.5 --p 0.3 --d 10 --mz 80" \
+                "--mz 100 --min-override 10"; do
     fuzzyfeed $params loads.jsonl > ours.jsonl
     /usr/bin/python3 "$LAW" stream $params < loads.jsonl > oracle.txt
     run against_oracle ours.jsonl oracle.txt

@@ -31,19 +31,17 @@ print(s["time_ratio"], of(1, "settled_override_pct", mean), of(1, "oscillation_p
 @test "Test 1 and the modified law: the findings, as inequalities, for three noise seeds" {
   for seed in 1 2 3; do
     read -r ratio o1 osc1 o3 osc3 load1 < <(summarise --seed "$seed")
-    # "When the cutting allowance was 1mm the drive load was about 25%":
-    # ours is a third of the 3 mm cut's, below M_z at the programmed feed.
-    py "assert 25 <= $load1 < 40, $load1"
-    # "[it] set ... \$AC_OVR at approximately 145%": ours rises at least as far.
-    py "assert $o1 >= 145, $o1"
-    # "theoretically, the process was 20% shorter": at least that.
-    py "assert $ratio <= 0.8, $ratio"
-    # "oscillation of +-10%": at least that, where the load reaches M_z (3 mm).
-    py "assert $osc3 >= 10, $osc3"
+    # The paper's direction, with its figure as the bound (ours go further;
+    # fuzzyfeed(1), FIDELITY, says why):
+    # "When the cutting allowance was 1mm the drive load was about 25%": ours
+    # is a third of the 3 mm cut's, well below M_z at the programmed feed.
+    # "[it] set ... \$AC_OVR at approximately 145%": the override rises past it.
+    # "theoretically, the process was 20% shorter": at least 20 %.
+    # "oscillation of +-10%": at least +-10 where the load reaches M_z (3 mm).
+    py "assert 25 <= $load1 < 40 and $o1 >= 145 and $ratio <= 0.8 and $osc3 >= 10, ($load1, $o1, $ratio, $osc3)"
     read -r ratio o1 osc1 o3 osc3 load1 < <(summarise --seed "$seed" --variant modified --k 0.1 --p 0.1 --d 25)
-    # "Overregulation was eliminated": under +-2 points everywhere.
-    py "assert $osc1 < 2 and $osc3 < 2, ($osc1, $osc3)"
-    py "assert $ratio <= 0.8, $ratio"
+    # "Overregulation was eliminated": under +-2 points everywhere; still shorter.
+    py "assert $osc1 < 2 and $osc3 < 2 and $ratio <= 0.8, ($osc1, $osc3, $ratio)"
   done
 }
 
