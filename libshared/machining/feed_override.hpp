@@ -63,7 +63,8 @@ inline double correction_coefficient(const FeedOverrideParams& law, double ma) {
   const double mz = law.mz_pct;
   const bool modified = law.variant == OverrideVariant::modified;
   if (ma < mz) {
-    const double wk = std::exp((-5 / (mz * mz)) * (ma * ma));  // (1)
+    const double ratio = ma / mz;  // (-5/M_z^2)(M_a^2) as -5 (M_a/M_z)^2: no 0 * inf for a tiny M_z
+    const double wk = std::exp(-5 * (ratio * ratio));  // (1)
     return modified ? law.k * wk : wk;                          // (5)
   }
   if (ma == mz) return 1;  // (2) and (6) at M_a = M_z; also where 1 - M_z/100 = 0

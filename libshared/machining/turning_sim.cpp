@@ -166,6 +166,10 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
   };
   const auto load_at_100 = [&](std::size_t i) { return load_of_chip(params.profile[i].depth_mm, params.feed_mm_rev); };
 
+  // A law that keeps the feed near 0 would otherwise run for ever.
+  const double baseline_cycles = baseline_time_s(params) / T;
+  const double cycle_limit = std::min(params.max_cycles, std::max(1e6, 1000 * baseline_cycles));
+
   RunStats run;
   sim::GaussianNoise noise(params.noise_pct, params.seed);
   FirstOrderLag signal(params.load_smoothing_s, T);
@@ -182,8 +186,9 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
   signal.reset(load_of_chip(params.profile[0].depth_mm, history.travel_over_revolution()));
   double weighted_load = 0, override_sum = 0;
   for (std::uint64_t cycle = 0;; ++cycle) {
-    if (static_cast<double>(cycle) > params.max_cycles)
-      throw Error(fmt::format("the cut takes more than {:g} IPO cycles: the override or the feed is too low", params.max_cycles));
+    if (static_cast<double>(cycle) > cycle_limit)
+      throw Error(fmt::format("the cut takes more than {:g} IPO cycles ({:g} times the cut at 100 %): the override stays near 0",
+                              cycle_limit, cycle_limit / baseline_cycles));
     const double t = static_cast<double>(cycle) * T;
     while (segment + 1 < params.profile.size() && z >= params.profile[segment].z_to_mm) {
       if (!recorder.empty()) run.segments.push_back(recorder.finish());

@@ -122,7 +122,7 @@ struct TurningParams {
   double noise_pct = 1.0;            ///< σ of the load signal's noise, % of rated
   std::uint64_t seed = 1;            ///< of the noise
   double above_tolerance = 0.1;      ///< "above M_z" means above (1 + this) M_z
-  double max_cycles = 2e8;           ///< a run longer than this is an error
+  double max_cycles = 2e8;           ///< a run longer than this, or than 1000 baselines (at least 10^6), is an error
 };
 
 /// Throws tk::UsageError naming the option of the first bad parameter.
