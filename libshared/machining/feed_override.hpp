@@ -63,14 +63,15 @@ inline double correction_coefficient(const FeedOverrideParams& law, double ma) {
   const double mz = law.mz_pct;
   const bool modified = law.variant == OverrideVariant::modified;
   if (ma < mz) {
-    const double ratio = ma / mz;  // (-5/M_z^2)(M_a^2) as -5 (M_a/M_z)^2: no 0 * inf for a tiny M_z
-    const double wk = std::exp(-5 * (ratio * ratio));  // (1)
-    return modified ? law.k * wk : wk;                          // (5)
+    // (1), (-5/M_z^2)(M_a^2) written -5 (M_a/M_z)^2: no 0 * inf for a tiny M_z.
+    const double ratio = ma / mz;
+    const double wk = std::exp(-5 * (ratio * ratio));
+    return modified ? law.k * wk : wk;  // (5)
   }
   if (ma == mz) return 1;  // (2) and (6) at M_a = M_z; also where 1 - M_z/100 = 0
   const double excess = ma / 100 - mz / 100;
   const double wk = std::exp(-10 / (1 - mz / 100) * (excess * excess));  // (2)
-  return modified ? law.p * wk + (1 - law.p) : wk;                        // (6)
+  return modified ? law.p * wk + (1 - law.p) : wk;                       // (6)
 }
 
 /// O_n from W_k and O_a: (3) below M_z, (4) or (7) from M_z on.
