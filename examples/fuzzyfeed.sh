@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# fuzzyfeed: the seed's turning experiment and the law as a filter.
+# fuzzyfeed: Stryczek & Orawczak's turning test and the law as a filter.
 #   1. simulate the default part (1 mm allowance with three 3 mm collars,
-#      E295, 0.4 mm/rev, 9 kW) under the original law and the modified one,
-#      with a trace and a plot each (original.svg, modified.svg);
+#      E295, 0.4 mm/rev, 9 kW) under the original law (1)-(4) and the
+#      modified one (5)-(7), with a trace and a plot each (original.svg,
+#      modified.svg), and the figures the paper reports for its Test 1;
 #   2. run the original run's measured load through the stream mode with
 #      the modified law (open loop: what it would have commanded);
 #   3. the law on a CSV of spindle loads from a machine, fields passed through.
@@ -13,14 +14,20 @@ out="${1:-${TMPDIR:-/tmp}/fuzzyfeed-example}"
 mkdir -p "$out"
 
 echo "== 1. the simulated cut, M_z = 60 % (plots: $out/original.svg, $out/modified.svg)"
-printf '%-9s %8s %8s %7s %14s %13s %12s\n' variant time_s base_s ratio oscillation_pct sd_pct above_mz_s
+echo "   the paper: ~25 % load at 1 mm, override ~145 %, 20 % shorter, +-10 % oscillation; none after the modification"
+printf '%-9s %9s %8s %9s %11s %11s %11s\n' variant load1_100 shorter O_1mm osc_1mm O_3mm osc_3mm
 for variant in original modified; do
-  fuzzyfeed --simulate --mz 60 --variant "$variant" --trace "$out/$variant.jsonl" --svg "$out/$variant.svg" |
+  fuzzyfeed --simulate --segments --mz 60 --variant "$variant" --trace "$out/$variant.jsonl" --svg "$out/$variant.svg" |
     python3 -c '
 import json, sys
-r = json.load(sys.stdin)
-print("%-9s %8.2f %8.2f %7.3f %14.2f %13.2f %12.2f" % (r["variant"], r["machining_time_s"], r["baseline_time_s"], r["time_ratio"],
-      r["override_oscillation_pct"], r["override_sd_pct"], r["time_above_mz_s"]))'
+rows = [json.loads(l) for l in sys.stdin]
+segs, s = rows[:-1], rows[-1]
+def at(depth, key, pick):
+    return pick([r[key] for r in segs if r["depth"] == depth])
+mean = lambda v: sum(v) / len(v)
+print("%-9s %8.1f%% %7.1f%% %8.1f%% %10.2f %10.1f%% %10.2f" % (s["variant"], at(1, "load_at_100_pct", max),
+      100 * (1 - s["time_ratio"]), at(1, "settled_override_pct", mean), at(1, "oscillation_pct", max),
+      at(3, "settled_override_pct", mean), at(3, "oscillation_pct", max)))'
 done
 
 echo
@@ -33,8 +40,8 @@ mod = [json.loads(l) for l in open(sys.argv[2])]
 def swing(rows, lo, hi):
     vals = [r["override"] for r in rows if lo <= r["t"] < hi]
     return (max(vals) - min(vals)) / 2
-print("%d records; override swing from 3 s to 7 s (1 mm allowance): original law +-%.1f %%, modified law on the same load +-%.1f %%"
-      % (len(mod), swing(orig, 3, 7), swing(mod, 3, 7)))
+print("%d records; override swing from 9.5 s to 11 s (3 mm allowance): original law +-%.1f %%, modified law on the same load +-%.1f %%"
+      % (len(mod), swing(orig, 9.5, 11), swing(mod, 9.5, 11)))
 ' "$out/original.jsonl" "$out/replayed.jsonl"
 
 echo

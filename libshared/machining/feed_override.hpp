@@ -1,22 +1,36 @@
 /// @file feed_override.hpp
-/// @brief The fuzzy adaptive feed-rate override of Stryczek & Orawczak ("A
-/// fuzzy control strategy in the turning process"), as reconstructed from
-/// the issue's description: once per interpolation (IPO) cycle the spindle
-/// load M_a is compared with the operator's set value M_z, a Sugeno-style
-/// fuzzy rule base gives a factor W_k, and the feed override becomes
-/// O_n = W_k * O_a. The "modified" law of the paper averages the load over
-/// d cycles, applies only a fraction k of the correction and holds the
-/// override inside a dead band of +-p * M_z.
+/// @brief The adaptive feed override of Stryczek & Orawczak, "A fuzzy
+/// control strategy in the turning process" (seed 001), as the paper prints
+/// it. Once per interpolation (IPO) cycle the spindle load M_a (% of rated
+/// torque) and the operator's set value M_z give a correction coefficient
+/// W_k, and W_k is aggregated with the override in force O_a into the new
+/// override O_n:
 ///
-/// The per-sample step is inline and allocation-free: the moving average
-/// keeps a ring buffer and a running sum, so a sample costs O(1) whatever d is.
+///   below M_z  (1) W_k = exp((-5/M_z^2) M_a^2)
+///              (3) O_n = 200 (O_a/200 + W_k - W_k O_a/200)   fuzzy disjunction
+///   above M_z  (2) W_k = exp(-10/(1 - M_z/100) (M_a/100 - M_z/100)^2)
+///              (4) O_n = W_k O_a                              fuzzy conjunction
+///
+/// The modified law replaces (1), (2) and (4) and keeps (3):
+///
+///   below M_z  (5) W_k = k exp((-5/M_z^2) M_a^2)
+///   above M_z  (6) W_k = p exp(-10/(1 - M_z/100) (M_a/100 - M_z/100)^2) + (1 - p)
+///              (7) O_n = W_k (O_a - d) + d
+///
+/// with the paper's k = p = 0.1 and d = 25 (an override in %).
+///
+/// Where the paper is silent: at M_a = M_z exactly the conjunction branch
+/// applies, where (2) and (6) give W_k = 1 and (4) and (7) give O_n = O_a
+/// (the load is on target: the override holds; (1) would give e^-5 there).
+/// The laws keep O_n in the paper's (0, 200] without clamping: (3) is a
+/// probabilistic sum of O_a/200 and W_k in [0, 1], (4) and (7) are convex
+/// combinations. O_n is only held at or below 200 against rounding, and
+/// kept at or above an optional floor (none by default).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <string>
-#include <vector>
 
 namespace tk::machining {
 
@@ -26,91 +40,77 @@ enum class OverrideVariant { original, modified };
 OverrideVariant parse_override_variant(const std::string& name);
 const char* variant_name(OverrideVariant variant);
 
-/// Largest override the law may command, in percent (formula (4)).
+/// The largest override, % ("the value set O_n = (0, 200%]").
 inline constexpr double kMaxOverridePct = 200;
 
 struct FeedOverrideParams {
   OverrideVariant variant = OverrideVariant::original;
-  double mz_pct = 60;               ///< M_z, the load to keep, % of rated (0, 100]
-  double gain_k = 0.1;              ///< k of formula (6), (0, 1]
-  double dead_band_p = 0.1;         ///< p of formula (7), [0, 1): relative to M_z
-  std::size_t average_d = 25;       ///< d of formula (5), IPO cycles, >= 1
-  double initial_override_pct = 100;  ///< O_a before the first sample, (0, 200]
-  /// The floor of the override. Without one, a long overload (W_k = 0.5 every
-  /// cycle) would halve the override towards 0 and it could then take many
-  /// cycles (or, at exactly 0, forever) to recover.
-  double min_override_pct = 1;
+  double mz_pct = 60;                 ///< M_z, % of rated torque, (0, 100]
+  double k = 0.1;                     ///< (5): the disjunction's weight, (0, 1]
+  double p = 0.1;                     ///< (6): the conjunction's weight, [0, 1]
+  double d_pct = 25;                  ///< (7): the override an overload pulls towards, % in [0, 100]
+  double initial_override_pct = 100;  ///< O_a before the first cycle, (0, 200]
+  double min_override_pct = 0;        ///< an optional floor of O_n, % in [0, 200); 0: none
 };
 
 /// Throws tk::UsageError naming the option (--mz, --k, --p, --d,
 /// --initial-override, --min-override) of the first parameter out of range.
 void validate(const FeedOverrideParams& params);
 
-/// Formulas (2)-(3): the rule base's factor for the load ratio r = M_a / M_z
-/// (r >= 0). Three triangular terms LOW, OK, HIGH with singleton consequents
-/// 2 (speed up), 1 (hold) and 0.5 (slow down), weighted average. With these
-/// terms the weights always sum to 1 for r >= 0, so W_k is piecewise linear:
-/// 2 - r below M_z, 1.5 - r/2 from M_z to 2 M_z, 0.5 above.
-inline double fuzzy_factor(double r) {
-  const double low = std::max(0.0, 1 - r);
-  const double ok = std::max(0.0, 1 - std::abs(r - 1));
-  const double high = std::min(1.0, std::max(0.0, r - 1));
-  return (2 * low + 1 * ok + 0.5 * high) / (low + ok + high);
+/// W_k for the load M_a (%, finite and >= 0): (1)/(2), or (5)/(6) for the
+/// modified law; 1 at M_a = M_z.
+inline double correction_coefficient(const FeedOverrideParams& law, double ma) {
+  const double mz = law.mz_pct;
+  const bool modified = law.variant == OverrideVariant::modified;
+  if (ma < mz) {
+    // (1), (-5/M_z^2)(M_a^2) written -5 (M_a/M_z)^2: no 0 * inf for a tiny M_z.
+    const double ratio = ma / mz;
+    const double wk = std::exp(-5 * (ratio * ratio));
+    return modified ? law.k * wk : wk;  // (5)
+  }
+  if (ma == mz) return 1;  // (2) and (6) at M_a = M_z; also where 1 - M_z/100 = 0
+  const double excess = ma / 100 - mz / 100;
+  const double wk = std::exp(-10 / (1 - mz / 100) * (excess * excess));  // (2)
+  return modified ? law.p * wk + (1 - law.p) : wk;                       // (6)
+}
+
+/// O_n from W_k and O_a: (3) below M_z, (4) or (7) from M_z on.
+inline double aggregate_override(const FeedOverrideParams& law, bool below_mz, double wk, double oa) {
+  double on;
+  if (below_mz)
+    on = oa + wk * (200 - oa);  // (3), 200 (O_a/200 + W_k - W_k O_a/200) multiplied out: never below O_a in rounding
+  else if (law.variant == OverrideVariant::original)
+    on = wk * oa;  // (4)
+  else
+    on = wk * (oa - law.d_pct) + law.d_pct;  // (7)
+  return std::clamp(on, law.min_override_pct, kMaxOverridePct);
 }
 
 /// What one IPO cycle decided.
 struct OverrideStep {
-  double load_used;     ///< M_a (original) or the moving average M_avg (modified), %
-  double factor;        ///< the factor applied: W_k (original), W_k' (modified)
-  double override_pct;  ///< O_n, the new override, %
+  double wk;            ///< W_k
+  double override_pct;  ///< O_n, the override written for the next cycle, %
 };
 
-/// The controller with its state: the override O_a and, for the modified
-/// law, the ring buffer of the last d loads. Call step() once per IPO cycle
-/// with the measured load (finite, 0-100 %: the caller checks).
+/// The law with its one piece of state, the override in force. Call step()
+/// once per IPO cycle with the measured load (finite, 0-100 %: the caller
+/// checks).
 class FeedOverride {
  public:
   explicit FeedOverride(const FeedOverrideParams& params);
 
   OverrideStep step(double load_pct) {
-    double used = load_pct;
-    if (modified_) used = average(load_pct);
-    double factor = fuzzy_factor(used / mz_);
-    if (modified_) {
-      factor = 1 + gain_k_ * (factor - 1);                   // (6)
-      if (std::abs(used - mz_) <= dead_band_) factor = 1;  // (7)
-    }
-    override_ = std::clamp(factor * override_, min_override_, kMaxOverridePct);  // (4)
-    return {used, factor, override_};
+    const double wk = correction_coefficient(params_, load_pct);
+    override_ = aggregate_override(params_, load_pct < params_.mz_pct, wk, override_);
+    return {wk, override_};
   }
 
   double override_pct() const { return override_; }
   const FeedOverrideParams& params() const { return params_; }
 
  private:
-  /// (5): the mean of the last d loads (of all loads so far while fewer
-  /// than d have come). The running sum is recomputed from the buffer each
-  /// time the ring wraps, so rounding errors cannot accumulate over a long
-  /// run: O(d) work every d samples.
-  double average(double load) {
-    sum_ += load - ring_[next_];
-    ring_[next_] = load;
-    if (filled_ < ring_.size()) ++filled_;
-    if (++next_ == ring_.size()) {
-      next_ = 0;
-      resum();
-    }
-    return sum_ / static_cast<double>(filled_);
-  }
-  void resum();
-
   FeedOverrideParams params_;
-  bool modified_;
-  double mz_, gain_k_, dead_band_, min_override_;
   double override_;
-  std::vector<double> ring_;
-  std::size_t next_ = 0, filled_ = 0;
-  double sum_ = 0;
 };
 
 }  // namespace tk::machining

@@ -17,11 +17,12 @@ namespace {
 /// The override samples of one segment, summarised when the tool leaves it.
 class SegmentRecorder {
  public:
-  void start(std::size_t index, const AllowanceSegment& segment, double t_s) {
+  void start(std::size_t index, const AllowanceSegment& segment, double t_s, double load_at_100) {
     stats_ = {};
     stats_.index = index;
     stats_.segment = segment;
     stats_.start_s = t_s;
+    stats_.load_at_100_pct = load_at_100;
     samples_.clear();
   }
   void add(double t_s, double dt_s, double load_true, double override_pct) {
@@ -40,19 +41,25 @@ class SegmentRecorder {
     s.mean_override_pct /= static_cast<double>(samples_.size());
     // The settled part: the second half of the segment's time, so that the
     // swing of the override after a step in the allowance does not count.
+    // The swing is taken about the least-squares line through it, so that
+    // a slow drift (the override still creeping towards 200 %) is not
+    // counted as oscillation.
     const double settled_from = s.start_s + s.duration_s / 2;
-    double low = kMaxOverridePct, high = 0, sum = 0, squares = 0;
-    std::size_t n = 0;
+    double n = 0, st = 0, so = 0, stt = 0, sto = 0;
+    for (const auto& [t, o] : samples_)
+      if (t >= settled_from) n += 1, st += t, so += o, stt += t * t, sto += t * o;
+    if (n == 0) return s;
+    s.settled_override_pct = so / n;
+    const double spread = stt - st * st / n;
+    const double slope = spread > 0 ? (sto - st * so / n) / spread : 0;
+    double low = kMaxOverridePct, high = -kMaxOverridePct, squares = 0;
     for (const auto& [t, o] : samples_) {
       if (t < settled_from) continue;
-      low = std::min(low, o), high = std::max(high, o);
-      sum += o, squares += o * o, ++n;
+      const double r = o - s.settled_override_pct - slope * (t - st / n);
+      low = std::min(low, r), high = std::max(high, r), squares += r * r;
     }
-    if (n > 0) {
-      s.oscillation_pct = (high - low) / 2;
-      const double mean = sum / static_cast<double>(n);
-      s.override_sd_pct = std::sqrt(std::max(0.0, squares / static_cast<double>(n) - mean * mean));
-    }
+    s.oscillation_pct = (high - low) / 2;
+    s.override_sd_pct = std::sqrt(squares / n);
     return s;
   }
 
@@ -62,6 +69,14 @@ class SegmentRecorder {
 };
 
 }  // namespace
+
+RevolutionHistory::RevolutionHistory(double revolution_cycles, double z_now, double step_before_mm)
+    : back_(static_cast<std::size_t>(revolution_cycles)),
+      fraction_(revolution_cycles - static_cast<double>(back_)),
+      ring_(back_ + 2) {
+  for (std::size_t j = 0; j < ring_.size(); ++j)
+    ring_[(ring_.size() - j) % ring_.size()] = z_now - static_cast<double>(j) * step_before_mm;
+}
 
 double kienzle_force_n(const CuttingModel& model, double depth_mm, double feed_mm_rev) {
   const double sin_kappa = std::sin(model.kappa_deg * std::numbers::pi / 180);
@@ -116,14 +131,20 @@ void validate(const TurningParams& p) {
   positive(p.diameter_mm, "--diameter");
   positive(p.ipo_s, "--ipo");
   if (p.ipo_s > 1) throw UsageError("--ipo is in seconds and must be at most 1");
-  if (!(p.lag_s >= 0 && std::isfinite(p.lag_s))) throw UsageError("--lag must be a finite number >= 0");
+  positive(p.kv, "--kv");
+  if (!(p.load_smoothing_s >= 0 && std::isfinite(p.load_smoothing_s))) throw UsageError("--lag must be a finite number >= 0");
   if (!(p.noise_pct >= 0 && p.noise_pct <= 100)) throw UsageError("--noise must be in [0, 100] % of rated");
   if (!(p.above_tolerance >= 0 && std::isfinite(p.above_tolerance))) throw UsageError("--above-tol must be a finite number >= 0");
+  // The revolution history holds one position per IPO cycle of a revolution.
+  if (!(1 / (spindle_speed_rev_s(p) * p.ipo_s) <= 1e6))
+    throw UsageError("a spindle revolution lasts more than 10^6 IPO cycles: raise --cutting-speed or --ipo, or lower --diameter");
 }
 
 double spindle_speed_rev_s(const TurningParams& params) {
   return params.cutting_speed_m_min * 1000 / (std::numbers::pi * params.diameter_mm) / 60;
 }
+
+double axis_lag_s(const TurningParams& params) { return 60.0 / (1000.0 * params.kv); }
 
 double baseline_time_s(const TurningParams& params) {
   const double length = params.profile.back().z_to_mm - params.profile.front().z_from_mm;
@@ -139,42 +160,53 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
   const double n_rev_s = spindle_speed_rev_s(params);
   const double above = mz_pct * (1 + params.above_tolerance);
   const double z_end = params.profile.back().z_to_mm;
-  const auto load_at = [&](double depth, double override_pct) {
-    return spindle_load_pct(params.cutting, depth, params.feed_mm_rev * override_pct / 100, params.cutting_speed_m_min);
+  const double T = params.ipo_s;
+  const auto load_of_chip = [&](double depth, double chip_mm) {
+    return spindle_load_pct(params.cutting, depth, chip_mm, params.cutting_speed_m_min);
   };
+  const auto load_at_100 = [&](std::size_t i) { return load_of_chip(params.profile[i].depth_mm, params.feed_mm_rev); };
+
+  // A law that keeps the feed near 0 would otherwise run for ever.
+  const double baseline_cycles = baseline_time_s(params) / T;
+  const double cycle_limit = std::min(params.max_cycles, std::max(1e6, 1000 * baseline_cycles));
 
   RunStats run;
   sim::GaussianNoise noise(params.noise_pct, params.seed);
-  FirstOrderLag signal(params.lag_s, params.ipo_s);
+  FirstOrderLag signal(params.load_smoothing_s, T);
+  // The law is switched on with the tool already cutting at the initial
+  // override: axis, chip and signal start settled.
   double override_pct = control ? control->override_pct() : 100;
+  const double feed_rate_at_100 = params.feed_mm_rev * n_rev_s;  // mm/s
+  FeedAxis axis(axis_lag_s(params), T, feed_rate_at_100 * override_pct / 100);
   double z = params.profile.front().z_from_mm;
+  RevolutionHistory history(1 / (n_rev_s * T), z, axis.velocity() * T);
   std::size_t segment = 0;
   SegmentRecorder recorder;
-  recorder.start(0, params.profile[0], 0);
-  // The control is switched on with the tool already in the cut: the signal
-  // starts settled at the first segment's load rather than rising from 0.
-  signal.reset(load_at(params.profile[0].depth_mm, override_pct));
+  recorder.start(0, params.profile[0], 0, load_at_100(0));
+  signal.reset(load_of_chip(params.profile[0].depth_mm, history.travel_over_revolution()));
   double weighted_load = 0, override_sum = 0;
   for (std::uint64_t cycle = 0;; ++cycle) {
-    if (static_cast<double>(cycle) > params.max_cycles)
-      throw Error(fmt::format("the cut takes more than {:g} IPO cycles: the override or the feed is too low", params.max_cycles));
-    const double t = static_cast<double>(cycle) * params.ipo_s;
+    if (static_cast<double>(cycle) > cycle_limit)
+      throw Error(fmt::format("the cut takes more than {:g} IPO cycles ({:g} times the cut at 100 %): the override stays near 0",
+                              cycle_limit, cycle_limit / baseline_cycles));
+    const double t = static_cast<double>(cycle) * T;
     while (segment + 1 < params.profile.size() && z >= params.profile[segment].z_to_mm) {
       if (!recorder.empty()) run.segments.push_back(recorder.finish());
       ++segment;
-      recorder.start(segment, params.profile[segment], t);
+      recorder.start(segment, params.profile[segment], t, load_at_100(segment));
     }
     const double depth = params.profile[segment].depth_mm;
-    const double feed = params.feed_mm_rev * override_pct / 100;
-    const double load_true = load_at(depth, override_pct);
+    const double chip = history.travel_over_revolution();
+    const double load_true = load_of_chip(depth, chip);
     const double load = std::clamp(signal.update(load_true) + noise.next(), 0.0, 100.0);
-    const OverrideStep step = control ? control->step(load) : OverrideStep{load, 1, 100};
+    const OverrideStep step = control ? control->step(load) : OverrideStep{1, 100};
 
-    const double feed_rate_mm_s = feed * n_rev_s;
-    double dt = params.ipo_s;
-    const bool last = z + feed_rate_mm_s * dt >= z_end;
-    if (last) dt = (z_end - z) / feed_rate_mm_s;  // the cut ends inside this cycle
-    if (on_sample) on_sample({t, z, depth, load_true, load, step, feed});
+    // This cycle the axis is commanded at the override in force (O_a).
+    const double travel = axis.advance(feed_rate_at_100 * override_pct / 100);
+    double dt = T;
+    const bool last = z + travel >= z_end;
+    if (last) dt = T * (z_end - z) / travel;  // the cut ends inside this cycle
+    if (on_sample) on_sample({t, z, depth, chip, load_true, load, step});
     recorder.add(t, dt, load_true, step.override_pct);
     weighted_load += load_true * dt;
     override_sum += step.override_pct;
@@ -185,8 +217,9 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
       run.time_s = t + dt;
       break;
     }
-    z += feed_rate_mm_s * dt;
-    override_pct = step.override_pct;  // O_n takes effect in the next cycle
+    z += travel;
+    history.push(z);
+    override_pct = step.override_pct;  // O_n is in force from the next cycle
   }
   run.segments.push_back(recorder.finish());
   run.mean_load_pct = run.time_s > 0 ? weighted_load / run.time_s : 0;

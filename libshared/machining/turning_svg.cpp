@@ -26,10 +26,8 @@ void TurningSvg::write(const std::string& path, const TurningPlotInfo& info) con
 
   TimePanel load{.y_label = "spindle load M_a, % of rated", .range = TimePanel::Range::fixed, .y_min = 0,
                  .y_max = std::ceil(load_max / 20) * 20, .y_step = 20};
-  if (info.dead_band_pct > 0)
-    load.levels.push_back({info.mz_pct - info.dead_band_pct, info.mz_pct + info.dead_band_pct, "#2a9d3a", ""});
   load.levels.push_back({info.mz_pct, info.mz_pct, "#c8281e", fmt::format("M_z = {:g} %", info.mz_pct)});
-  load.series = {{field_of(samples_, &Sample::load), "#9aa7b8", 1, "measured (lag, noise)"},
+  load.series = {{field_of(samples_, &Sample::load), "#9aa7b8", 1, "measured M_a (smoothed, noise)"},
                  {field_of(samples_, &Sample::load_true), "#1b1b1b", 1.5, "true load"}};
 
   TimePanel feed{.y_label = "feed override O, %", .range = TimePanel::Range::fixed, .y_min = 0, .y_max = 200};

@@ -1,6 +1,6 @@
 /// @file turning_svg.hpp
 /// @brief The plot of a simulated cut, like the seed's figures 5-7: the
-/// spindle load (top panel, with M_z and the dead band) and the feed
+/// spindle load (top panel, with M_z) and the feed
 /// override (bottom panel, with the allowance under it) against time.
 #pragma once
 
@@ -12,7 +12,6 @@ namespace tk::machining {
 struct TurningPlotInfo {
   std::string title;
   double mz_pct = 60;
-  double dead_band_pct = 0;  ///< half-width of the band drawn round M_z; 0 draws none
 };
 
 class TurningSvg {

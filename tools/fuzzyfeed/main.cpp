@@ -25,12 +25,8 @@ using namespace tk::machining;
 /// The stream mode: each record gets the law's answer to its load.
 void filter_records(const std::vector<std::string>& inputs, const FeedOverrideParams& law_params, tk::io::OutputFormat format) {
   FeedOverride law(law_params);
-  const bool modified = law_params.variant == OverrideVariant::modified;
   tk::io::RecordWriter writer(format);
-  if (modified)
-    writer.declare_fields({"load_avg", "wk", "override", "feed_out"});
-  else
-    writer.declare_fields({"wk", "override", "feed_out"});
+  writer.declare_fields({"wk", "override", "feed_out"});
   tk::io::RecordReader reader(inputs.empty() ? std::vector<std::string>{"-"} : inputs);
   tk::Record record;
   double previous_t = -std::numeric_limits<double>::infinity();
@@ -44,8 +40,7 @@ void filter_records(const std::vector<std::string>& inputs, const FeedOverridePa
     const std::optional<double> feed = tk::io::optional_number_field(record, "feed", where);
     if (feed && *feed < 0) throw tk::Error(fmt::format("feed {} is negative", *feed), where);
     const OverrideStep step = law.step(load);
-    if (modified) record["load_avg"] = step.load_used;
-    record["wk"] = step.factor;
+    record["wk"] = step.wk;
     record["override"] = step.override_pct;
     if (feed) record["feed_out"] = *feed * step.override_pct / 100;
     writer.write(record);
@@ -56,25 +51,19 @@ void filter_records(const std::vector<std::string>& inputs, const FeedOverridePa
 /// The trace file: one record per IPO cycle, through the fast numeric path.
 class TraceFile {
  public:
-  TraceFile(const std::string& path, tk::io::OutputFormat format, bool modified, double programmed_feed)
-      : file_(path, format), modified_(modified), feed_(programmed_feed) {
-    std::vector<std::string> fields{"t", "z", "depth", "load_true", "load"};
-    if (modified) fields.push_back("load_avg");
-    fields.insert(fields.end(), {"wk", "override", "feed", "feed_out"});
-    file_.declare_fields(fields);
+  TraceFile(const std::string& path, tk::io::OutputFormat format, double programmed_feed)
+      : file_(path, format), feed_(programmed_feed) {
+    file_.declare_fields({"t", "z", "depth", "chip", "load_true", "load", "wk", "override", "feed", "feed_out"});
   }
   void add(const TraceSample& s) {
-    std::vector<double>& v = values_;
-    v.assign({s.t_s, s.z_mm, s.depth_mm, s.load_true_pct, s.load_pct});
-    if (modified_) v.push_back(s.step.load_used);
-    v.insert(v.end(), {s.step.factor, s.step.override_pct, feed_, feed_ * s.step.override_pct / 100});
-    file_.write_numbers(v, 0);
+    values_.assign({s.t_s, s.z_mm, s.depth_mm, s.chip_mm, s.load_true_pct, s.load_pct, s.step.wk, s.step.override_pct, feed_,
+                    feed_ * s.step.override_pct / 100});
+    file_.write_numbers(values_, 0);
   }
   void close() { file_.close(); }
 
  private:
   tk::io::RecordFile file_;
-  bool modified_;
   double feed_;
   std::vector<double> values_;
 };
@@ -83,8 +72,9 @@ tk::Record segment_record(const SegmentStats& s) {
   return {{"record", "segment"},       {"segment", s.index},
           {"z_from", s.segment.z_from_mm}, {"z_to", s.segment.z_to_mm},
           {"depth", s.segment.depth_mm},   {"start_s", s.start_s},
-          {"duration_s", s.duration_s},    {"mean_load_pct", s.mean_load_pct},
-          {"max_load_pct", s.max_load_pct}, {"mean_override_pct", s.mean_override_pct},
+          {"duration_s", s.duration_s},    {"load_at_100_pct", s.load_at_100_pct},
+          {"mean_load_pct", s.mean_load_pct}, {"max_load_pct", s.max_load_pct},
+          {"mean_override_pct", s.mean_override_pct}, {"settled_override_pct", s.settled_override_pct},
           {"oscillation_pct", s.oscillation_pct}, {"override_sd_pct", s.override_sd_pct}};
 }
 
@@ -92,32 +82,34 @@ tk::Record segment_record(const SegmentStats& s) {
 
 int main(int argc, char** argv) {
   tk::cli::ToolApp tool("fuzzyfeed",
-                        "Fuzzy adaptive feed-rate override (Stryczek & Orawczak, reconstructed): reads spindle-load "
-                        "records (t, load, optionally feed), one per IPO cycle, and adds the factor wk and the new "
-                        "override; or simulates a turning pass under the law (--simulate).",
+                        "Fuzzy adaptive feed-rate override, Stryczek & Orawczak's formulas (1)-(7): reads spindle-load "
+                        "records (t, load, optionally feed), one per IPO cycle, and adds the correction coefficient wk and "
+                        "the new override; or simulates a turning pass under the law (--simulate).",
                         "See fuzzyfeed(1).");
   tool.add_input_files("load records (t, load[, feed]); standard input when none or '-'");
   FeedOverrideParams law;
   TurningParams process;
   std::string variant = "original", profile_path, trace_path, svg_path;
-  long long average_d = 25;
   double power_kw = 9;
   bool simulate = false, segments = false;
   CLI::App& app = tool.app();
   const std::string law_group = "The law (both modes)", sim_group = "Simulation (with --simulate)";
-  app.add_option("--mz", law.mz_pct, "M_z, the spindle load to hold, % of rated")->capture_default_str()->type_name("PCT")->group(law_group);
-  app.add_option("--variant", variant, "original: formulas (1)-(4); modified: (5)-(7)")
+  app.add_option("--mz", law.mz_pct, "M_z, the spindle load (% of rated torque) to hold")->capture_default_str()->type_name("PCT")->group(law_group);
+  app.add_option("--variant", variant, "original: formulas (1)-(4); modified: (5), (6), (3), (7)")
       ->check(CLI::IsMember({"original", "modified"}))
       ->capture_default_str()
       ->group(law_group);
-  app.add_option("--k", law.gain_k, "modified: gain, the fraction of the correction applied")->capture_default_str()->group(law_group);
-  app.add_option("--p", law.dead_band_p, "modified: dead band, a fraction of M_z")->capture_default_str()->group(law_group);
-  app.add_option("--d", average_d, "modified: loads averaged, IPO cycles")->capture_default_str()->type_name("N")->group(law_group);
-  app.add_option("--initial-override", law.initial_override_pct, "O_a before the first sample, %")
+  app.add_option("--k", law.k, "modified, (5): W_k = k exp(...) below M_z")->capture_default_str()->group(law_group);
+  app.add_option("--p", law.p, "modified, (6): W_k = p exp(...) + (1 - p) above M_z")->capture_default_str()->group(law_group);
+  app.add_option("--d", law.d_pct, "modified, (7): O_n = W_k (O_a - d) + d above M_z, %")
       ->capture_default_str()
       ->type_name("PCT")
       ->group(law_group);
-  app.add_option("--min-override", law.min_override_pct, "the override's floor, % (its ceiling is 200)")
+  app.add_option("--initial-override", law.initial_override_pct, "O_a before the first cycle, %")
+      ->capture_default_str()
+      ->type_name("PCT")
+      ->group(law_group);
+  app.add_option("--min-override", law.min_override_pct, "a floor for the override, % (0: none; the ceiling is 200)")
       ->capture_default_str()
       ->type_name("PCT")
       ->group(law_group);
@@ -138,7 +130,10 @@ int main(int argc, char** argv) {
       app.add_option("--mc", process.cutting.mc, "Kienzle exponent m_c (E295)")->capture_default_str(),
       app.add_option("--kappa", process.cutting.kappa_deg, "the tool's setting angle κ_r, degrees")->capture_default_str(),
       app.add_option("--ipo", process.ipo_s, "interpolation cycle, s")->capture_default_str()->type_name("S"),
-      app.add_option("--lag", process.lag_s, "time constant of the load signal, s")->capture_default_str()->type_name("S"),
+      app.add_option("--kv", process.kv, "the feed axis's servo gain K_v, (m/min)/mm")->capture_default_str()->type_name("KV"),
+      app.add_option("--lag", process.load_smoothing_s, "smoothing time constant of the load signal, s")
+          ->capture_default_str()
+          ->type_name("S"),
       app.add_option("--noise", process.noise_pct, "σ of the load signal's noise, % of rated")->capture_default_str()->type_name("PCT"),
       app.add_option("--seed", process.seed, "of the noise")->capture_default_str()->type_name("N"),
       app.add_option("--above-tol", process.above_tolerance, "time_above_mz counts load above (1 + this) M_z")
@@ -148,8 +143,6 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&] {
     law.variant = parse_override_variant(variant);
-    if (average_d < 1) throw tk::UsageError("--d must be an integer >= 1");
-    law.average_d = static_cast<std::size_t>(average_d);
     validate(law);
     if (!simulate) {
       for (CLI::Option* option : sim_options)
@@ -165,7 +158,7 @@ int main(int argc, char** argv) {
 
     std::unique_ptr<TraceFile> trace;
     if (!trace_path.empty())
-      trace = std::make_unique<TraceFile>(trace_path, tool.output_format(), law.variant == OverrideVariant::modified, process.feed_mm_rev);
+      trace = std::make_unique<TraceFile>(trace_path, tool.output_format(), process.feed_mm_rev);
     TurningSvg plot;
     const RunStats run = simulate_turning(process, law, law.mz_pct, [&](const TraceSample& s) {
       if (trace) trace->add(s);
@@ -177,11 +170,10 @@ int main(int argc, char** argv) {
       if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} IPO cycles only", TurningSvg::kMaxSamples));
       TurningPlotInfo info;
       info.mz_pct = law.mz_pct;
-      if (law.variant == OverrideVariant::modified) info.dead_band_pct = law.dead_band_p * law.mz_pct;
-      info.title = fmt::format("fuzzyfeed --variant {}: M_z {:g} %, {:g} mm/rev, v_c {:g} m/min, IPO {:g} ms, lag {:g} ms, noise {:g} %; "
-                               "{:.1f} s against {:.1f} s at 100 %",
+      info.title = fmt::format("fuzzyfeed --variant {}: M_z {:g} %, {:g} mm/rev, v_c {:g} m/min, IPO {:g} ms, K_v {:g}, "
+                               "lag {:g} ms, noise {:g} %; {:.1f} s against {:.1f} s at 100 %",
                                variant, law.mz_pct, process.feed_mm_rev, process.cutting_speed_m_min, process.ipo_s * 1e3,
-                               process.lag_s * 1e3, process.noise_pct, run.time_s, baseline.time_s);
+                               process.kv, process.load_smoothing_s * 1e3, process.noise_pct, run.time_s, baseline.time_s);
       plot.write(svg_path, info);
     }
 
