@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -14,6 +15,7 @@ namespace {
 
 struct Stroke {
   Point start, direction;  ///< direction: unit, toward the boundary
+  double phase = 0;        ///< of the control's clock at the start, in periods: [0, 1)
 };
 
 void check_positive(double value, const char* name) {
@@ -59,15 +61,36 @@ std::vector<Stroke> make_strokes(const SignedDistance& distance, const std::vect
     const double ox = nx * std::cos(angle) - ny * std::sin(angle), oy = nx * std::sin(angle) + ny * std::cos(angle);
     const Point start{target.x + approach * ox, target.y + approach * oy};
     if (!(distance(start) > 0.5 * approach * std::cos(max_angle))) continue;
-    strokes.push_back({start, {-ox, -oy}});
+    strokes.push_back({start, {-ox, -oy}, unit(random)});
   }
   if (strokes.empty()) throw Error("no stroke could start outside the region");
   return strokes;
 }
 
-/// Runs every stroke under one guard. `order_stop(d, previous_d)` says
-/// whether the control orders a stop at a sample (previous_d is NaN at
-/// the first sample).
+/// How deep the straight path from at(0) to at(t_end), travelled at v,
+/// goes into the region: 0 when it never enters. The distance is
+/// 1-Lipschitz, so stepping by it (sphere tracing, at least 0.1 um) finds
+/// the entry without passing it; from there the path is sampled every
+/// 0.01 mm to its end.
+template <typename At>
+double deepest_on_path(const SignedDistance& distance, At at, double t_end, double v) {
+  double t = 0;
+  for (;;) {
+    const double d = distance(at(t));
+    if (d < 0) break;
+    if (t >= t_end) return 0;
+    t = std::min(t_end, t + std::max(d, 1e-4) / v);
+  }
+  double deepest = 0;
+  for (const double dt = 0.01 / v;; t = std::min(t_end, t + dt)) {
+    deepest = std::max(deepest, -distance(at(t)));
+    if (t >= t_end) return deepest;
+  }
+}
+
+/// Runs every stroke under one guard. `order_stop(p, d, previous_d)` says
+/// whether the control orders a stop at a sample at p, distance d
+/// (previous_d is NaN at the first sample).
 template <typename Guard>
 InvasionSimResult run(const SignedDistance& distance, const std::vector<Stroke>& strokes, double travel_limit,
                       const InvasionSimOptions& options, Guard order_stop) {
@@ -81,20 +104,25 @@ InvasionSimResult run(const SignedDistance& distance, const std::vector<Stroke>&
     double stop_time = travel_limit / v;
     double previous = std::nan("");
     for (std::uint64_t k = 0;; ++k) {
-      const double t = static_cast<double>(k) * options.period_s;
+      const double t = (static_cast<double>(k) + s.phase) * options.period_s;
       if (t + options.latency_s >= stop_time) break;
-      const double d = distance(at(t));
-      if (order_stop(d, previous)) {
+      const Point p = at(t);
+      const double d = distance(p);
+      if (order_stop(p, d, previous)) {
         stop_time = t + options.latency_s;
         break;
       }
       previous = d;
     }
+    // The seed's success: "the prohibited region is not trespassed", on the
+    // way as well as where the tool stops (a stroke can clip a sharp
+    // corner and stop beyond it).
+    const double depth = deepest_on_path(distance, at, stop_time, v);
     const double final_distance = distance(at(stop_time));
-    if (final_distance < 0) {
+    if (depth > 0) {
       ++result.invasions;
-      invasion_sum += -final_distance;
-      result.max_invasion_mm = std::max(result.max_invasion_mm, -final_distance);
+      invasion_sum += depth;
+      result.max_invasion_mm = std::max(result.max_invasion_mm, depth);
     } else {
       undercut_sum += final_distance;
       result.max_undercut_mm = std::max(result.max_undercut_mm, final_distance);
@@ -109,10 +137,25 @@ InvasionSimResult run(const SignedDistance& distance, const std::vector<Stroke>&
 
 }  // namespace
 
+double interval_line_distance(const std::vector<std::vector<Point>>& boundary, Point p) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& loop : boundary)
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Point a = loop[i], b = loop[(i + 1) % loop.size()];
+      const bool in_x = std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x);
+      const bool in_y = std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+      const double length = std::hypot(b.x - a.x, b.y - a.y);
+      if (!(in_x || in_y) || !(length > 0)) continue;
+      nearest = std::min(nearest, std::abs((p.x - a.x) * (b.y - a.y) - (p.y - a.y) * (b.x - a.x)) / length);
+    }
+  return nearest;
+}
+
 std::vector<InvasionSimResult> simulate_invasions(const SignedDistance& distance,
                                                   const std::vector<std::vector<Point>>& boundary,
                                                   const std::vector<double>& tolerances_mm,
-                                                  const InvasionSimOptions& options) {
+                                                  const InvasionSimOptions& options,
+                                                  const SignedDistance* fixed_guard_distance) {
   check_positive(options.feed_mm_s, "the feed");
   check_positive(options.period_s, "the control period");
   if (!(options.latency_s >= 0) || !std::isfinite(options.latency_s)) throw Error("the latency must not be negative");
@@ -133,15 +176,16 @@ std::vector<InvasionSimResult> simulate_invasions(const SignedDistance& distance
 
   std::vector<InvasionSimResult> results;
   for (double tolerance : tolerances_mm) {
-    InvasionSimResult r = run(distance, strokes, travel_limit, options,
-                              [&](double d, double) { return d < tolerance; });
+    InvasionSimResult r = run(distance, strokes, travel_limit, options, [&](Point p, double d, double) {
+      return (fixed_guard_distance ? (*fixed_guard_distance)(p) : d) < tolerance;
+    });
     r.guard = "fixed-tolerance";
     r.tolerance_mm = tolerance;
     results.push_back(r);
   }
   // Ours: stop now unless waiting one more period could still stop in time.
   const double horizon = options.period_s + options.latency_s;
-  InvasionSimResult ours = run(distance, strokes, travel_limit, options, [&](double d, double previous) {
+  InvasionSimResult ours = run(distance, strokes, travel_limit, options, [&](Point, double d, double previous) {
     if (std::isnan(previous)) return d < options.margin_mm;
     const double rate = std::min(0.0, (d - previous) / options.period_s);  // mm/s, falling when approaching
     return d + rate * horizon < options.margin_mm;
