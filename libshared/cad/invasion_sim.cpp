@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include "io/error.hpp"
@@ -67,30 +68,15 @@ std::vector<Stroke> make_strokes(const SignedDistance& distance, const std::vect
   return strokes;
 }
 
-/// How deep the straight path from at(0) to at(t_end), travelled at v,
-/// goes into the region: 0 when it never enters. The distance is
-/// 1-Lipschitz, so stepping by it (sphere tracing, at least 0.1 um) finds
-/// the entry without passing it; from there the path is sampled every
-/// 0.01 mm to its end.
-template <typename At>
-double deepest_on_path(const SignedDistance& distance, At at, double t_end, double v) {
-  double t = 0;
-  for (;;) {
-    const double d = distance(at(t));
-    if (d < 0) break;
-    if (t >= t_end) return 0;
-    t = std::min(t_end, t + std::max(d, 1e-4) / v);
-  }
-  double deepest = 0;
-  for (const double dt = 0.01 / v;; t = std::min(t_end, t + dt)) {
-    deepest = std::max(deepest, -distance(at(t)));
-    if (t >= t_end) return deepest;
-  }
-}
+/// One reading of the control: where the tool is and its distance to the region.
+struct Sample {
+  Point at;
+  double distance = 0;
+};
 
-/// Runs every stroke under one guard. `order_stop(p, d, previous_d)` says
-/// whether the control orders a stop at a sample at p, distance d
-/// (previous_d is NaN at the first sample).
+/// Runs every stroke under one guard. `order_stop(now, before)` says
+/// whether the control orders a stop at a reading (`before`: the reading
+/// one period earlier, null at the stroke's first).
 template <typename Guard>
 InvasionSimResult run(const SignedDistance& distance, const std::vector<Stroke>& strokes, double travel_limit,
                       const InvasionSimOptions& options, Guard order_stop) {
@@ -102,22 +88,21 @@ InvasionSimResult run(const SignedDistance& distance, const std::vector<Stroke>&
     auto at = [&](double t) { return Point{s.start.x + v * t * s.direction.x, s.start.y + v * t * s.direction.y}; };
     // With no stop ordered, the stroke ends where the operator lets go.
     double stop_time = travel_limit / v;
-    double previous = std::nan("");
+    std::optional<Sample> before;
     for (std::uint64_t k = 0;; ++k) {
       const double t = (static_cast<double>(k) + s.phase) * options.period_s;
       if (t + options.latency_s >= stop_time) break;
-      const Point p = at(t);
-      const double d = distance(p);
-      if (order_stop(p, d, previous)) {
+      const Sample now{at(t), distance(at(t))};
+      if (order_stop(now, before ? &*before : nullptr)) {
         stop_time = t + options.latency_s;
         break;
       }
-      previous = d;
+      before = now;
     }
     // The seed's success: "the prohibited region is not trespassed", on the
     // way as well as where the tool stops (a stroke can clip a sharp
     // corner and stop beyond it).
-    const double depth = deepest_on_path(distance, at, stop_time, v);
+    const double depth = deepest_on_move(distance, s.start, at(stop_time));
     const double final_distance = distance(at(stop_time));
     if (depth > 0) {
       ++result.invasions;
@@ -176,19 +161,21 @@ std::vector<InvasionSimResult> simulate_invasions(const SignedDistance& distance
 
   std::vector<InvasionSimResult> results;
   for (double tolerance : tolerances_mm) {
-    InvasionSimResult r = run(distance, strokes, travel_limit, options, [&](Point p, double d, double) {
-      return (fixed_guard_distance ? (*fixed_guard_distance)(p) : d) < tolerance;
+    InvasionSimResult r = run(distance, strokes, travel_limit, options, [&](const Sample& now, const Sample*) {
+      return (fixed_guard_distance ? (*fixed_guard_distance)(now.at) : now.distance) < tolerance;
     });
     r.guard = "fixed-tolerance";
     r.tolerance_mm = tolerance;
     results.push_back(r);
   }
-  // Ours: stop now unless waiting one more period could still stop in time.
-  const double horizon = options.period_s + options.latency_s;
-  InvasionSimResult ours = run(distance, strokes, travel_limit, options, [&](Point, double d, double previous) {
-    if (std::isnan(previous)) return d < options.margin_mm;
-    const double rate = std::min(0.0, (d - previous) / options.period_s);  // mm/s, falling when approaching
-    return d + rate * horizon < options.margin_mm;
+  // Ours: stop now unless waiting one more period could still stop in
+  // time, judged on the move from here to where the tool would be when
+  // that stop took effect, extrapolated from the last two readings.
+  const double horizon = (options.period_s + options.latency_s) / options.period_s;
+  InvasionSimResult ours = run(distance, strokes, travel_limit, options, [&](const Sample& now, const Sample* before) {
+    if (!before) return now.distance < options.margin_mm;
+    const Point ahead{now.at.x + horizon * (now.at.x - before->at.x), now.at.y + horizon * (now.at.y - before->at.y)};
+    return first_below(distance, now.at, ahead, options.margin_mm).has_value();
   });
   ours.guard = "latency-aware";
   ours.tolerance_mm = options.margin_mm;

@@ -16,20 +16,20 @@
 ///   exceeds T, and leaves the rest of T as under-cut otherwise. The
 ///   distance it compares is the exact one, or the seed's eq. (2) (see
 ///   interval_line_distance).
-/// - latency-aware (ours): from the last two samples, the approach speed
-///   toward the boundary (the rate at which the distance falls); stop when
-///   the distance predicted for the moment a stop ordered at the next
-///   sample would take effect falls below a margin. On a straight approach
-///   at constant feed the prediction is exact, so the tool stops between
-///   `margin` and `margin + approach speed x period` from the boundary.
+/// - latency-aware (ours): from the last two samples, the tool's velocity;
+///   stop when the move from here to where a stop ordered at the next
+///   sample would take effect comes closer than a margin to the region
+///   (see first_below). On a straight stroke at constant feed the
+///   prediction is exact, whatever the region's shape, so the tool never
+///   enters and stops within `margin + approach speed x period` of it.
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "cad/drawing.hpp"
+#include "cad/path_clearance.hpp"
 
 namespace tk::cad {
 
@@ -55,10 +55,6 @@ struct InvasionSimResult {
   double mean_invasion_mm = 0;    ///< deepest point of the path, over the invading strokes
   double max_invasion_mm = 0;
 };
-
-/// Signed distance to the prohibited region's boundary: positive outside
-/// (where the tool may be), negative inside.
-using SignedDistance = std::function<double(Point)>;
 
 /// The seed's eq. (2): the distance |(P - P1) x (P2 - P1)| / |P2 - P1|
 /// from p to the line of each edge P1P2 of `boundary` (closed polylines)

@@ -394,7 +394,7 @@ print(ours == theirs or [p for p in theirs if p not in ours])' "$CORPUS/gcode/vi
 }
 
 @test "--simulate: the fixed guard invades below speed x latency, the latency-aware guard never, with less under-cut" {
-  run --separate-stderr dxf2region "$DXF/plate.dxf" --layer OUTLINE --tool-radius 2 --simulate --strokes 200 --tolerances 2,4,6
+  run --separate-stderr dxf2region "$DXF/plate.dxf" --layer OUTLINE --tool-radius 2 --simulate --strokes 200 --tolerances 2,4,6 --joystick-speed 50
   assert_success
   run py '
 import json, sys
