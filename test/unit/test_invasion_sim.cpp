@@ -157,6 +157,20 @@ TEST(PathClearance, AMoveThatClipsACornerGoesIn) {
   EXPECT_NEAR(*near, (1.5 - std::sqrt(0.07)) / 3, 1e-4);
 }
 
+// The seed's eq. (2), by hand: |(P - P1) x (P2 - P1)| / |P2 - P1| for the
+// edges whose x or y interval holds P.
+TEST(IntervalLineDistance, TheSeedsEquationTwoByHand) {
+  const std::vector<std::vector<Point>> square = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}};
+  EXPECT_DOUBLE_EQ(interval_line_distance(square, {5, -3}), 3);   // below: the bottom edge's x interval
+  EXPECT_DOUBLE_EQ(interval_line_distance(square, {13, 4}), 3);   // right: the right edge's y interval
+  EXPECT_DOUBLE_EQ(interval_line_distance(square, {5, 6}), 4);    // inside: unsigned, the nearest line
+  EXPECT_TRUE(std::isinf(interval_line_distance(square, {12, 13})));  // off every interval: never checked
+  // Beyond a segment's end, in its x interval: the line passes 15 / hypot(1, 10) from (0.5, 20), the
+  // segment's end (1, 10) is 10 mm away.
+  const std::vector<std::vector<Point>> steep = {{{0, 0}, {1, 10}, {-50, 5}}};
+  EXPECT_NEAR(interval_line_distance(steep, {0.5, 20}), 15 / std::hypot(1, 10), 1e-12);
+}
+
 TEST(InvasionSim, SameStrokesForTheSameSeed) {
   InvasionSimOptions options;
   options.strokes = 50;
