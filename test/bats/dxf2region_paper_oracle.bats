@@ -39,12 +39,18 @@ assert rows[-1]["loose_ends"] == 0 and rows[-1]["entities_read"]["LINE"] == len(
   [[ "$stderr" == *"2 loose ends"* ]]
 }
 
-@test "Fig. 4(b): inside the triangle exactly where the angles P4 sees the corners under sum to 360 degrees" {
-  py 'import random
-random.seed(3)
+# check_random_points FILE SEED XMIN XMAX YMIN YMAX: --check of 400 random points in the box.
+check_random_points() {
+  py 'import random, sys
+random.seed(int(sys.argv[1]))
+x0, x1, y0, y1 = map(float, sys.argv[2:])
 for _ in range(400):
-    print("{\"x\": %.6f, \"y\": %.6f}" % (random.uniform(-20, 170), random.uniform(-20, 130)))' > points.jsonl
-  run --separate-stderr dxf2region "$DXF/seed_triangle.dxf" --layer 0 --check points.jsonl
+    print("{\"x\": %.6f, \"y\": %.6f}" % (random.uniform(x0, x1), random.uniform(y0, y1)))' "${@:2}" |
+    dxf2region -q "$DXF/$1" --layer 0 --check
+}
+
+@test "Fig. 4(b): inside the triangle exactly where the angles P4 sees the corners under sum to 360 degrees" {
+  run check_random_points seed_triangle.dxf 3 -20 170 -20 130
   assert_success
   check '
 c = [(0, 0), (150, 0), (60, 110)]
@@ -61,11 +67,7 @@ assert 50 < inside < 350, inside' <<< "$output"
 }
 
 @test "eq. (2): where the perpendicular's foot falls on the nearest segment, the distance is |(P - P1) x (P2 - P1)| / |P2 - P1|" {
-  py 'import random
-random.seed(4)
-for _ in range(400):
-    print("{\"x\": %.6f, \"y\": %.6f}" % (random.uniform(-30, 170), random.uniform(-40, 150)))' > points.jsonl
-  run --separate-stderr dxf2region "$DXF/seed_heptagon.dxf" --layer 0 --check points.jsonl
+  run check_random_points seed_heptagon.dxf 4 -30 170 -40 150
   assert_success
   check '
 c = [(0, 0), (70, -10), (130, 20), (140, 80), (90, 120), (30, 110), (-10, 60)]
