@@ -136,11 +136,14 @@ double interval_line_distance(const std::vector<std::vector<Point>>& boundary, P
   return nearest;
 }
 
-std::vector<InvasionSimResult> simulate_invasions(const SignedDistance& distance,
-                                                  const std::vector<std::vector<Point>>& boundary,
-                                                  const std::vector<double>& tolerances_mm,
-                                                  const InvasionSimOptions& options,
-                                                  const SignedDistance* fixed_guard_distance) {
+namespace {
+
+struct StrokeLengths {
+  double approach;      ///< from a stroke's start to its target
+  double travel_limit;  ///< where the operator lets go when no stop comes
+};
+
+StrokeLengths stroke_lengths(const std::vector<double>& tolerances_mm, const InvasionSimOptions& options) {
   check_positive(options.feed_mm_s, "the feed");
   check_positive(options.period_s, "the control period");
   if (!(options.latency_s >= 0) || !std::isfinite(options.latency_s)) throw Error("the latency must not be negative");
@@ -156,8 +159,26 @@ std::vector<InvasionSimResult> simulate_invasions(const SignedDistance& distance
   // a stroke that is never stopped ends well inside.
   const double coast = options.feed_mm_s * (options.latency_s + 2 * options.period_s);
   const double approach = largest + 3 * coast + 10;
-  const std::vector<Stroke> strokes = make_strokes(distance, boundary, approach, options);
   const double travel_limit = approach + coast + 10;
+  if (!(travel_limit <= 1e6)) throw Error("strokes of more than a kilometre: the feed or the latency is too large");
+  if (!(travel_limit / (options.feed_mm_s * options.period_s) <= 1e7))
+    throw Error("more than 10 million control readings a stroke: the period is too short for the feed, or the latency too long");
+  return {approach, travel_limit};
+}
+
+}  // namespace
+
+void check_invasion_sim(const std::vector<double>& tolerances_mm, const InvasionSimOptions& options) {
+  stroke_lengths(tolerances_mm, options);
+}
+
+std::vector<InvasionSimResult> simulate_invasions(const SignedDistance& distance,
+                                                  const std::vector<std::vector<Point>>& boundary,
+                                                  const std::vector<double>& tolerances_mm,
+                                                  const InvasionSimOptions& options,
+                                                  const SignedDistance* fixed_guard_distance) {
+  const auto [approach, travel_limit] = stroke_lengths(tolerances_mm, options);
+  const std::vector<Stroke> strokes = make_strokes(distance, boundary, approach, options);
 
   std::vector<InvasionSimResult> results;
   for (double tolerance : tolerances_mm) {

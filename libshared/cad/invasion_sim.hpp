@@ -64,6 +64,12 @@ struct InvasionSimResult {
 /// outside, and it understates the distance beyond a segment's end.
 double interval_line_distance(const std::vector<std::vector<Point>>& boundary, Point p);
 
+/// Throws Error when the options or tolerances do not make an experiment
+/// (not positive and finite, strokes over a kilometre, or more than 10
+/// million readings a stroke),
+/// as simulate_invasions would.
+void check_invasion_sim(const std::vector<double>& tolerances_mm, const InvasionSimOptions& options);
+
 /// The strokes aim at points of `boundary` (closed polylines of the
 /// region's boundary, each oriented with the region on its left: outer
 /// boundaries counter-clockwise, holes clockwise), starting outside at

@@ -129,7 +129,26 @@ int main(int argc, char** argv) {
     if (travel_latency) require_positive(latency_mm, "--latency-mm", true);
     if (travel_period) require_positive(period_mm, "--period-mm");
     const std::vector<double> speeds = number_list(speeds_text, "--joystick-speed");
-    for (double v : speeds) require_positive(v, "--joystick-speed");
+    const std::vector<double> tolerances = number_list(tolerances_text, "--tolerances");
+    auto experiment_at = [&](double v) {
+      tk::cad::InvasionSimOptions options;
+      options.feed_mm_s = v;
+      options.latency_s = travel_latency ? latency_mm / v : latency;
+      options.period_s = travel_period ? period_mm / v : period;
+      options.margin_mm = margin;
+      options.strokes = strokes;
+      options.seed = seed;
+      return options;
+    };
+    if (simulate)
+      for (double v : speeds) {
+        require_positive(v, "--joystick-speed");
+        try {
+          tk::cad::check_invasion_sim(tolerances, experiment_at(v));
+        } catch (const tk::Error& e) {
+          throw tk::UsageError(std::string("--simulate: ") + e.what());
+        }
+      }
     if (!units.empty()) {
       try {
         tk::cad::millimetres_per_named_unit(units);
@@ -223,19 +242,12 @@ int main(int argc, char** argv) {
       return;
     }
     if (simulate) {
-      const std::vector<double> tolerances = number_list(tolerances_text, "--tolerances");
       const auto guard = [&](tk::cad::Point p) { return tk::cad::guard_query(*part.index, p, tool_radius, machining).distance; };
       std::vector<std::vector<tk::cad::Point>> boundary;  // the region on the left of each
       for (const tk::cad::Loop& loop : region.loops) boundary.push_back(tk::cad::flatten_loop(loop, offset_tolerance * 10));
       const tk::cad::SignedDistance printed = [&](tk::cad::Point p) { return tk::cad::interval_line_distance(boundary, p); };
       for (double v : speeds) {
-        tk::cad::InvasionSimOptions options;
-        options.feed_mm_s = v;
-        options.latency_s = travel_latency ? latency_mm / v : latency;
-        options.period_s = travel_period ? period_mm / v : period;
-        options.margin_mm = margin;
-        options.strokes = strokes;
-        options.seed = seed;
+        const tk::cad::InvasionSimOptions options = experiment_at(v);
         const auto results =
             tk::cad::simulate_invasions(guard, boundary, tolerances, options, invasion_check == "printed" ? &printed : nullptr);
         for (const tk::cad::InvasionSimResult& r : results) {
