@@ -152,13 +152,13 @@ simulate() {
   assert_success
   echo "$output" > sim.jsonl
   run py '
-import json, subprocess, sys
+import json, os, sys
+sys.path.insert(0, os.path.dirname(sys.argv[1]))
+from invasion_model import outcome
 for r in map(json.loads, open("sim.jsonl")):
     if r["guard"] != "fixed-tolerance":
         continue
-    want = subprocess.run(["/usr/bin/python3", sys.argv[1], "predict", "12", str(r["tolerance_mm"]), "0.1125", "0.3271"],
-                          capture_output=True, text=True, check=True).stdout.split()
-    rate, cut = float(want[0]), float(want[1])
+    rate, cut, _ = outcome(12, r["tolerance_mm"], 0.1125, 0.3271)
     # 2000 strokes: 4 binomial standard errors, and the corners the model leaves out.
     assert abs(r["success_rate"] - rate) < 4 * (rate * (1 - rate) / 2000) ** 0.5 + 0.01, (r, rate)
     assert abs(r["mean_undercut_mm"] - cut) < 0.08, (r, cut)

@@ -71,16 +71,25 @@ def deviance(rows, probabilities):
 
 def best(rows, travel):
     """The latency and period (seconds, or mm of travel when `travel`) that
-    fit the rows' success counts best, on a grid: (deviance, latency, period)."""
-    latency = np.arange(0.0, 6.001, 0.025) if travel else np.arange(0.0, 0.6001, 0.0025)
-    period = np.arange(0.025, 8.001, 0.025) if travel else np.arange(0.0025, 0.8001, 0.0025)
-    grid_l, grid_p = np.meshgrid(latency, period, indexing="ij")
-    total = 0.0
-    for row in rows:  # the same travel is a time inversely proportional to the feed
-        scale = 1.0 / row[0] if travel else 1.0
-        total = total + deviance([row], success_grid([row], grid_l * scale, grid_p * scale))
-    i, j = np.unravel_index(np.argmin(total), total.shape)
-    return float(total[i, j]), float(latency[i]), float(period[j])
+    fit the rows' success counts best: on a coarse grid, then on a grid a
+    quarter as fine about its best point. (deviance, latency, period)."""
+    step = (0.025, 0.025) if travel else (0.0025, 0.0025)
+    ranges = ((0.0, 6.0), (0.025, 8.0)) if travel else ((0.0, 0.6), (0.0025, 0.8))  # latency, period
+
+    def search(latencies, periods):
+        grid_l, grid_p = np.meshgrid(latencies, periods, indexing="ij")
+        total = 0.0
+        for row in rows:  # the same travel is a time inversely proportional to the feed
+            scale = 1.0 / row[0] if travel else 1.0
+            total = total + deviance([row], success_grid([row], grid_l * scale, grid_p * scale, nodes=101))
+        i, j = np.unravel_index(np.argmin(total), total.shape)
+        return float(total[i, j]), float(latencies[i]), float(periods[j])
+
+    coarse = [np.arange(low, high + 1e-9, 4 * k) for (low, high), k in zip(ranges, step)]
+    _, latency, period = search(*coarse)
+    fine = [np.arange(max(low, centre - 8 * k), min(high, centre + 8 * k) + 1e-9, k)
+            for (low, high), k, centre in zip(ranges, step, (latency, period))]
+    return search(*fine)
 
 
 def fit():
