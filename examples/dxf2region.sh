@@ -4,7 +4,8 @@
 #   1. DXF -> region records -> SVG drawing (region.svg),
 #   2. DXF -> finishing contour -> gcode-pulse (the pulses' summary),
 #   3. a joystick's positions checked against the region (the barrier),
-#   4. the seed's latency experiment with the latency-aware guard beside it.
+#   4. the seed's experiment (12 and 18 mm/s, T 1-5 mm) with the latency-aware
+#      guard beside it, under a modern control and one as slow as the seed's.
 #
 #   bash examples/dxf2region.sh [PART.dxf] [TOOL_RADIUS] [OUTPUT_DIR]
 set -euo pipefail
@@ -56,12 +57,17 @@ for line in sys.stdin:
 '
 
 echo
-echo "== 4. the seed's experiment: fixed tolerances against the latency-aware guard (50 mm/s, 90 ms latency)"
-printf '%-16s %8s %9s %10s %14s\n' guard T_mm invasions success mean_undercut
-dxf2region -q "$part" --tool-radius "$radius" --simulate --strokes 300 |
-  python3 -c '
+echo "== 4. the seed's experiment at its speeds: fixed tolerances against the latency-aware guard"
+for control in "--latency 0.09 --period 0.001" "--latency-mm 1.35 --period-mm 3.925"; do
+  echo "-- control: $control"
+  printf '%-16s %6s %6s %9s %10s %14s\n' guard V_mm_s T_mm invasions success mean_undercut
+  # shellcheck disable=SC2086  # the control's options, split on purpose
+  dxf2region -q "$part" --tool-radius "$radius" --simulate --strokes 300 $control |
+    python3 -c '
 import json, sys
 for line in sys.stdin:
     r = json.loads(line)
-    print("%-16s %8.2f %9d %9.1f%% %14.3f" % (r["guard"], r["tolerance_mm"], r["invasions"], 100 * r["success_rate"], r["mean_undercut_mm"]))
+    print("%-16s %6g %6.2f %9d %9.1f%% %14.3f" % (r["guard"], r["joystick_speed_mm_s"], r["tolerance_mm"], r["invasions"],
+                                               100 * r["success_rate"], r["mean_undercut_mm"]))
 '
+done

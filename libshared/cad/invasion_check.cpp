@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "cad/path_clearance.hpp"
 #include "io/error.hpp"
 
 namespace tk::cad {
@@ -31,12 +32,19 @@ PositionCheck InvasionGuard::check(Point p, std::optional<double> t) {
   if (t) {
     if (last_t_ && *t < *last_t_) throw Error("time goes backwards");
     double approach = 0;
-    if (last_t_ && *t > *last_t_) approach = std::max(0.0, (last_distance_ - distance) / (*t - *last_t_));
+    Point ahead = p;  // where the tool is when a stop ordered now takes effect, at its last velocity
+    if (last_t_ && *t > *last_t_) {
+      const double dt = *t - *last_t_;
+      approach = std::max(0.0, (last_distance_ - distance) / dt);
+      ahead = {p.x + (p.x - last_at_.x) / dt * options_.latency_s, p.y + (p.y - last_at_.y) / dt * options_.latency_s};
+    }
     result.approach_mm_s = approach;
-    result.stop = distance - approach * options_.latency_s < options_.margin_mm;
+    const SignedDistance region = [&](Point q) { return guard_query(index_, q, options_.tool_radius, options_.side).distance; };
+    result.stop = first_below(region, p, ahead, options_.margin_mm).has_value();
     if (*result.stop) ++summary_.stops;
     last_t_ = t;
     last_distance_ = distance;
+    last_at_ = p;
   }
   return result;
 }

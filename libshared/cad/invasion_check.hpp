@@ -2,8 +2,9 @@
 /// @brief The guard over a stream of tool positions: for each, where it is
 /// against the prohibited region (grown by the tool radius), the barrier
 /// point, and, when positions carry times, the latency-aware stop: the
-/// approach speed from the last two positions and whether the distance at
-/// the moment a stop ordered now would take effect falls below the margin.
+/// velocity from the last two positions, and whether the move from here to
+/// where a stop ordered now would take effect (latency later, at that
+/// velocity) comes closer than the margin to the region.
 #pragma once
 
 #include <cstddef>
@@ -50,6 +51,7 @@ class InvasionGuard {
   GuardSummary summary_;
   std::optional<double> last_t_;
   double last_distance_ = 0;
+  Point last_at_;
 };
 
 }  // namespace tk::cad

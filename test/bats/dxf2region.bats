@@ -63,6 +63,13 @@ near() {
   run dxf2region "$DXF/plate.dxf" --units furlong
   assert_failure 2
   assert_output --partial "furlong"
+  # The experiment's options: delays as time or as travel, not both; only with --simulate; no endless strokes.
+  for options in "--simulate --latency 0.1 --latency-mm 1" "--simulate --period 0.1 --period-mm 1" "--latency-mm 1" \
+      "--invasion-check printed" "--simulate --invasion-check nearest" "--simulate --joystick-speed 12,0" \
+      "--simulate --joystick-speed 1e-300" "--simulate --period-mm 0" "--simulate --latency 1e9"; do
+    run dxf2region -q "$DXF/plate.dxf" $options
+    [ "$status" -eq 2 ] || { echo "$options: exit $status"; false; }
+  done
 }
 
 @test "the plate's loops: areas and lengths from its stated geometry; skipped and loose entities reported" {
@@ -394,7 +401,7 @@ print(ours == theirs or [p for p in theirs if p not in ours])' "$CORPUS/gcode/vi
 }
 
 @test "--simulate: the fixed guard invades below speed x latency, the latency-aware guard never, with less under-cut" {
-  run --separate-stderr dxf2region "$DXF/plate.dxf" --layer OUTLINE --tool-radius 2 --simulate --strokes 200 --tolerances 2,4,6
+  run --separate-stderr dxf2region "$DXF/plate.dxf" --layer OUTLINE --tool-radius 2 --simulate --strokes 200 --tolerances 2,4,6 --joystick-speed 50
   assert_success
   run py '
 import json, sys

@@ -248,6 +248,24 @@ TEST(InvasionGuard, LatencyAwareStopFromTheApproachSpeed) {
   EXPECT_EQ(guard.summary().invasions, 0u);
 }
 
+TEST(InvasionGuard, LatencyAwareStopSeesTheWallItIsNotNearestTo) {
+  // A pocket 10 x 10 for a tool of radius 1: the centre stays in [1, 9] x [1, 9]. The tool runs at
+  // 20 mm/s along (1, 0.2) toward the top right: the top wall is nearest (1 mm, falling at 3.9 mm/s)
+  // while the right wall, 1.5 mm away, falls at 19.6 mm/s and is reached within the 0.1 s latency.
+  // The distance's own rate (1 - 3.9 x 0.1 > 0) would not stop; the move to where the stop takes
+  // effect, (7.5, 8) + 0.1 x 20 x (0.98, 0.196), crosses x = 9.
+  tk::cad::LoopSet set = tk::cad::build_loops(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1e-6);
+  const tk::cad::RegionIndex index(set.loops);
+  tk::cad::InvasionGuard guard(index, {1, MachiningSide::inside, 0.1, 0.0});
+  const double ux = 1 / std::hypot(1, 0.2), uy = 0.2 / std::hypot(1, 0.2);
+  auto c = guard.check({7.5 - 20 * 0.05 * ux, 8 - 20 * 0.05 * uy}, 0.0);
+  EXPECT_FALSE(*c.stop);
+  c = guard.check({7.5, 8}, 0.05);
+  EXPECT_NEAR(c.answer.distance, 1, 1e-12);
+  EXPECT_NEAR(*c.approach_mm_s, 20 * uy, 1e-9);
+  EXPECT_TRUE(*c.stop);
+}
+
 TEST(Toolpath, ClimbContourOfASquareIsClockwiseWithCornerArcs) {
   const Offset o = offset(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1);
   tk::cad::ToolpathOptions options;

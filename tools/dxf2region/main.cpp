@@ -46,11 +46,11 @@ int main(int argc, char** argv) {
                         "in a simulation of a joystick operator under control latency (--simulate).",
                         "See dxf2region(1).");
   std::string part_path, units, side = "outside", svg_path, check_path, direction = "climb";
-  std::string tolerances_text = "1,2,3,4,5,6";
+  std::string tolerances_text = "1,2,3,4,4.5,5", speeds_text = "12,18", invasion_check = "exact";
   std::vector<std::string> layers;
   double tool_radius = 0, join_tolerance = 1e-3, flatten_tolerance = 0.01, offset_tolerance = 1e-4;
   double latency = 0.09, margin = 0.02, feed = 600, plunge_feed = 100, cut_z = -1, safe_z = 5;
-  double joystick_speed = 50, period = 0.001;
+  double period = 0.001, latency_mm = 0, period_mm = 0;
   std::uint32_t strokes = 1000;
   std::uint64_t seed = 1;
   bool toolpath = false, summary = false, simulate = false;
@@ -76,9 +76,10 @@ int main(int argc, char** argv) {
                     ->expected(0, 1)
                     ->type_name("[POSITIONS]");
   app.add_flag("--summary", summary, "with --check: a final record (positions, invasions, deepest invasion)");
-  app.add_option("--latency", latency, "with --check and times, --simulate: seconds from a sample to a stop taking effect")
-      ->capture_default_str()
-      ->type_name("S");
+  auto* latency_option =
+      app.add_option("--latency", latency, "with --check and times, --simulate: seconds from a sample to a stop taking effect")
+          ->capture_default_str()
+          ->type_name("S");
   app.add_option("--margin", margin, "the latency-aware guard's aim, mm")->capture_default_str()->type_name("MM");
   app.add_flag("--toolpath", toolpath, "write the finishing contour as G-code");
   app.add_option("--feed", feed, "contour feed, mm/min")->capture_default_str()->type_name("F");
@@ -89,11 +90,25 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"climb", "conventional"}))
       ->capture_default_str();
   app.add_flag("--simulate", simulate, "run the seed's invasion experiment against the region");
-  app.add_option("--tolerances", tolerances_text, "with --simulate: the fixed guard's tolerances, mm")
+  app.add_option("--tolerances", tolerances_text, "with --simulate: the fixed guard's tolerances, mm (the seed's Tables 2-3)")
       ->capture_default_str()
       ->type_name("T,...");
-  app.add_option("--joystick-speed", joystick_speed, "with --simulate: the operator's feed, mm/s")->capture_default_str()->type_name("V");
-  app.add_option("--period", period, "with --simulate: control period, s")->capture_default_str()->type_name("S");
+  app.add_option("--joystick-speed", speeds_text, "with --simulate: the operator's feeds, mm/s (the seed's Table 2)")
+      ->capture_default_str()
+      ->type_name("V,...");
+  auto* period_option = app.add_option("--period", period, "with --simulate: control period, s")->capture_default_str()->type_name("S");
+  auto* latency_mm_option =
+      app.add_option("--latency-mm", latency_mm, "with --simulate: the latency as travel at each feed, mm (instead of --latency)")
+          ->type_name("MM")
+          ->excludes(latency_option);
+  auto* period_mm_option =
+      app.add_option("--period-mm", period_mm, "with --simulate: the control period as travel at each feed, mm (instead of --period)")
+          ->type_name("MM")
+          ->excludes(period_option);
+  app.add_option("--invasion-check", invasion_check,
+                 "with --simulate: what the fixed guard compares with T: the exact distance, or the seed's eq. (2) (printed)")
+      ->check(CLI::IsMember({"exact", "printed"}))
+      ->capture_default_str();
   app.add_option("--strokes", strokes, "with --simulate: approaches per guard")->capture_default_str()->type_name("N");
   app.add_option("--seed", seed, "with --simulate: random seed of the strokes")->capture_default_str()->type_name("N");
 
@@ -107,6 +122,33 @@ int main(int argc, char** argv) {
     require_positive(offset_tolerance, "--offset-tol");
     require_positive(latency, "--latency", true);
     require_positive(margin, "--margin", true);
+    require_positive(period, "--period");
+    const bool travel_latency = latency_mm_option->count() > 0, travel_period = period_mm_option->count() > 0;
+    if (!simulate && (travel_latency || travel_period || invasion_check != "exact"))
+      throw tk::UsageError("--latency-mm, --period-mm and --invasion-check go with --simulate");
+    if (travel_latency) require_positive(latency_mm, "--latency-mm", true);
+    if (travel_period) require_positive(period_mm, "--period-mm");
+    const std::vector<double> speeds = number_list(speeds_text, "--joystick-speed");
+    const std::vector<double> tolerances = number_list(tolerances_text, "--tolerances");
+    auto experiment_at = [&](double v) {
+      tk::cad::InvasionSimOptions options;
+      options.feed_mm_s = v;
+      options.latency_s = travel_latency ? latency_mm / v : latency;
+      options.period_s = travel_period ? period_mm / v : period;
+      options.margin_mm = margin;
+      options.strokes = strokes;
+      options.seed = seed;
+      return options;
+    };
+    if (simulate)
+      for (double v : speeds) {
+        require_positive(v, "--joystick-speed");
+        try {
+          tk::cad::check_invasion_sim(tolerances, experiment_at(v));
+        } catch (const tk::Error& e) {
+          throw tk::UsageError(std::string("--simulate: ") + e.what());
+        }
+      }
     if (!units.empty()) {
       try {
         tk::cad::millimetres_per_named_unit(units);
@@ -200,30 +242,29 @@ int main(int argc, char** argv) {
       return;
     }
     if (simulate) {
-      tk::cad::InvasionSimOptions options;
-      options.feed_mm_s = joystick_speed;
-      options.latency_s = latency;
-      options.period_s = period;
-      options.margin_mm = margin;
-      options.strokes = strokes;
-      options.seed = seed;
       const auto guard = [&](tk::cad::Point p) { return tk::cad::guard_query(*part.index, p, tool_radius, machining).distance; };
       std::vector<std::vector<tk::cad::Point>> boundary;  // the region on the left of each
       for (const tk::cad::Loop& loop : region.loops) boundary.push_back(tk::cad::flatten_loop(loop, offset_tolerance * 10));
-      const auto results =
-          tk::cad::simulate_invasions(guard, boundary, number_list(tolerances_text, "--tolerances"), options);
-      for (const tk::cad::InvasionSimResult& r : results) {
-        writer.write(tk::Record{{"guard", r.guard},
-                                {"tolerance_mm", r.tolerance_mm},
-                                {"strokes", r.strokes},
-                                {"invasions", r.invasions},
-                                {"success_rate", r.success_rate},
-                                {"mean_undercut_mm", r.mean_undercut_mm},
-                                {"max_undercut_mm", r.max_undercut_mm},
-                                {"mean_invasion_mm", r.mean_invasion_mm},
-                                {"max_invasion_mm", r.max_invasion_mm},
-                                {"latency_s", latency},
-                                {"joystick_speed_mm_s", joystick_speed}});
+      const tk::cad::SignedDistance printed = [&](tk::cad::Point p) { return tk::cad::interval_line_distance(boundary, p); };
+      for (double v : speeds) {
+        const tk::cad::InvasionSimOptions options = experiment_at(v);
+        const auto results =
+            tk::cad::simulate_invasions(guard, boundary, tolerances, options, invasion_check == "printed" ? &printed : nullptr);
+        for (const tk::cad::InvasionSimResult& r : results) {
+          writer.write(tk::Record{{"guard", r.guard},
+                                  {"invasion_check", r.guard == "fixed-tolerance" ? invasion_check : "exact"},
+                                  {"tolerance_mm", r.tolerance_mm},
+                                  {"strokes", r.strokes},
+                                  {"invasions", r.invasions},
+                                  {"success_rate", r.success_rate},
+                                  {"mean_undercut_mm", r.mean_undercut_mm},
+                                  {"max_undercut_mm", r.max_undercut_mm},
+                                  {"mean_invasion_mm", r.mean_invasion_mm},
+                                  {"max_invasion_mm", r.max_invasion_mm},
+                                  {"latency_s", options.latency_s},
+                                  {"period_s", options.period_s},
+                                  {"joystick_speed_mm_s", v}});
+        }
       }
       writer.flush();
       return;
