@@ -31,8 +31,8 @@ struct SubTuneSettings {
   Alternative alternative = Alternative::two_sided;
   TrendStatistic statistic = TrendStatistic::slope;
   std::size_t min_parts = 4;  ///< no decision before the run has this many parts (the paper: "after the fourth piece and on")
-  /// The gauge's resolution, mm: S_N is at least its rounding noise r/√12.
-  /// 0 takes S_N as computed, so identical sizes give S_N = 0.
+  /// The gauge's resolution, mm: s (or S_N) is at least its rounding noise
+  /// r/√12. 0 takes the spread as computed, so identical sizes give 0.
   double resolution = 0;
   /// Where a sub-tune moves the size: NaN (the paper) back to the run's
   /// starting level ã, correction ã − A_T(N) = −N b̃; a number (the nominal)

@@ -366,8 +366,9 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
 int main(int argc, char** argv) {
   tk::cli::ToolApp tool("subtune",
                         "Active control of a lathe by dimensional sub-tuning (Georgiev, Chetrokov & Salapateva): reads the "
-                        "measured size of each finished part, in order, fits a line to the current run and adds n, a, b, s, "
-                        "t, t_crit, decision (insufficient, none, subtune) and the correction. 'model', 'feed' and 'correct' "
+                        "measured size of each finished part, in order, fits the regression line A_T(i) = a + i b to the current run, "
+                        "tests the difference dA = a - A_T(N) (eq. 3-6) and adds n, a, b, s, t, t_crit, decision (insufficient, "
+                        "none, subtune) and the correction dA. 'model', 'feed' and 'correct' "
                         "fit and apply the force-induced-error model; --simulate compares sub-tuning with Shewhart, EWMA "
                         "and CUSUM charts on a simulated batch.",
                         "Sizes and errors in mm, feeds in mm/rev. See subtune(1).");
@@ -391,7 +392,7 @@ int main(int argc, char** argv) {
   CLI::App& app = tool.app();
   const std::string test = "The sub-tuning test", out = "Output", lathe_group = "Simulated lathe (with --simulate)",
                     chart_group = "Charts (--simulate, or the filter with a chart --policy)";
-  app.add_option("--alpha", tuning.alpha, "significance level of the trend test")->check(alpha_check)->capture_default_str()->group(test);
+  app.add_option("--alpha", tuning.alpha, "significance level of the test of dA (the paper prints none)")->check(alpha_check)->capture_default_str()->group(test);
   app.add_option("--alternative", alternative, "two-sided (either drift, the default), greater (growing sizes only) or less")
       ->check(CLI::IsMember({"two-sided", "greater", "less"}))->capture_default_str()->group(test);
   app.add_option("--statistic", statistic,
@@ -399,7 +400,7 @@ int main(int argc, char** argv) {
                  "paper: eq. (6) as printed, 2(N-1) df (alarms on noise about half the time at alpha 0.05)")
       ->check(CLI::IsMember({"slope", "paper"}))->capture_default_str()->group(test);
   app.add_option("--min-parts", tuning.min_parts, "no decision before a run has this many parts")->check(count_check(3, 1000000))->capture_default_str()->type_name("N")->group(test);
-  app.add_option("--resolution", tuning.resolution, "gauge resolution, mm: S_N is at least its rounding noise r/sqrt(12)")->check(non_negative)->capture_default_str()->type_name("MM")->group(test);
+  app.add_option("--resolution", tuning.resolution, "gauge resolution, mm: s (or S_N) is at least its rounding noise r/sqrt(12)")->check(non_negative)->capture_default_str()->type_name("MM")->group(test);
   app.add_option("--correct-to", correct_to, "start: by the paper's dA = a - A_T(N), back to the run's starting level; nominal: to --nominal")
       ->check(CLI::IsMember({"start", "nominal"}))->capture_default_str()->group(test);
   app.add_option("--field", field, "the field holding the size")->capture_default_str()->group(out);
