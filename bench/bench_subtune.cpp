@@ -11,11 +11,11 @@
 /// Input: a closed loop on a lathe, generated here with a fixed seed:
 /// nominal 40 mm, tool wear 0.4 µm per part, gauge-and-process noise σ 3 µm,
 /// each correction of the control added to the set-up for the following
-/// parts. Four cases: the seed's test at α = 0.05 (short runs: its in-control
+/// parts. Four cases: the paper's eq. (6) at α = 0.05 (short runs: its in-control
 /// ARL is ≈ 6 parts; mean run 5.3 here) and at α = 1e-6 (still short, 14.5:
 /// a wear of 0.13 σ per part is found within ~15 parts even so); then a
 /// slow wear of 0.01 µm per part (1 µm per 100 parts), where runs are long
-/// and the peer's O(N) refit per part shows: the seed's test at α = 1e-6
+/// and the peer's O(N) refit per part shows: eq. (6) at α = 1e-6
 /// (mean run ≈ 95) and the slope test at α = 1e-6 (≈ 290).
 /// The peer runs on the first BENCH_SUBTUNE_PEER_PARTS parts (default 10^6),
 /// ours on the same parts for the RESULT line and on all
@@ -111,7 +111,7 @@ void run_ours(const SubTuneSettings& settings, const double* sizes, std::uint64_
 /// The peer: the run's sizes kept, refitted from scratch at every part.
 template <class Sink>
 void run_gsl(const SubTuneSettings& settings, const double* sizes, std::uint64_t parts, Sink& sink) {
-  const bool seed = settings.statistic == TrendStatistic::seed;
+  const bool paper = settings.statistic == TrendStatistic::paper;
   std::vector<double> x, run;
   for (std::uint64_t i = 0; i < parts; ++i) {
     run.push_back(sizes[i]);
@@ -125,7 +125,7 @@ void run_gsl(const SubTuneSettings& settings, const double* sizes, std::uint64_t
     gsl_fit_linear(x.data(), 1, run.data(), 1, n, &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
     const double nd = static_cast<double>(n);
     double t, t_crit;
-    if (seed) {
+    if (paper) {
       const double s = std::sqrt(sumsq / (nd - 1)), rise = nd * std::abs(c1);
       t = s > 0 ? rise / s * std::sqrt(nd / 2) : (rise > 0 ? INFINITY : 0.0);
       t_crit = gsl_cdf_tdist_Pinv(1 - settings.alpha / 2, 2 * (nd - 1));
@@ -266,7 +266,7 @@ std::uint64_t count_occurrences(const std::string& path, const std::string& need
 void bench_tool(std::uint64_t parts, int repeats) {
   namespace fs = std::filesystem;
   const fs::path tool = find_tool();
-  const SubTuneSettings settings;  // the tool's defaults: the seed's test at α = 0.05
+  const SubTuneSettings settings;  // the tool's defaults: the slope test at α = 0.05
   const std::vector<double> sizes = closed_loop_stream(settings, kWearMm, parts, 20240611);
   Tally expected;
   run_ours(settings, sizes.data(), parts, expected);
@@ -321,13 +321,14 @@ int main() {
   std::printf("bench_subtune: closed-loop lathe (40 mm, wear 0.4 or 0.01 um/part, sigma 3 um), SubTuner vs a GSL refit per part, "
               "%d repeats\n", repeats);
 
-  SubTuneSettings seed;  // the seed's test, α = 0.05
-  SubTuneSettings seed_strict = seed;
-  seed_strict.alpha = 1e-6;
-  SubTuneSettings slope_strict = seed_strict;
+  SubTuneSettings paper;  // the paper's eq. (6), α = 0.05
+  paper.statistic = TrendStatistic::paper;
+  SubTuneSettings paper_strict = paper;
+  paper_strict.alpha = 1e-6;
+  SubTuneSettings slope_strict = paper_strict;
   slope_strict.statistic = TrendStatistic::slope;
-  for (const Case& c : {Case{"seed", seed, kWearMm}, Case{"seed_a1e-6", seed_strict, kWearMm},
-                        Case{"seed_a1e-6_slow", seed_strict, kSlowWearMm}, Case{"slope_a1e-6_slow", slope_strict, kSlowWearMm}})
+  for (const Case& c : {Case{"paper", paper, kWearMm}, Case{"paper_a1e-6", paper_strict, kWearMm},
+                        Case{"paper_a1e-6_slow", paper_strict, kSlowWearMm}, Case{"slope_a1e-6_slow", slope_strict, kSlowWearMm}})
     bench_case(c, parts, peer_parts, repeats);
 
   if (tool_parts > 0) bench_tool(tool_parts, repeats);

@@ -8,8 +8,8 @@
 #   2. calibration cuts -> the force-induced error model -> for each blank's
 #      measured allowance, the largest feed that keeps the predicted error at
 #      0.01 mm, and the set-up correction at a fixed feed instead;
-#   3. the simulated batch: the seed's sub-tuning against the Shewhart, EWMA
-#      and CUSUM charts, as CSV.
+#   3. the simulated batch: sub-tuning (Student's test of dA, and the paper's
+#      eq. (6) as printed) against the Shewhart, EWMA and CUSUM charts, as CSV.
 # Replace the here-documents with your own gauge log, calibration and blanks.
 #
 #   bash examples/subtune.sh [OUTPUT_DIR]
@@ -46,7 +46,7 @@ part,d
 24,40.007
 EOF
 
-echo "== 1. sub-tuning on the gauge log (the seed's test, two-sided at alpha 0.05;"
+echo "== 1. sub-tuning on the gauge log (Student's test of dA = a - A_T(N), two-sided at alpha 0.05;"
 echo "      corrections to the nominal, the gauge's 1 um rounding as the least spread)"
 subtune --field d --correct-to nominal --nominal 40 --resolution 0.001 \
         --lower 39.98 --upper 40.02 --csv "$out/gauge.csv" > "$out/gauge-decisions.csv"
@@ -102,10 +102,12 @@ paste -d, "$out/feeds.csv" "$out/corrections.csv" |
 
 echo
 echo "== 3. a simulated batch of 1000 parts (tool wear 0.4 um/part, warm-up, random allowance):"
-echo "      sub-tuning against the charts; $out/compare.csv"
+echo "      sub-tuning against the charts; $out/compare.csv. The default test's in-control"
+echo "      runs are so long that some reach --arl-cap, and a warning says so"
 {
   subtune --simulate --arl-runs 500 --csv
   subtune --simulate --policy subtune --correct-to nominal --arl-runs 500 --csv | tail -n +2 | sed 's/^subtune,/subtune-to-nominal,/'
+  subtune --simulate --policy subtune --statistic paper --arl-runs 500 --csv | tail -n +2 | sed 's/^subtune,/paper-eq6,/'
 } > "$out/compare.csv"
 # Columns: policy,parts,in_tolerance_share,...,corrections,false_alarms,arl0,...
 awk -F, 'NR == 1 { printf "%-19s %12s %12s %13s %9s\n", "policy", "in_tolerance", "corrections", "false_alarms", "arl0" }

@@ -1,10 +1,12 @@
 /// @file force_error_model.hpp
 /// @brief The force-induced dimensional error model of adaptive lathe control
-/// (after Georgiev et al., "Intelligent lathe turning computer control system
-/// model"): before a cut, the measured allowance (depth of cut a, mm) sets the
-/// feed f (mm/rev) or the set-up correction through the quadratic
+/// (Georgiev et al., "Intelligent lathe turning computer control system
+/// model", eq. 2): before a cut, the measured allowance (depth of cut a, mm)
+/// sets the feed f (mm/rev) for a constant error, or the set-up correction at
+/// a constant feed, through the quadratic
 ///   y = b0 + b1 a + b2 f + b12 a f + b11 a² + b22 f²   (y in mm).
-/// The coefficients come from a least-squares fit to calibration cuts.
+/// The coefficients come from a least-squares fit to calibration cuts (the
+/// paper does not say how they are found).
 #pragma once
 
 #include <cstddef>

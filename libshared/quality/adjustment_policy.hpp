@@ -1,6 +1,6 @@
 /// @file adjustment_policy.hpp
 /// @brief What decides, part by part, whether to correct the set-up: the
-/// seed's sub-tuning and the SPC charts users compare it with (Shewhart X
+/// paper's sub-tuning and the SPC charts users compare it with (Shewhart X
 /// chart of individuals, EWMA, tabular CUSUM), behind one interface so the
 /// simulation and the ARL runs treat them alike.
 #pragma once

@@ -75,13 +75,14 @@ SubTuneStep SubTuner::observe(double size) {
   }
   if (n_ < settings_.min_parts) return step;
 
-  const bool seed = settings_.statistic == TrendStatistic::seed;
-  const double spread_sq = std::max(sse_ / (seed ? n - 1 : n - 2), spread_floor_sq_);
+  const bool paper = settings_.statistic == TrendStatistic::paper;
+  const double spread_sq = std::max(sse_ / (paper ? n - 1 : n - 2), spread_floor_sq_);
   step.s = std::sqrt(spread_sq);
-  const double rise = std::abs(step.b) * (seed ? n : std::sqrt(moment_i));  // |ã − A_TN| = n |b̃|
-  const double scale = seed ? std::sqrt(n / 2) : 1.0;
+  // |ã − A_TN| = n |b̃|; its standard error is s n/√Σ(i − ī)² (slope) or, as eq. (6) prints it, S_N √(2/n).
+  const double rise = std::abs(step.b) * (paper ? n : std::sqrt(moment_i));
+  const double scale = paper ? std::sqrt(n / 2) : 1.0;
   step.t = step.s > 0 ? rise / step.s * scale : (rise > 0 ? std::numeric_limits<double>::infinity() : 0.0);
-  step.df = seed ? 2 * (n_ - 1) : n_ - 2;
+  step.df = paper ? 2 * (n_ - 1) : n_ - 2;
   step.t_crit = critical_.at(step.df);
   const bool right_way = settings_.alternative == Alternative::two_sided ||
                          (settings_.alternative == Alternative::greater ? step.b > 0 : step.b < 0);

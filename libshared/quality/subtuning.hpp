@@ -1,9 +1,9 @@
 /// @file subtuning.hpp
 /// @brief Active control by dimensional sub-tuning (Georgiev, Chetrokov &
-/// Salapateva, reconstructed): after each finished part, a straight line
-/// fitted to the run's sizes decides whether a systematic drift has appeared;
-/// when it has, the set-up is corrected back to the run's starting level and
-/// a new run begins. Incremental: O(1) work per part.
+/// Salapateva, eq. 3-6): after each finished part, a straight line fitted to
+/// the run's sizes decides whether the difference ΔA = ã − A_TN between its
+/// start and its last part is significant; when it is, the set-up is
+/// corrected by ΔA and a new run begins. Incremental: O(1) work per part.
 #pragma once
 
 #include <cstddef>
@@ -15,10 +15,12 @@
 
 namespace tk::quality {
 
-/// seed: the paper's t = |ã − A_TN| / S_N · √(N/2), S_N² = SSE/(N − 1),
-/// against t at k = 2(N − 1). slope: the textbook test of the fitted slope,
-/// t = |b̃| √Σ(i − ī)² / s, s² = SSE/(N − 2), against t at N − 2.
-enum class TrendStatistic { seed, slope };
+/// slope: Student's test of ΔA = ã − A_TN = −N b̃ with the standard error the
+/// regression gives it, t = |b̃| √Σ(i − ī)² / s, s² = SSE/(N − 2), against t
+/// at N − 2 (the default: its level is α). paper: eq. (6) as printed,
+/// t = |ã − A_TN| / S_N · √(N/2), S_N² = SSE/(N − 1) (eq. 3), against t at
+/// k = 2(N − 1), whose real level is far above α (0.51 at N = 4, α = 0.05).
+enum class TrendStatistic { paper, slope };
 
 /// Which drifts count: either sign (a two-sided test at α), or only growing
 /// (greater) or only shrinking (less) sizes, one-sided at α.
@@ -27,12 +29,12 @@ enum class Alternative { two_sided, greater, less };
 struct SubTuneSettings {
   double alpha = 0.05;
   Alternative alternative = Alternative::two_sided;
-  TrendStatistic statistic = TrendStatistic::seed;
-  std::size_t min_parts = 4;  ///< no decision before the run has this many parts (the seed: 4)
-  /// The gauge's resolution, mm: S_N is at least its rounding noise r/√12.
-  /// 0 takes S_N as computed, so identical sizes give S_N = 0.
+  TrendStatistic statistic = TrendStatistic::slope;
+  std::size_t min_parts = 4;  ///< no decision before the run has this many parts (the paper: "after the fourth piece and on")
+  /// The gauge's resolution, mm: s (or S_N) is at least its rounding noise
+  /// r/√12. 0 takes the spread as computed, so identical sizes give 0.
   double resolution = 0;
-  /// Where a sub-tune moves the size: NaN (the seed) back to the run's
+  /// Where a sub-tune moves the size: NaN (the paper) back to the run's
   /// starting level ã, correction ã − A_T(N) = −N b̃; a number (the nominal)
   /// to it, correction target − A_T(N), so errors of earlier corrections do
   /// not accumulate.
@@ -48,8 +50,8 @@ struct SubTuneStep {
   std::uint64_t run = 1;  ///< runs since the start, from 1
   std::uint64_t n = 0;    ///< parts in the current run, this one included
   double a = 0, b = 0;    ///< the line A_T(i) = a + i b over i = 1..n
-  double s = 0;           ///< S_N (seed) or s (slope)
-  double t = 0;           ///< ≥ 0 as the seed writes it; +inf when the spread is 0 and the line is not flat
+  double s = 0;           ///< s (slope) or S_N (paper)
+  double t = 0;           ///< ≥ 0, |ã − A_TN| over its standard error; +inf when the spread is 0 and the line is not flat
   double t_crit = 0;
   std::uint64_t df = 0;
   Decision decision = Decision::insufficient;

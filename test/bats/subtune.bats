@@ -36,7 +36,7 @@ four() { printf '%s\n' 10.000 10.002 10.001 10.003; }
   assert_output --partial "--feed"
 }
 
-@test "hand-worked: 10.000 10.002 10.001 10.003 - a, b, S_N, t, t_crit at df 6, subtune, correction -N b" {
+@test "hand-worked, eq. (3)-(6) as printed (--statistic paper): 10.000 10.002 10.001 10.003 - a, b, S_N, t, t_crit at df 6, subtune, correction -N b" {
   # i = 1..4, mean i = 2.5, mean y = 10.0015, Sxx = 2.25 + 0.25 + 0.25 + 2.25 = 5,
   # Sxy = (-1.5)(-0.0015) + (-0.5)(0.0005) + (0.5)(-0.0005) + (1.5)(0.0015) = 0.004,
   # b = 0.004 / 5 = 0.0008, a = 10.0015 - 2.5 b = 9.9995;
@@ -46,7 +46,7 @@ four() { printf '%s\n' 10.000 10.002 10.001 10.003; }
   # (Student t, two-sided 5 %, df 2 (N - 1) = 6): subtune, correction a - A_T(4) = -4 b = -0.0032.
   # Before: N = 2: b = 0.002, a = 9.998; N = 3: b = 0.0005, a = 10.0 (Sxy = 0.001, Sxx = 2).
   four > four.txt
-  subtune four.txt > out.jsonl
+  subtune --statistic paper four.txt > out.jsonl
   run check '
 assert len(rows) == 4
 keys = ["size", "run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"]
@@ -73,7 +73,7 @@ assert near(r["correction"], -0.0032, 1e-12) and near(r["offset"], -0.0032, 1e-1
   # Run 2 repeats run 1's shape 3 um higher: again b = 0.0008, correction -0.0032;
   # the offset reaches -0.0064. Part 9 opens run 3.
   { four; printf '%s\n' 10.003 10.005 10.004 10.006 10.1; } > eight.txt
-  subtune eight.txt > out.jsonl
+  subtune --statistic paper eight.txt > out.jsonl
   run check '
 assert [r["run"] for r in rows] == [1, 1, 1, 1, 2, 2, 2, 2, 3]
 assert [r["n"] for r in rows] == [1, 2, 3, 4, 1, 2, 3, 4, 1]
@@ -90,7 +90,7 @@ assert near(rows[8]["offset"], -0.0064, 1e-9) and rows[8]["correction"] == 0, ro
   # N = 3 with 10.000 10.002 10.001: b = 0.0005, a = 10.0, fitted 10.0005 10.001 10.0015,
   # residuals -0.0005 0.001 -0.0005, SSE = 1.5e-6, S = sqrt(1.5e-6 / 2) = 8.660254e-4,
   # t = 3 * 0.0005 / S * sqrt(1.5) = 2.121320 < t(0.975, 4) = 2.776445: none.
-  four | subtune --min-parts 3 > out.jsonl
+  four | subtune --statistic paper --min-parts 3 > out.jsonl
   run check '
 assert [r["decision"] for r in rows][:3] == ["insufficient", "insufficient", "none"], rows
 r = rows[2]
@@ -98,13 +98,13 @@ assert near(r["s"], 8.660254e-4, 1e-9) and near(r["t"], 2.121320, 1e-5) and r["d
 assert near(r["t_crit"], 2.776445, 1e-6), r
 ' < out.jsonl
   assert_output "ok"
-  four | subtune --min-parts 5 > out.jsonl
+  four | subtune --statistic paper --min-parts 5 > out.jsonl
   run check 'assert all(r["decision"] == "insufficient" and r["t"] is None for r in rows), rows' < out.jsonl
   assert_output "ok"
 }
 
 @test "identical sizes: S_N = 0, b = 0, t = 0, decision none for every N" {
-  printf '25.4\n%.0s' $(seq 8) | subtune > out.jsonl
+  printf '25.4\n%.0s' $(seq 8) | subtune --statistic paper > out.jsonl
   run check '
 assert [r["decision"] for r in rows] == ["insufficient"] * 3 + ["none"] * 5, rows
 for r in rows[3:]:
@@ -115,14 +115,14 @@ for r in rows[3:]:
 }
 
 @test "perfectly linear sizes: t infinite (null), subtune; --resolution r puts S_N at r/sqrt(12)" {
-  printf '%s\n' 0.1 0.2 0.3 0.4 | subtune > out.jsonl
+  printf '%s\n' 0.1 0.2 0.3 0.4 | subtune --statistic paper > out.jsonl
   run check '
 r = rows[3]
 assert r["decision"] == "subtune" and (r["t"] is None or r["t"] > 1e6), r
 assert near(r["b"], 0.1, 1e-12) and near(r["correction"], -0.4, 1e-12), r' < out.jsonl
   assert_output "ok"
   # r = 0.01: S = 0.01 / sqrt(12) = 2.886751e-3, t = 4 * 0.1 / S * sqrt(2) = 195.9592
-  printf '%s\n' 0.1 0.2 0.3 0.4 | subtune --resolution 0.01 > out.jsonl
+  printf '%s\n' 0.1 0.2 0.3 0.4 | subtune --statistic paper --resolution 0.01 > out.jsonl
   run check '
 r = rows[3]
 assert near(r["s"], 2.886751e-3, 1e-9) and near(r["t"], 195.9592, 1e-3) and r["decision"] == "subtune", r' < out.jsonl
@@ -130,43 +130,46 @@ assert near(r["s"], 2.886751e-3, 1e-9) and near(r["t"], 195.9592, 1e-3) and r["d
   # The gauge floor also keeps the hand-worked stream below significance:
   # r = 0.005: S = 1.443376e-3 > 7.75e-4, t = 0.0032 / S * sqrt(2) = 3.135347 > 2.446912 still;
   # r = 0.01: S = 2.886751e-3, t = 1.567673 < 2.446912: none.
-  four | subtune --resolution 0.005 > out.jsonl
+  four | subtune --statistic paper --resolution 0.005 > out.jsonl
   run check 'assert near(rows[3]["t"], 3.135347, 1e-5) and rows[3]["decision"] == "subtune", rows[3]' < out.jsonl
   assert_output "ok"
-  four | subtune --resolution 0.01 > out.jsonl
+  four | subtune --statistic paper --resolution 0.01 > out.jsonl
   run check 'assert near(rows[3]["t"], 1.567673, 1e-5) and rows[3]["decision"] == "none" and rows[3]["correction"] == 0, rows[3]' < out.jsonl
   assert_output "ok"
 }
 
-@test "--statistic slope: s^2 = SSE/(N-2), t = |b| sqrt(Sxx)/s at N-2 df" {
+@test "the default, --statistic slope: s^2 = SSE/(N-2), t = |b| sqrt(Sxx)/s at N-2 df" {
   # s = sqrt(1.8e-6 / 2) = 9.486833e-4, t = 0.0008 sqrt(5) / s = 1.885618 < t(0.975, 2) = 4.302653.
-  four | subtune --statistic slope > out.jsonl
-  run check '
+  for statistic in "" "--statistic slope"; do
+    # shellcheck disable=SC2086
+    four | subtune $statistic > out.jsonl
+    run check '
 r = rows[3]
 assert near(r["s"], 9.486833e-4, 1e-9) and near(r["t"], 1.885618, 1e-5), r
 assert r["df"] == 2 and near(r["t_crit"], 4.302653, 1e-6) and r["decision"] == "none", r' < out.jsonl
-  assert_output "ok"
+    assert_output "ok"
+  done
 }
 
 @test "--alternative greater/less: one-sided t_crit (1.943180 at df 6); only the matching direction sub-tunes" {
-  four | subtune --alternative greater > out.jsonl
+  four | subtune --statistic paper --alternative greater > out.jsonl
   run check 'r = rows[3]; assert near(r["t_crit"], 1.943180, 1e-6) and r["decision"] == "subtune", r' < out.jsonl
   assert_output "ok"
-  four | subtune --alternative less > out.jsonl
+  four | subtune --statistic paper --alternative less > out.jsonl
   run check 'r = rows[3]; assert near(r["t_crit"], 1.943180, 1e-6) and r["decision"] == "none" and r["correction"] == 0, r' < out.jsonl
   assert_output "ok"
   # the mirror image (shrinking sizes) sub-tunes with less: correction +0.0032
-  printf '%s\n' 10.003 10.001 10.002 10.000 | subtune --alternative less > out.jsonl
+  printf '%s\n' 10.003 10.001 10.002 10.000 | subtune --statistic paper --alternative less > out.jsonl
   run check 'r = rows[3]; assert r["decision"] == "subtune" and near(r["correction"], 0.0032, 1e-12), r' < out.jsonl
   assert_output "ok"
 }
 
 @test "--correct-to nominal --nominal X: correction X - A_T(N); without --nominal a usage error" {
   # A_T(4) = 9.9995 + 4 * 0.0008 = 10.0027; to 10: -0.0027; to 10.01: +0.0073.
-  four | subtune --correct-to nominal --nominal 10 > out.jsonl
+  four | subtune --statistic paper --correct-to nominal --nominal 10 > out.jsonl
   run check 'assert near(rows[3]["correction"], -0.0027, 1e-12) and near(rows[3]["offset"], -0.0027, 1e-12), rows[3]' < out.jsonl
   assert_output "ok"
-  four | subtune --correct-to nominal --nominal 10.01 > out.jsonl
+  four | subtune --statistic paper --correct-to nominal --nominal 10.01 > out.jsonl
   run check 'assert near(rows[3]["correction"], 0.0073, 1e-12), rows[3]' < out.jsonl
   assert_output "ok"
   run subtune --correct-to nominal < /dev/null
@@ -175,26 +178,26 @@ assert r["df"] == 2 and near(r["t_crit"], 4.302653, 1e-6) and r["decision"] == "
 
 @test "input formats: CSV with header (ids pass through, CRLF too), a bare column, JSON Lines, --field, several files" {
   printf 'id,size\nP1,10.000\nP2,10.002\nP3,10.001\nP4,10.003\n' > parts.csv
-  subtune parts.csv > csv.jsonl
+  subtune --statistic paper parts.csv > csv.jsonl
   run check '
 assert [r["id"] for r in rows] == ["P1", "P2", "P3", "P4"]
 assert list(rows[0])[:2] == ["id", "size"] and float(rows[0]["size"]) == 10.0
 assert rows[3]["decision"] == "subtune" and near(rows[3]["t"], 5.842374, 1e-5), rows[3]' < csv.jsonl
   assert_output "ok"
-  printf 'id,size\r\nP1,10.000\r\nP2,10.002\r\nP3,10.001\r\nP4,10.003\r\n' | subtune > crlf.jsonl
+  printf 'id,size\r\nP1,10.000\r\nP2,10.002\r\nP3,10.001\r\nP4,10.003\r\n' | subtune --statistic paper > crlf.jsonl
   run check 'assert [r["id"] for r in rows] == ["P1", "P2", "P3", "P4"] and near(rows[3]["t"], 5.842374, 1e-5)' < crlf.jsonl
   assert_output "ok"
-  four | subtune - > bare.jsonl
+  four | subtune --statistic paper - > bare.jsonl
   run check 'assert [r["size"] for r in rows] == [10.0, 10.002, 10.001, 10.003] and rows[3]["decision"] == "subtune"' < bare.jsonl
   assert_output "ok"
   printf '{"part":"A","d":10.000}\n{"part":"B","d":10.002}\n{"part":"C","d":10.001}\n{"part":"D","d":10.003}\n' > parts.jsonl
-  subtune --field d parts.jsonl > json.jsonl
+  subtune --statistic paper --field d parts.jsonl > json.jsonl
   run check 'assert [r["part"] for r in rows] == list("ABCD") and near(rows[3]["t"], 5.842374, 1e-5)' < json.jsonl
   assert_output "ok"
   # two files are one stream
   printf '10.000\n10.002\n' > first.txt
   printf '10.001\n10.003\n' > second.txt
-  subtune first.txt second.txt > two.jsonl
+  subtune --statistic paper first.txt second.txt > two.jsonl
   run check 'assert [r["n"] for r in rows] == [1, 2, 3, 4] and rows[3]["decision"] == "subtune"' < two.jsonl
   assert_output "ok"
 }
@@ -367,7 +370,7 @@ sys.stdout.buffer.write(bytes(random.randrange(256) for _ in range(4096)))' > ra
   local x failed=0
   for x in 1 1e6 1e-6 1e-100; do
     printf '%s\n-%s\n%s\n-%s\n' $x $x $x $x > alt.txt
-    subtune alt.txt > out.jsonl
+    subtune --statistic paper alt.txt > out.jsonl
     run check '
 r = rows[3]
 x = float("'$x'")
@@ -618,10 +621,10 @@ assert near(rows[0]["sigma_mm"], want, 1e-12 * want), (rows, want)' < sim.jsonl
   assert_output "ok"
 }
 
-@test "--simulate: sub-tuning's ARLs see --resolution against sigma (scaling both by 10 changes nothing; the floor changes the ARL)" {
-  subtune --simulate --policy subtune --arl-runs 2000 --sigma 0.003 --resolution 0.01 > a.jsonl
-  subtune --simulate --policy subtune --arl-runs 2000 --sigma 0.03 --resolution 0.1 > b.jsonl
-  subtune --simulate --policy subtune --arl-runs 2000 --sigma 0.003 > c.jsonl
+@test "--simulate: sub-tuning's ARLs (eq. 6 as printed) see --resolution against sigma (scaling both by 10 changes nothing; the floor changes the ARL)" {
+  subtune --simulate --policy subtune --statistic paper --arl-runs 2000 --sigma 0.003 --resolution 0.01 > a.jsonl
+  subtune --simulate --policy subtune --statistic paper --arl-runs 2000 --sigma 0.03 --resolution 0.1 > b.jsonl
+  subtune --simulate --policy subtune --statistic paper --arl-runs 2000 --sigma 0.003 > c.jsonl
   run py 'import json
 a, b, c = (json.loads(open(f).readline()) for f in ("a.jsonl", "b.jsonl", "c.jsonl"))
 for k in ("arl0", "arl_shift", "arl_drift"):

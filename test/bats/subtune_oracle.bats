@@ -58,21 +58,21 @@ sys.exit(1 if bad else 0)' "$1" "$2"
 @test "(a) three 300-part streams (wear, thermal growth, no drift) x 9 option sets: every part recomputed by SciPy" {
   for file in "$SUB/wear.txt" "$SUB/thermal.csv" "$SUB/flat.jsonl"; do
     regression "$file"
-    regression "$file" --statistic slope
-    regression "$file" --alternative greater
-    regression "$file" --alternative less --statistic slope
-    regression "$file" --correct-to nominal --nominal 40
-    regression "$file" --resolution 0.005
-    regression "$file" --alpha 0.01 --min-parts 6
+    regression "$file" --statistic paper
+    regression "$file" --alternative greater --statistic paper
+    regression "$file" --alternative less
+    regression "$file" --correct-to nominal --nominal 40 --statistic paper
+    regression "$file" --resolution 0.005 --statistic paper
+    regression "$file" --alpha 0.01 --min-parts 6 --statistic paper
     regression "$file" --lower 39.995 --upper 40.02
-    regression "$file" --statistic slope --min-parts 3 --alpha 0.1
+    regression "$file" --min-parts 3 --alpha 0.1
   done
 }
 
 @test "(a) the streams exercise the test: runs restart, both decisions occur, the drifting ones sub-tune more" {
-  subtune "$SUB/wear.txt" > wear.jsonl
-  subtune --statistic slope "$SUB/flat.jsonl" > flat.jsonl
-  subtune --statistic slope "$SUB/wear.txt" > wear_slope.jsonl
+  subtune --statistic paper "$SUB/wear.txt" > wear.jsonl
+  subtune "$SUB/flat.jsonl" > flat.jsonl
+  subtune "$SUB/wear.txt" > wear_slope.jsonl
   run py 'import json
 def load(name):
     return [json.loads(l) for l in open(name)]
@@ -80,7 +80,7 @@ wear, flat, wear_slope = load("wear.jsonl"), load("flat.jsonl"), load("wear_slop
 count = lambda rows, d: sum(r["decision"] == d for r in rows)
 assert count(wear, "subtune") >= 10 and count(wear, "none") >= 10, (count(wear, "subtune"), count(wear, "none"))
 assert max(r["run"] for r in wear) == count(wear, "subtune") + (wear[-1]["decision"] != "subtune")
-# the textbook slope test at 5 %: few false alarms without drift, more with wear
+# the default slope test at 5 %: few false alarms without drift, more with wear
 assert count(flat, "subtune") <= 6, count(flat, "subtune")
 assert count(wear_slope, "subtune") > 2 * count(flat, "subtune"), (count(wear_slope, "subtune"), count(flat, "subtune"))
 print("ok")'
@@ -96,34 +96,34 @@ for name, scale in (("big", 8e5), ("small", 2e-100)):
             out.write(repr((1 + 0.002 * i + random.gauss(0, 0.01)) * scale) + "\n")'
   regression big.txt
   regression small.txt
-  regression small.txt --statistic slope
+  regression small.txt --statistic paper
 }
 
-@test "(b) t_crit against the printed Student t table (two-sided 5 %, df 2(N-1)) for N = 4, 5, 6, 8, 10" {
+@test "(b) t_crit against the printed Student t table (two-sided 5 %, eq. (6)'s df 2(N-1)) for N = 4, 5, 6, 8, 10" {
   # A zig-zag that never reaches significance: t <= 1.83 at every N.
   printf '%s\n' 10.000 10.001 10.001 10.000 10.000 10.001 10.001 10.000 10.000 10.001 > zigzag.txt
-  subtune zigzag.txt > zigzag.jsonl
+  subtune --statistic paper zigzag.txt > zigzag.jsonl
   run expect_t_crit zigzag.jsonl "4:2.446912 5:2.306004 6:2.228139 8:2.144787 10:2.100922"
   echo "$output"
   assert_success
   # The regression oracle agrees on every record.
-  regression zigzag.txt
+  regression zigzag.txt --statistic paper
 }
 
-@test "(b) t_crit tables: slope statistic df N-2 (2.776445 ... 4.302653), one-sided 5 %, two-sided 1 %" {
+@test "(b) t_crit tables: the default slope statistic df N-2 (2.776445 ... 4.302653); eq. (6) one-sided 5 %, two-sided 1 %" {
   printf '12.5\n%.0s' $(seq 12) > constant.txt
-  subtune --statistic slope --min-parts 4 constant.txt > slope.jsonl
+  subtune --min-parts 4 constant.txt > slope.jsonl
   run expect_t_crit slope.jsonl "4:4.302653 5:3.182446 6:2.776445 7:2.570582 8:2.446912 9:2.364624 10:2.306004 11:2.262157 12:2.228139"
   echo "$output"
   assert_success
-  subtune --alternative greater constant.txt > greater.jsonl
+  subtune --statistic paper --alternative greater constant.txt > greater.jsonl
   run expect_t_crit greater.jsonl "4:1.943180 5:1.859548 6:1.812461 8:1.761310 10:1.734064"
   echo "$output"
   assert_success
-  subtune --alternative less constant.txt > less.jsonl
+  subtune --statistic paper --alternative less constant.txt > less.jsonl
   run expect_t_crit less.jsonl "4:1.943180 10:1.734064"
   assert_success
-  subtune --alpha 0.01 constant.txt > one_percent.jsonl
+  subtune --statistic paper --alpha 0.01 constant.txt > one_percent.jsonl
   run expect_t_crit one_percent.jsonl "4:3.707428 6:3.169273"
   echo "$output"
   assert_success
@@ -333,11 +333,11 @@ print("ok")'
   assert_output "ok"
 }
 
-@test "(c) the seed's own in-control ARL (about 6 parts at alpha 0.05): the tool's Monte Carlo against one in NumPy" {
+@test "(c) eq. (6)'s in-control ARL (about 6 parts at alpha 0.05): the tool's Monte Carlo against one in NumPy" {
   # The procedure from its definition: from N = 4 on, the least-squares line
   # over the run, S_N^2 = SSE/(N - 1), t = N|b|/S_N sqrt(N/2) against the
   # two-sided 5 % point at 2(N - 1) df; the run length is the first N where t exceeds it.
-  subtune --simulate --policy subtune --parts 10 --arl-runs 20000 > sub.jsonl
+  subtune --simulate --policy subtune --statistic paper --parts 10 --arl-runs 20000 > sub.jsonl
   run py '
 import json, math
 import numpy as np

@@ -3,27 +3,36 @@
 from the sizes alone, with scipy.stats.linregress, numpy and
 scipy.stats.t (its sf inverted by brentq), and no code of this project.
 
-The procedure (Georgiev et al., as subtune documents it): the parts of the
-current run are i = 1..N with sizes y_i; the least-squares line is
-A_T(i) = a + i b (a is the intercept at i = 0).
-  seed statistic:  S^2 = SSE / (N - 1), t = N |b| / S * sqrt(N / 2),
-                   df = 2 (N - 1)
-  slope statistic: S^2 = SSE / (N - 2), t = |b| sqrt(sum (i - mean i)^2) / S,
-                   df = N - 2
+Written from the paper's text (Georgiev, Chetrokov & Salapateva,
+"Intelligent lathe turning computer control system model", section 3.3.2,
+../shared/seeds/004_1585d7a9823158a8.txt): "after the fourth piece and on,
+the regression equation is determined"; the pieces of the current process
+are i = 1..N with sizes A_i, and
+  (4) A_Ti = a~ + i b~                       (the least-squares line)
+  (3) S_N^2 = sum (A_i - A_Ti)^2 / (N - 1)
+  (5) dA = a~ - A_TN
+  (6) t = |a~ - A_TN| / S_N * sqrt(N / 2) > t_(alpha, k),  k = 2 (N - 1)
+"The moment the difference (5) becomes significant, dimensional sub tuning
+of value and sign corresponding to dA is performed. The next piece, after
+the extra set-up, is considered the first in a new process."
+--statistic paper computes (3)-(6) literally, from a~ and A_TN. The
+default, --statistic slope, tests the same difference (5) with the standard
+error that the regression gives it: t = |b~| / stderr(b~), stderr as
+linregress reports it (s^2 = SSE / (N - 2)), at N - 2 df.
   --resolution r:  S = max(S, r / sqrt(12)); S = 0 gives t = 0 when b = 0 and
                    t = inf (written null) otherwise
   two-sided:       t_crit = the t with t.sf(t, df) = alpha / 2, significant when t > t_crit
   greater / less:  t_crit = the t with t.sf(t, df) = alpha, and b > 0 / b < 0 as well
 No test while N < --min-parts (decision insufficient; a, b null at N = 1;
-s, t, t_crit, df null). On a significant trend: decision subtune,
-correction = a - A_T(N) = -N b (or X - A_T(N) with --correct-to nominal
+s, t, t_crit, df null). On a significant difference: decision subtune,
+correction = dA = a~ - A_TN (or X - A_TN with --correct-to nominal
 --nominal X), offset = the sum of the corrections so far, and the next part
 opens a new run (run + 1, n = 1). Otherwise decision none, correction 0.
 With --lower/--upper or a record's lower/upper fields, in_tolerance says
 whether the size lies in [lower, upper].
 
 Usage: subtune_regression.py [subtune's options] < subtune-output.jsonl
-  options: --field size --alpha 0.05 --statistic seed|slope
+  options: --field size --alpha 0.05 --statistic slope|paper
            --alternative two-sided|greater|less --min-parts 4
            --resolution 0 --correct-to start|nominal --nominal X
            --lower L --upper U --rtol 1e-8
@@ -69,7 +78,7 @@ def parse():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--field", default="size")
     p.add_argument("--alpha", type=float, default=0.05)
-    p.add_argument("--statistic", choices=["seed", "slope"], default="seed")
+    p.add_argument("--statistic", choices=["slope", "paper"], default="slope")
     p.add_argument("--alternative", choices=["two-sided", "greater", "less"], default="two-sided")
     p.add_argument("--min-parts", type=int, default=4)
     p.add_argument("--resolution", type=float, default=0.0)
@@ -147,21 +156,26 @@ def main():
             for field in ("s", "t", "t_crit", "df"):
                 ck.null(line_no, rec, field)
         else:
-            resid = ys - (a_u + b_u * i)
-            sse = float(np.sum(resid * resid))
-            sxx = float(np.sum((i - i.mean()) ** 2))
-            if o.statistic == "seed":
-                df = 2 * (n - 1)
-                s_u = math.sqrt(sse / (n - 1))
+            a_t = a_u + b_u * i                      # (4) A_Ti, scaled
+            a_tn = a_u + b_u * n                     # A_TN
+            floor = math.ldexp(o.resolution / math.sqrt(12.0), -e)
+            if o.statistic == "paper":
+                df = 2 * (n - 1)                                            # k in (6)
+                s_u = math.sqrt(float(np.sum((ys - a_t) ** 2)) / (n - 1))  # (3)
+                s_u = max(s_u, floor)
+                scale_t = math.sqrt(n / 2.0)                                # (6)
             else:
                 df = n - 2
-                s_u = math.sqrt(sse / (n - 2))
-            s_u = max(s_u, math.ldexp(o.resolution / math.sqrt(12.0), -e))
+                # linregress's stderr of the slope is s / sqrt(Sxx), s^2 = SSE / (N - 2):
+                # the standard error of dA = -N b~ is N s / sqrt(Sxx)
+                sxx = float(np.sum((i - i.mean()) ** 2))
+                s_u = max(float(fit.stderr) * math.sqrt(sxx), floor)
+                scale_t = math.sqrt(sxx) / n
             s = math.ldexp(s_u, e)
             degenerate = s_u <= 1e-12  # a (numerically) perfect line: S is rounding noise
+            rise = abs(a_u - a_tn)                   # |dA| of (5), scaled
             if s_u > 0:
-                t = (n * abs(b_u) / s_u * math.sqrt(n / 2.0) if o.statistic == "seed"
-                     else abs(b_u) * math.sqrt(sxx) / s_u)
+                t = rise / s_u * scale_t
             else:
                 t = math.inf if b_u != 0 else 0.0
             tail = o.alpha / 2 if o.alternative == "two-sided" else o.alpha
@@ -190,8 +204,8 @@ def main():
                 significant = rec.get("decision") == "subtune"
             if significant:
                 decision = "subtune"
-                level = a + b * n
-                correction = (a - level) if o.correct_to == "start" else (o.nominal - level)
+                level = a + b * n                    # A_TN
+                correction = (a - level) if o.correct_to == "start" else (o.nominal - level)  # (5): dA = a~ - A_TN
         if rec.get("decision") != decision:
             ck.fail(line_no, "decision", rec.get("decision"), decision)
             # stay in step with the tool: its decision decides the runs from here

@@ -80,12 +80,13 @@ TEST(StudentCritical, RefusesBadAlpha) {
   EXPECT_THROW(StudentCriticalValues(std::nan(""), Sidedness::two), tk::Error);
 }
 
-TEST(SubTuner, FourPartsByHand) {
-  // Sizes 10.000 10.002 10.001 10.003 at i = 1..4: ī = 2.5, mean 10.0015,
+TEST(SubTuner, FourPartsByHandWithThePapersStatistic) {
+  // Eq. (3)-(6) as printed. Sizes 10.000 10.002 10.001 10.003 at i = 1..4: ī = 2.5, mean 10.0015,
   // Σ(i−ī)² = 5, Σ(i−ī)(A−Ā) = 0.004, so b = 0.0008, a = 10.0015 − 2.5 b = 9.9995;
   // residuals −0.0003 0.0009 −0.0009 0.0003, SSE = 1.8e-6, S² = SSE/3 = 6e-7;
-  // t = 4 b / S · √2 = 5.8423739..., t_crit(6) = 2.446912: sub-tune by −4 b.
-  SubTuner tuner({});
+  // t = |ã − A_T4| / S · √(4/2) = 4 b / S · √2 = 5.8423739..., t_crit(6) = 2.446912:
+  // sub-tune by ΔA = ã − A_T4 = −4 b.
+  SubTuner tuner({.statistic = TrendStatistic::paper});
   const double sizes[] = {10.000, 10.002, 10.001, 10.003};
   SubTuneStep step;
   for (int i = 0; i < 3; ++i) {
@@ -112,9 +113,9 @@ TEST(SubTuner, FourPartsByHand) {
   EXPECT_NEAR(next.offset, -0.0032, 1e-12);
 }
 
-TEST(SubTuner, SlopeStatisticByHand) {
+TEST(SubTuner, SlopeStatisticByHandIsTheDefault) {
   // The same four parts: s² = SSE/2 = 9e-7, t = b √5 / s = 1.8856..., t_crit(2) = 4.302653: no sub-tune.
-  SubTuner tuner({.statistic = TrendStatistic::slope});
+  SubTuner tuner({});
   SubTuneStep step;
   for (const double size : {10.000, 10.002, 10.001, 10.003}) step = tuner.observe(size);
   EXPECT_NEAR(step.s, std::sqrt(9e-7), 1e-12);
@@ -138,14 +139,14 @@ TEST(SubTuner, IdenticalSizesNeverSubTune) {
 
 TEST(SubTuner, AnExactLineIsSignificantAndTheResolutionTamesIt) {
   // 0.5 µm per part with no noise: S_N is 0 up to rounding, so t is infinite or huge.
-  SubTuner exact({});
+  SubTuner exact({.statistic = TrendStatistic::paper});
   SubTuneStep step;
   for (int i = 0; i < 4; ++i) step = exact.observe(40 + 0.0005 * i);
   EXPECT_EQ(step.decision, Decision::subtune);
   EXPECT_GT(step.t, 1e6);
   // With a 1 µm gauge, S_N ≥ 1e-3/√12: t = 4·0.0005/2.887e-4·√2 = 9.8 — still significant;
   // with a 10 µm gauge t = 0.98 and the drift is not yet significant.
-  SubTuner coarse({.resolution = 0.01});
+  SubTuner coarse({.statistic = TrendStatistic::paper, .resolution = 0.01});
   for (int i = 0; i < 4; ++i) step = coarse.observe(40 + 0.0005 * i);
   EXPECT_NEAR(step.s, 0.01 / std::sqrt(12.0), 1e-15);
   EXPECT_NEAR(step.t, 4 * 0.0005 / (0.01 / std::sqrt(12.0)) * std::sqrt(2.0), 1e-9);
@@ -153,7 +154,8 @@ TEST(SubTuner, AnExactLineIsSignificantAndTheResolutionTamesIt) {
 }
 
 TEST(SubTuner, OneSidedAlternativesWatchOneDirection) {
-  SubTuner greater({.alternative = Alternative::greater}), less({.alternative = Alternative::less});
+  SubTuner greater({.alternative = Alternative::greater, .statistic = TrendStatistic::paper}),
+      less({.alternative = Alternative::less, .statistic = TrendStatistic::paper});
   SubTuneStep up, down;
   for (const double size : {10.003, 10.001, 10.002, 10.000}) {  // shrinking, t = 5.84 as by hand
     up = greater.observe(size);
@@ -167,7 +169,7 @@ TEST(SubTuner, OneSidedAlternativesWatchOneDirection) {
 
 TEST(SubTuner, CorrectionToTheNominal) {
   // The by-hand run: A_T(4) = 9.9995 + 4·0.0008 = 10.0027; to a nominal of 10.000: −0.0027.
-  SubTuner tuner({.target = 10.0});
+  SubTuner tuner({.statistic = TrendStatistic::paper, .target = 10.0});
   SubTuneStep step;
   for (const double size : {10.000, 10.002, 10.001, 10.003}) step = tuner.observe(size);
   EXPECT_EQ(step.decision, Decision::subtune);
@@ -176,7 +178,7 @@ TEST(SubTuner, CorrectionToTheNominal) {
 
 TEST(SubTuner, LongRunMatchesTwoPassLongDouble) {
   // 10^6 parts at 12 345.678 mm with noise of 1 µm, a flat process, and the
-  // slope test at α = 1e-12 so the run never ends (the seed's t grows as
+  // slope test at α = 1e-12 so the run never ends (the paper's t grows as
   // N^1.5 |b| and ends it): the co-moments must agree with a two-pass
   // computation in long double, which has no cancellation to suffer.
   SubTuner tuner({.alpha = 1e-12, .statistic = TrendStatistic::slope});
@@ -205,7 +207,7 @@ TEST(SubTuner, LongRunWithAStrongTrendKeepsItsSpread) {
   // spread is a 1e-11 sliver of the sizes' moment, so SSE = Myy − b·Mxy
   // would cancel (it lost 1e-3 of s here); the recursive SSE must match the
   // two-pass long-double fit.
-  SubTuner tuner({.alternative = Alternative::less});
+  SubTuner tuner({.alternative = Alternative::less, .statistic = TrendStatistic::paper});
   std::mt19937_64 random(3);
   std::normal_distribution<double> noise(0, 0.001);
   std::vector<double> sizes(1000000);

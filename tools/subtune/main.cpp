@@ -366,8 +366,9 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
 int main(int argc, char** argv) {
   tk::cli::ToolApp tool("subtune",
                         "Active control of a lathe by dimensional sub-tuning (Georgiev, Chetrokov & Salapateva): reads the "
-                        "measured size of each finished part, in order, fits a line to the current run and adds n, a, b, s, "
-                        "t, t_crit, decision (insufficient, none, subtune) and the correction. 'model', 'feed' and 'correct' "
+                        "measured size of each finished part, in order, fits the regression line A_T(i) = a + i b to the current run, "
+                        "tests the difference dA = a - A_T(N) (eq. 3-6) and adds n, a, b, s, t, t_crit, decision (insufficient, "
+                        "none, subtune) and the correction dA. 'model', 'feed' and 'correct' "
                         "fit and apply the force-induced-error model; --simulate compares sub-tuning with Shewhart, EWMA "
                         "and CUSUM charts on a simulated batch.",
                         "Sizes and errors in mm, feeds in mm/rev. See subtune(1).");
@@ -376,7 +377,7 @@ int main(int argc, char** argv) {
   ChartSettings charts;
   LatheSettings lathe;
   SimulationOptions sim;
-  std::string alternative = "two-sided", statistic = "seed", correct_to = "start", field = "size", svg_path;
+  std::string alternative = "two-sided", statistic = "slope", correct_to = "start", field = "size", svg_path;
   std::optional<double> lower, upper;
   bool simulate_flag = false;
   using tk::cli::NumberDomain, tk::cli::number_check, tk::cli::count_check;
@@ -391,14 +392,16 @@ int main(int argc, char** argv) {
   CLI::App& app = tool.app();
   const std::string test = "The sub-tuning test", out = "Output", lathe_group = "Simulated lathe (with --simulate)",
                     chart_group = "Charts (--simulate, or the filter with a chart --policy)";
-  app.add_option("--alpha", tuning.alpha, "significance level of the trend test")->check(alpha_check)->capture_default_str()->group(test);
+  app.add_option("--alpha", tuning.alpha, "significance level of the test of dA (the paper prints none)")->check(alpha_check)->capture_default_str()->group(test);
   app.add_option("--alternative", alternative, "two-sided (either drift, the default), greater (growing sizes only) or less")
       ->check(CLI::IsMember({"two-sided", "greater", "less"}))->capture_default_str()->group(test);
-  app.add_option("--statistic", statistic, "seed: the paper's t at 2(N-1) df; slope: the textbook slope t at N-2 df")
-      ->check(CLI::IsMember({"seed", "slope"}))->capture_default_str()->group(test);
+  app.add_option("--statistic", statistic,
+                 "slope: Student's t of the difference (5) with its regression standard error, N-2 df (level alpha); "
+                 "paper: eq. (6) as printed, 2(N-1) df (alarms on noise about half the time at alpha 0.05)")
+      ->check(CLI::IsMember({"slope", "paper"}))->capture_default_str()->group(test);
   app.add_option("--min-parts", tuning.min_parts, "no decision before a run has this many parts")->check(count_check(3, 1000000))->capture_default_str()->type_name("N")->group(test);
-  app.add_option("--resolution", tuning.resolution, "gauge resolution, mm: S_N is at least its rounding noise r/sqrt(12)")->check(non_negative)->capture_default_str()->type_name("MM")->group(test);
-  app.add_option("--correct-to", correct_to, "start: back to the run's starting level (the seed); nominal: to --nominal")
+  app.add_option("--resolution", tuning.resolution, "gauge resolution, mm: s (or S_N) is at least its rounding noise r/sqrt(12)")->check(non_negative)->capture_default_str()->type_name("MM")->group(test);
+  app.add_option("--correct-to", correct_to, "start: by the paper's dA = a - A_T(N), back to the run's starting level; nominal: to --nominal")
       ->check(CLI::IsMember({"start", "nominal"}))->capture_default_str()->group(test);
   app.add_option("--field", field, "the field holding the size")->capture_default_str()->group(out);
   app.add_option("--lower", lower, "lower tolerance limit, mm (a record's 'lower' field overrides it)")->check(finite)->type_name("MM")->group(out);
@@ -463,7 +466,7 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&] {
     tuning.alternative = alternative == "greater" ? Alternative::greater : alternative == "less" ? Alternative::less : Alternative::two_sided;
-    tuning.statistic = statistic == "slope" ? TrendStatistic::slope : TrendStatistic::seed;
+    tuning.statistic = statistic == "paper" ? TrendStatistic::paper : TrendStatistic::slope;
     if (tuning.alternative != Alternative::two_sided && tuning.alpha >= 0.5)
       throw tk::UsageError(fmt::format("--alpha {} with --alternative {}: a one-sided test needs alpha below 0.5", tuning.alpha, alternative));
     if (correct_to == "nominal") {
