@@ -2,7 +2,7 @@
 /// @brief tnorm-bench: Könczöl & Gál's Mamdani line follower under six
 /// t-norms: its motor commands for sensor readings (eval), its speed per
 /// inference (bench), laps of a simulated car (laps), and the controller as
-/// fuzzylite FLL (fll). Any FLL controller can stand in for the seed's.
+/// fuzzylite FLL (fll). Any FLL controller can stand in for the paper's.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -63,7 +63,7 @@ struct ControllerOptions {
     sub.add_option("--implication", implication, "minimum (clip) or product (scale)")
         ->check(CLI::IsMember({"minimum", "product"}))
         ->capture_default_str();
-    sub.add_option("--fll", fll_path, "use this fuzzylite FLL controller instead of the seed's")->type_name("FILE");
+    sub.add_option("--fll", fll_path, "use this fuzzylite FLL controller instead of the paper's")->type_name("FILE");
     sub.add_option("--fire-threshold", fire_threshold, "rules fire from this activation on (fuzzylite: 1e-6)")
         ->capture_default_str()
         ->type_name("X");
@@ -106,7 +106,7 @@ struct ControllerOptions {
     return d;
   }
 
-  /// The controller: the seed's with `t`, or the FLL file's (with `t` when given).
+  /// The controller: the paper's with `t`, or the FLL file's (with `t` when given).
   fuzzy::Engine engine(std::optional<TNorm> t) const {
     fuzzy::Engine e;
     if (!fll_path.empty()) {
@@ -145,7 +145,7 @@ void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
   if (chosen.size() > 1) throw UsageError("eval takes one --tnorm");
   const fuzzy::Engine engine = options.engine(chosen.empty() ? std::nullopt : std::optional<TNorm>(chosen[0]));
   fuzzy::Mamdani controller = options.controller(engine);
-  const bool seed_controller = options.fll_path.empty();
+  const bool paper_controller = options.fll_path.empty();
   const double full_scale = options.adc_bits == 10 ? 1023 : 4095;
   io::RecordReader reader(tool.common().inputs);
   io::RecordWriter writer(tool.output_format());
@@ -158,7 +158,7 @@ void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
     const Location where = reader.where();
     for (std::size_t i = 0; i < in.size(); ++i) {
       in[i] = io::number_field(record, engine.inputs[i].name, where);
-      if (seed_controller && (in[i] < 0 || in[i] > full_scale))
+      if (paper_controller && (in[i] < 0 || in[i] > full_scale))
         throw Error(fmt::format("{} reading {} is outside the {}-bit ADC's 0..{}", engine.inputs[i].name, in[i],
                                 options.adc_bits, full_scale),
                     where);
@@ -314,7 +314,7 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
     r["board"] = laps.board;
     r["latency_ms"] = latency_ms;
     const auto paper = fuzzy::paper_three_laps_s(board, conjunction);
-    r["paper_total_s"] = paper && laps.laps == 3 ? Record(*paper) : Record();
+    r["paper_total_s"] = paper && laps.laps == 3 && !latency_given ? Record(*paper) : Record();
     writer.write(r);  // in CSV the arrays are JSON text in one cell
     writer.flush();
     if (trace_file) {
