@@ -1,9 +1,9 @@
 /// @file bench_tnorm.cpp
-/// @brief The seed's line-follower controller in our Mamdani engine against
+/// @brief The paper's line-follower controller in our Mamdani engine against
 /// the same controller built in fuzzylite 6.0 (Debian libfuzzylite-dev), per
 /// t-norm, on the same 1024 sensor triples: the outputs must agree within
 /// 1e-9 at the same resolution, and the times give ns per inference (one
-/// motor's value for one triple: the seed's protocol is 2 x 1024 of them).
+/// motor's value for one triple: the paper's protocol is 2 x 1024 of them).
 /// fuzzylite has no trigonometric t-norm; the benchmark supplies one.
 #include <fl/Headers.h>
 
@@ -23,7 +23,7 @@ namespace {
 using tk::fuzzy::TNorm;
 
 /// 2/pi asin(sin(pi/2 a) sin(pi/2 b)); folded over three inputs it equals
-/// the seed's three-input form.
+/// the paper's three-input form.
 class Trigonometric : public fl::TNorm {
  public:
   std::string className() const override { return "Trigonometric"; }
@@ -175,7 +175,7 @@ int main() {
     worst_exact_ratio.push_back(bench::median(exact_ratio));
   }
   // run.sh's RESULT lines: the t-norm with the smallest ratio, its seconds
-  // per 2 x 1024 inferences (the seed's protocol) for ours and fuzzylite.
+  // per 2 x 1024 inferences (the paper's protocol) for ours and fuzzylite.
   const std::size_t w = std::min_element(worst_ratio.begin(), worst_ratio.end()) - worst_ratio.begin();
   const std::size_t we = std::min_element(worst_exact_ratio.begin(), worst_exact_ratio.end()) - worst_exact_ratio.begin();
   std::printf("RESULT tnorm_discrete %.6f %.6f %.4f 20 %d\n", ours_2048[w], peer_2048[w], worst_ratio[w], repeats);

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# tnorm-bench: the seed's line follower under six t-norms.
-#   1. what the controller commands for a few sensor situations;
+# tnorm-bench: Könczöl & Gál's line follower under six t-norms.
+#   1. what the paper's rules command for a few sensor situations;
 #   2. how long an inference takes, per t-norm (this machine);
-#   3. three laps of the simulated car per t-norm, drawn in laps.svg, and the
-#      same with a much slower controller (40 ms from sampling to command);
+#   3. the lap study: three laps per t-norm with the Uno's and the ESP32's
+#      loop times (the paper's Tables 3-4), beside the paper's lap times
+#      (Tables 1-2), drawn in laps-uno.svg; then one car at growing loop times;
 #   4. the controller as fuzzylite FLL, which eval reads back.
 #
 #   bash examples/tnorm-bench.sh [OUTPUT_DIR]
@@ -12,7 +13,7 @@ out="${1:-${TMPDIR:-/tmp}/tnorm-bench-example}"
 mkdir -p "$out"
 
 echo "== 1. motor commands (10-bit readings; high = dark line under the sensor)"
-printf 'situation,left,mid,right\ncentred,40,950,40\ndrifting left,950,950,40\nfar left,950,40,40\nlost,40,40,40\nbetween sensors,40,400,430\n' |
+printf 'situation,left,mid,right\ncentred (R4),40,950,40\nleft of centre (R5),950,950,40\nunder the left sensor (R6),950,40,40\nlost (R1),40,40,40\nbetween mid and right,40,400,430\n' |
   tnorm-bench eval --tnorm minimum --centroid exact --csv
 
 echo
@@ -20,20 +21,22 @@ echo "== 2. time per inference (one motor, one triple), discrete centroid at res
 tnorm-bench bench --seconds 0.2 --csv
 
 echo
-echo "== 3. three laps of the 1000 x 300 mm oval (plot: $out/laps.svg)"
+echo "== 3. three laps of the 1000 x 300 mm oval per board (plot: $out/laps-uno.svg)"
 show_laps() {
   /usr/bin/python3 -c '
 import json, sys
 for line in sys.stdin:
     r = json.loads(line)
-    laps = " ".join("%.2f" % t for t in r["lap_times_s"]) or "-"
-    print("%-14s %-9s %-24s %7.2f %9.1f  %s %s" % (r["tnorm"], r["completed"], laps, r["total_s"],
-          r["rms_deviation_mm"], r["stop_reason"] or "", r["sensors_at_end"]))'
+    ours = "%.2f" % r["total_s"] if r["completed"] else "%s at %.1f s (%s)" % (r["stop_reason"], r["total_s"], r["sensors_at_end"])
+    paper = "%.2f" % r["paper_total_s"] if r["paper_total_s"] else "-"
+    print("%-6s %-14s %7.3f ms  ours %-26s paper %s" % (r["board"], r["tnorm"], r["latency_ms"], ours, paper))'
 }
-printf '%-14s %-9s %-24s %7s %9s\n' tnorm completed laps_s total_s rms_dev_mm
-tnorm-bench laps --tnorm all --svg "$out/laps.svg" | show_laps
-echo "-- the same with 40 ms from sampling to command"
-tnorm-bench laps --tnorm all --latency-ms 40 --svg "$out/laps-slow.svg" | show_laps
+tnorm-bench laps --tnorm all --board uno --svg "$out/laps-uno.svg" | show_laps
+tnorm-bench laps --tnorm all --board esp32 | show_laps
+echo "-- the minimum t-norm's car at growing loop times"
+for ms in 0 4 12 20 25 40; do
+  tnorm-bench laps --tnorm minimum --latency-ms "$ms" --time-limit 90 | show_laps
+done
 
 echo
 echo "== 4. the controller as fuzzylite FLL ($out/follower.fll), read back"

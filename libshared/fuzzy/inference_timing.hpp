@@ -1,5 +1,5 @@
 /// @file inference_timing.hpp
-/// @brief Timing Mamdani inferences the way the line-follower seed did
+/// @brief Timing Mamdani inferences the way the line-follower paper did
 /// (2 x 1024: both motors for 1024 sensor triples) and over many more for a
 /// stable figure. An inference is one output's value for one input vector.
 #pragma once
@@ -20,7 +20,7 @@ std::vector<std::array<double, 3>> protocol_triples(int adc_bits);
 
 struct InferenceTiming {
   double ns_per_inference = 0;  ///< median over rounds of many protocol blocks
-  double ms_per_2x1024 = 0;     ///< the seed's protocol: one block, median over rounds
+  double ms_per_2x1024 = 0;     ///< the paper's protocol: one block, median over rounds
   std::uint64_t inferences = 0;  ///< how many were timed in all
 };
 

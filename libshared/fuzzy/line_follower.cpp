@@ -1,5 +1,6 @@
 /// @file line_follower.cpp
-/// @brief The seed's line-follower controller as an Engine.
+/// @brief The paper's line-follower controller as an Engine, and its
+/// published timings and lap times.
 #include "fuzzy/line_follower.hpp"
 
 #include <fmt/format.h>
@@ -16,10 +17,10 @@ struct RuleRow {
   const char* left_motor;
 };
 
-// R1-R7 for the left motor; see line_follower.hpp for the reading.
+// R1-R7 for the left motor as the paper prints them (seed 000, lines 658-670).
 constexpr RuleRow kRules[] = {
-    {L, D, L, "FORWARD_MAX"}, {D, D, L, "FORWARD"},     {D, L, L, "BACKWARD"},       {L, D, D, "FORWARD_MAX"},
-    {L, L, D, "FORWARD_MAX"}, {D, D, D, "STOP"},        {L, L, L, "BACKWARD_SLOWLY"},
+    {L, L, L, "STOP"},    {L, L, D, "FORWARD_MAX"}, {L, D, D, "FORWARD"},        {L, D, L, "FORWARD"},
+    {D, D, L, "BACKWARD"}, {D, L, L, "BACKWARD_MAX"}, {D, D, D, "BACKWARD_SLOWLY"},
 };
 
 Term scaled(const char* name, std::array<double, 4> corners, double factor) {
@@ -96,6 +97,40 @@ Engine line_follower_engine(const LineFollowerOptions& options) {
   }
   validate(engine);
   return engine;
+}
+
+int board_adc_bits(Board board) { return board == Board::uno ? 10 : 12; }
+
+namespace {
+
+struct BoardFigures {
+  TNorm tnorm;
+  double uno_ms, esp32_ms;              // Tables 3 and 4, 2 x 1024 inferences
+  double uno_laps_s, esp32_laps_s;      // Tables 1 and 2, 3 laps; 0: "-"
+};
+
+constexpr BoardFigures kPaperFigures[] = {
+    {TNorm::minimum, 3704, 367, 34.23, 32.49},       {TNorm::product, 3758, 378, 36.95, 28.25},
+    {TNorm::drastic, 3756, 321, 0, 0},               {TNorm::lukasiewicz, 4035, 344, 37.72, 27.35},
+    {TNorm::trigonometric, 11665, 1188, 43.99, 27.63}, {TNorm::hamacher, 4448, 471, 33.41, 30.22},
+};
+
+const BoardFigures& figures(TNorm t) {
+  for (const BoardFigures& f : kPaperFigures)
+    if (f.tnorm == t) return f;
+  throw Error("no published figures for this t-norm");
+}
+
+}  // namespace
+
+double paper_ms_per_2x1024(Board board, TNorm t) {
+  return board == Board::uno ? figures(t).uno_ms : figures(t).esp32_ms;
+}
+
+std::optional<double> paper_three_laps_s(Board board, TNorm t) {
+  const double s = board == Board::uno ? figures(t).uno_laps_s : figures(t).esp32_laps_s;
+  if (s > 0) return s;
+  return std::nullopt;
 }
 
 }  // namespace tk::fuzzy

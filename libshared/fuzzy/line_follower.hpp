@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "fuzzy/engine.hpp"
@@ -14,39 +15,52 @@ namespace tk::fuzzy {
 
 struct LineFollowerOptions {
   int adc_bits = 10;           ///< 10 (Arduino Uno) or 12 (ESP32)
-  double speed_factor = 1.92;  ///< the seed's first value; 2.0 in its later runs
-  /// BACKWARD_SLOWLY, which the seed's R7 uses without giving its corners:
+  double speed_factor = 2.0;  ///< the paper's Tables 1-2 (1.92 in its first measurements)
+  /// BACKWARD_SLOWLY, which the paper's R7 uses without giving its corners:
   /// ours, before scaling, sits between STOP and BACKWARD.
   std::array<double, 4> backward_slowly{-45, -35, -25, -15};
   TNorm conjunction = TNorm::minimum;
-  /// Minimum (clipping): Mamdani's own implication, and the one of eFLL, the
-  /// Arduino library the seed's controller ran on.
+  /// Minimum (clipping): Mamdani's own implication (the paper: "A Mamdani
+  /// type fuzzy interference system", no more detail).
   Implication implication = Implication::minimum;
   Defuzzifier defuzzifier;
-  /// The motor command's range: an 8-bit PWM duty with a direction, which is
-  /// why the seed scales its +-100-ish terms by about 2.
+  /// The motor command's range: an 8-bit PWM duty ("0-255") with a
+  /// direction (the paper's BACKWARD terms are negative).
   double output_min = -255, output_max = 255;
 };
 
-/// The rules, for the left motor (sensors left, mid, right; L = LIGHT,
-/// D = DARK); the right motor's rules swap the left and right sensors.
-///   R1  L D L  FORWARD_MAX      line centred: full ahead
-///   R2  D D L  FORWARD          line drifting left: left wheel slows
-///   R3  D L L  BACKWARD         line far left: left wheel reverses
-///   R4  L D D  FORWARD_MAX      line drifting right: left wheel keeps on
-///   R5  L L D  FORWARD_MAX      line far right: left wheel keeps on
-///   R6  D D D  STOP             a bar across the line: stop
-///   R7  L L L  BACKWARD_SLOWLY  line lost: back up slowly to find it
-/// The no-rule-fired default of both motors is 0 (the range's midpoint,
-/// motor off); BACKWARD_MAX is defined, as in the seed, but no rule uses it.
+/// The rules as the paper prints them, for the left motor (sensors left,
+/// mid, right; L = LIGHT, D = DARK, a dark line on a light floor); the
+/// right motor's rules swap the left and right sensors:
+///   R1  L L L  STOP             line lost: stop
+///   R2  L L D  FORWARD_MAX      line under the right sensor: pivot right
+///   R3  L D D  FORWARD          line right of centre: pivot right
+///   R4  L D L  FORWARD          line centred: ahead
+///   R5  D D L  BACKWARD         line left of centre: pivot left
+///   R6  D L L  BACKWARD_MAX     line under the left sensor: pivot left
+///   R7  D D D  BACKWARD_SLOWLY  all dark: back up slowly
+/// D L D has no rule. The no-rule-fired default of both motors is 0 (the
+/// range's midpoint, motor off).
 Engine line_follower_engine(const LineFollowerOptions& options);
 
 /// "LLD" and the like: each reading's stronger term (L when LIGHT >= DARK),
-/// left to right, as the seed names the situations.
+/// left to right, as the paper names the situations.
 std::string sensor_pattern(double left, double mid, double right, int adc_bits);
 
-/// The sensor terms' corners for an ADC of `adc_bits` (10 or 12), as the seed gives them.
+/// The sensor terms' corners for an ADC of `adc_bits` (10 or 12), as the paper gives them.
 Trapezoid light_term(int adc_bits);
 Trapezoid dark_term(int adc_bits);
+
+/// The paper's two boards: the Arduino Uno (10-bit ADC) and the ESP32 (12-bit).
+enum class Board { uno, esp32 };
+int board_adc_bits(Board board);
+
+/// The paper's Tables 3 and 4: ms for 2 x 1024 inferences (both motors for
+/// 1024 sensor triples) on `board`, measured with millis().
+double paper_ms_per_2x1024(Board board, TNorm t);
+
+/// The paper's Tables 1 and 2: three laps' time in s (median of three runs,
+/// speed factor 2.0), none for the drastic t-norm, which did not finish.
+std::optional<double> paper_three_laps_s(Board board, TNorm t);
 
 }  // namespace tk::fuzzy

@@ -126,7 +126,8 @@ DriveBody::DriveBody(const CarParameters& car, Pose start) : car_(car), pose_(st
 double DriveBody::target(double command) const {
   if (!std::isfinite(command)) command = 0;  // a motor driver cannot be given NaN; treat it as no drive
   command = std::clamp(command, -kCommandLimit, kCommandLimit);
-  return std::abs(command) < car_.deadband_units ? 0.0 : command * car_.mm_per_s_per_unit;
+  const double above = std::abs(command) - car_.deadband_units;
+  return above <= 0 ? 0.0 : std::copysign(above * car_.mm_per_s_per_unit, command);
 }
 
 void DriveBody::set_command(MotorCommand command) {

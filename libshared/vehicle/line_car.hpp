@@ -28,8 +28,12 @@ struct MotorCommand {
 
 using Controller = std::function<MotorCommand(const SensorReadings&)>;
 
-/// Defaults: a small two-wheel hobby chassis (TT gear motors, 65 mm wheels)
-/// with a three-channel TCRT5000-style sensor bar, 10-bit ADC (Arduino Uno).
+/// Defaults: the paper's car as far as it describes it (four DC motors on
+/// an L298N at 9 V, three MH-Sensor-Series reflective modules, a 10-bit ADC)
+/// with the usual parts of such kits where it does not: TT-class 1:48 gear
+/// motors (90-200 rpm unloaded at 6 V, stall torque about 0.4 kg cm) on
+/// 65 mm wheels, a car of about 0.7 kg. The man page's LAPS section derives
+/// each value.
 struct CarParameters {
   double wheel_base_mm = 130;     ///< distance between the wheels' contact points
   double sensor_ahead_mm = 90;    ///< sensor bar ahead of the axle centre
@@ -39,10 +43,16 @@ struct CarParameters {
   double floor_counts = 40;       ///< reading over bare floor
   double line_counts = 950;       ///< reading over the tape
   double noise_counts = 3;        ///< Gaussian reading noise, standard deviation
-  double mm_per_s_per_unit = 2.4;  ///< wheel speed per command unit above the deadband (144 -> 346 mm/s)
-  double motor_tau_s = 0.06;      ///< first-order lag of wheel speed behind the command
-  double deadband_units = 30;     ///< |command| below this does not turn the wheel (static friction)
+  /// Wheel speed per command unit above the start threshold: 200 rpm at 6 V
+  /// is 33 rpm/V; a duty unit is 8.4/255 V at the motor; 65 mm wheels.
+  double mm_per_s_per_unit = 3.7;
+  double motor_tau_s = 0.06;  ///< first-order lag of wheel speed behind the command
+  /// |command| a wheel needs to turn (static friction): the paper's 55 did
+  /// not start the motors at ~5.2 V and did at 12 V, so 1.1-2.4 V; at the
+  /// ~8.4 V the 9 V supply leaves, 34-73 units; the middle.
+  double deadband_units = 53;
 
+  /// The defaults with the readings scaled from 10 bits to `bits`.
   /// The defaults with the readings scaled from 10 bits to `bits`.
   static CarParameters with_adc_bits(int bits);
   double full_scale() const { return static_cast<double>((1L << adc_bits) - 1); }
@@ -61,8 +71,10 @@ double spot_coverage(double delta_mm, double width_mm, double sigma_mm);
 /// Where the three spots are for a car at `pose`: left, mid, right.
 std::array<Point, 3> sensor_positions(const CarParameters& car, const Pose& pose);
 
-/// The wheels and the body: command -> deadband -> first-order lag -> exact
-/// differential-drive kinematics (constant wheel speeds over a step are an arc).
+/// The wheels and the body: command -> start threshold -> first-order lag ->
+/// exact differential-drive kinematics (constant wheel speeds over a step are
+/// an arc). A wheel's target speed is k (|u| - u0) in u's direction for
+/// |u| > u0 (a DC motor's steady speed against friction), 0 below.
 class DriveBody {
  public:
   DriveBody(const CarParameters& car, Pose start);

@@ -2,7 +2,7 @@
 # Command-line behaviour of tnorm-bench. Expected values come from closed
 # forms (the centroid of a full trapezoid), the fuzzylite 6.0 command-line
 # program (Debian package fuzzylite) evaluating the same controller from
-# the FLL we write, dense sampling, and the seed's qualitative findings as
+# the FLL we write, dense sampling, and the paper's qualitative findings as
 # inequalities, never from the tool's own output captured once.
 
 bats_require_minimum_version 1.5.0
@@ -91,18 +91,29 @@ print("compared", compared, "worst", worst)' "$2" theirs.fld "$n"
   assert_failure 2
   run tnorm-bench laps --laps 0
   assert_failure 2
+  run tnorm-bench laps --board pcb
+  assert_failure 2
+  run tnorm-bench laps --board esp32 --adc 10
+  assert_failure 2
+  assert_output --partial "contradicts --board esp32"
+  run tnorm-bench laps --latency-ms -1
+  assert_failure 2
+  for bad in "--motor-tau-ms -1" "--wheel-base 0" "--speed-per-unit nan" "--sensor-spacing 0" "--noise -2" "--no-rule keep"; do
+    run tnorm-bench laps --tnorm minimum $bad
+    assert_failure 2
+  done
   run tnorm-bench bench --seconds -1
   assert_failure 2
 }
 
-@test "a centred line drives both motors at FORWARD_MAX's centroid (closed form)" {
+@test "a centred line drives both motors at FORWARD's centroid (closed form)" {
   run tnorm-bench eval --centroid exact <<< '{"id":"a","left":40,"mid":950,"right":40}'
   assert_success
-  # Only R1 fires, fully: FORWARD_MAX {60,75,80,85} x 1.92, a full trapezoid.
+  # Only R4 (L D L) fires, fully: FORWARD {45,55,65,75} x 2.0, a full trapezoid.
   py '
 import json, sys
 r = json.loads(sys.argv[1])
-a, b, c, d = (v * 1.92 for v in (60, 75, 80, 85))
+a, b, c, d = (v * 2.0 for v in (45, 55, 65, 75))
 g = (c*c + c*d + d*d - a*a - a*b - b*b) / (3 * (c + d - a - b))
 assert r["id"] == "a" and list(r)[:4] == ["id", "left", "mid", "right"]
 assert abs(r["left_motor"] - g) < 1e-9 and abs(r["right_motor"] - g) < 1e-9, (r, g)' "$output"
@@ -119,7 +130,7 @@ assert abs(float(rows[0]["right_motor"]) - float(rows[1]["left_motor"])) < 1e-12
 assert float(rows[0]["left_motor"]) < float(rows[0]["right_motor"])  # line on the left: turn left' "$output"
 }
 
-@test "eval agrees with fuzzylite on the seed's controller for every t-norm fuzzylite has" {
+@test "eval agrees with fuzzylite on the paper's controller for every t-norm fuzzylite has" {
   command -v fuzzylite || skip "fuzzylite (Debian package fuzzylite) not installed"
   random_triples 300 7 > in.csv
   printf '40,950,40\n950,950,950\n20,20,20\n400,400,400\n0,1023,0\n' >> in.csv
@@ -196,7 +207,7 @@ for x, y in zip(a, b):
   assert_success
   assert_output '{"left":20,"mid":130,"right":130,"left_motor":0.0,"right_motor":0.0}'
   run tnorm-bench eval --tnorm minimum <<< '{"left":20,"mid":130,"right":130}'
-  py 'import json, sys; r = json.loads(sys.argv[1]); assert r["left_motor"] < -20' "$output"
+  py 'import json, sys; r = json.loads(sys.argv[1]); assert r["left_motor"] > r["right_motor"] + 10' "$output"  # toward the line on the right
 }
 
 @test "bad records: a clear error with file and line, earlier records kept" {
@@ -241,7 +252,7 @@ for x, y in zip(a, b):
   assert_failure 1
 }
 
-@test "bench: one record per t-norm with the seed's protocol figure" {
+@test "bench: one record per t-norm with the paper's protocol figure" {
   run tnorm-bench bench --seconds 0.05
   assert_success
   py '
@@ -256,8 +267,8 @@ for r in rows:
   assert_line --index 0 "tnorm,ns_per_inference,ms_per_2x1024,inferences,centroid,resolution"
 }
 
-@test "laps: the drastic car stops and does not finish, the others complete" {
-  run tnorm-bench laps --tnorm all --svg laps.svg --trace trace.jsonl
+@test "laps: on the ESP32 the drastic car stops and does not finish, the others complete" {
+  run tnorm-bench laps --tnorm all --board esp32 --svg laps.svg --trace trace.jsonl
   assert_success
   py '
 import json, sys
@@ -273,6 +284,12 @@ for name, r in rows.items():
   grep -q "<svg" laps.svg
   [ "$(grep -c '<path' laps.svg)" -ge 7 ]  # the track and six runs
   [ "$(json-field tnorm < trace.jsonl | sort -u | wc -l)" -eq 6 ]
+}
+
+@test "laps: --no-rule hold keeps the drastic car's motors going where no rule fires" {
+  run tnorm-bench laps --tnorm drastic --board esp32 --no-rule hold --laps 1
+  assert_success
+  check 'assert rows[0]["completed"] and rows[0]["latency_ms"] == 321 / 1024, rows[0]' <<< "$output"
 }
 
 @test "laps: a slower controller follows the line worse" {

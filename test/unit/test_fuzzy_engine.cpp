@@ -293,7 +293,7 @@ TEST(FuzzyMamdani, FastKernelsMatchTheNaiveDefinition) {
   }
 }
 
-TEST(FuzzyLineFollower, CentredLineDrivesStraightAtForwardMax) {
+TEST(FuzzyLineFollower, CentredLineDrivesStraightAtForward) {
   for (Defuzzifier::Kind kind : {Defuzzifier::Kind::discrete, Defuzzifier::Kind::exact}) {
     LineFollowerOptions options;
     options.defuzzifier.kind = kind;
@@ -301,14 +301,14 @@ TEST(FuzzyLineFollower, CentredLineDrivesStraightAtForwardMax) {
     const double in[3] = {50, 900, 50};
     double out[2];
     m.evaluate(in, out);
-    // Only R1 fires, at 1: FORWARD_MAX scaled by 1.92, a full trapezoid.
-    const double k = 1.92, expected = trapezoid_centroid(60 * k, 75 * k, 80 * k, 85 * k);
+    // Only R4 (L D L) fires, at 1: FORWARD {45, 55, 65, 75} x 2.0, a full trapezoid.
+    const double k = 2.0, expected = trapezoid_centroid(45 * k, 55 * k, 65 * k, 75 * k);
     EXPECT_NEAR(out[0], expected, kind == Defuzzifier::Kind::exact ? 1e-12 : 0.5);
     EXPECT_EQ(out[0], out[1]);
   }
 }
 
-TEST(FuzzyLineFollower, MirroredAndTurningTowardTheLine) {
+TEST(FuzzyLineFollower, MirroredAndPivotingTowardTheLine) {
   LineFollowerOptions options;
   options.defuzzifier.kind = Defuzzifier::Kind::exact;
   Mamdani m(line_follower_engine(options));
@@ -318,18 +318,32 @@ TEST(FuzzyLineFollower, MirroredAndTurningTowardTheLine) {
   m.evaluate(right_dark, b);
   EXPECT_NEAR(a[0], b[1], 1e-12);  // mirror image
   EXPECT_NEAR(a[1], b[0], 1e-12);
-  EXPECT_LT(a[0], 0);  // line far left: left wheel back (R3: BACKWARD)
-  EXPECT_NEAR(a[0], trapezoid_centroid(-80 * 1.92, -75 * 1.92, -70 * 1.92, -60 * 1.92), 1e-12);
-  EXPECT_GT(a[1], 100);  // right wheel forward
-  // All light: R7, backing up slowly with our BACKWARD_SLOWLY.
-  const double lost[3] = {20, 20, 20};
+  // D L L: R6 sends the left wheel BACKWARD_MAX, the right one (mirrored R2) FORWARD_MAX.
+  EXPECT_NEAR(a[0], trapezoid_centroid(-90 * 2.0, -85 * 2.0, -80 * 2.0, -70 * 2.0), 1e-12);
+  EXPECT_NEAR(a[1], trapezoid_centroid(60 * 2.0, 75 * 2.0, 80 * 2.0, 85 * 2.0), 1e-12);
+  // D D L: R5, BACKWARD; the right wheel (mirrored R3) FORWARD.
+  const double left_and_mid[3] = {900, 900, 50};
+  m.evaluate(left_and_mid, a);
+  EXPECT_NEAR(a[0], trapezoid_centroid(-80 * 2.0, -75 * 2.0, -70 * 2.0, -60 * 2.0), 1e-12);
+  EXPECT_NEAR(a[1], trapezoid_centroid(45 * 2.0, 55 * 2.0, 65 * 2.0, 75 * 2.0), 1e-12);
+  // All light: R1, STOP (a triangle about 0); all dark: R7, our BACKWARD_SLOWLY.
+  const double lost[3] = {20, 20, 20}, all_dark[3] = {1000, 1000, 1000};
   m.evaluate(lost, a);
-  EXPECT_NEAR(a[0], trapezoid_centroid(-45 * 1.92, -35 * 1.92, -25 * 1.92, -15 * 1.92), 1e-12);
+  EXPECT_NEAR(a[0], 0, 1e-12);
+  EXPECT_NEAR(a[1], 0, 1e-12);
+  m.evaluate(all_dark, a);
+  EXPECT_NEAR(a[0], trapezoid_centroid(-45 * 2.0, -35 * 2.0, -25 * 2.0, -15 * 2.0), 1e-12);
+  // D L D has no rule: both motors get the default, 0.
+  const double both_sides[3] = {900, 50, 900};
+  m.evaluate(both_sides, a);
+  EXPECT_EQ(a[0], 0);
+  EXPECT_EQ(m.fired()[0], 0u);
 }
 
 TEST(FuzzyLineFollower, DrasticFiresNothingWhenTwoSensorsAreUnsure) {
   // Two memberships below 1 in every rule: the drastic t-norm gives 0
-  // everywhere and both motors get the default, 0; the minimum still acts.
+  // everywhere and both motors get the default, 0; the minimum still acts,
+  // turning toward the line on the right (R1 at 0.95 with R2-R4 at 0.05).
   const double unsure[3] = {30, 130, 130};
   for (TNorm t : {TNorm::drastic, TNorm::minimum}) {
     LineFollowerOptions options;
@@ -342,8 +356,8 @@ TEST(FuzzyLineFollower, DrasticFiresNothingWhenTwoSensorsAreUnsure) {
       EXPECT_EQ(out[1], 0);
       EXPECT_EQ(m.fired()[0], 0u);
     } else {
-      EXPECT_LT(out[0], 0);
-      EXPECT_GT(m.fired()[0], 0u);
+      EXPECT_GT(out[0], out[1]);
+      EXPECT_EQ(m.fired()[0], 4u);
     }
   }
 }

@@ -90,7 +90,7 @@ TEST(TNorm, AxiomsOnAGrid) {
 }
 
 TEST(Membership, TrapezoidAndTriangle) {
-  // The seed's 10-bit LIGHT {-1, 0, 100, 700} and DARK {100, 700, 1024, 1025}.
+  // The paper's 10-bit LIGHT {-1, 0, 100, 700} and DARK {100, 700, 1024, 1025}.
   const tk::fuzzy::Trapezoid light{-1, 0, 100, 700}, dark{100, 700, 1024, 1025};
   EXPECT_EQ(light(0), 1);
   EXPECT_EQ(light(100), 1);

@@ -117,9 +117,12 @@ TEST(VehicleDrive, DeadbandAndClamp) {
   EXPECT_EQ(body.pose().heading, 0);
   body.set_command({1000, 1000});  // clamped to 255
   drive(body, 1.0, 0.001);
-  EXPECT_NEAR(body.pose().x, 255 * car.mm_per_s_per_unit, 1e-6);
+  EXPECT_NEAR(body.pose().x, (255 - 30) * car.mm_per_s_per_unit, 1e-6);  // speed grows from the threshold on
+  body.set_command({-100, -100});
+  drive(body, 1.0, 0.001);
+  EXPECT_NEAR(body.pose().x, (255 - 30 - 70) * car.mm_per_s_per_unit, 1e-6);
   body.set_command({NAN, NAN});  // no drive
-  EXPECT_EQ(body.left_speed(), 255 * car.mm_per_s_per_unit);  // the command acts on the next step
+  EXPECT_EQ(body.left_speed(), -70 * car.mm_per_s_per_unit);  // the command acts on the next step
   body.advance(0.001);
   EXPECT_EQ(body.left_speed(), 0);
 }
@@ -133,7 +136,7 @@ TEST(VehicleLaps, BangBangCompletesThreeLapsOfTheOval) {
   ASSERT_EQ(r.lap_times_s.size(), 3u);
   // No lap faster than the whole centre line at full speed (the axle cuts inside
   // the half circles by sqrt(r^2 + ahead^2) - r at most... bounded by 2 pi * 15 mm a lap).
-  const double v_max = 144 * car.mm_per_s_per_unit;
+  const double v_max = (144 - car.deadband_units) * car.mm_per_s_per_unit;
   for (double lap : r.lap_times_s) EXPECT_GT(lap, (track.length_mm() - 2 * kPi * 15) / v_max);
   EXPECT_NEAR(r.lap_times_s[0] + r.lap_times_s[1] + r.lap_times_s[2], r.total_s, 1e-3);
   EXPECT_GT(r.distance_mm, 3 * (track.length_mm() - 2 * kPi * 15));

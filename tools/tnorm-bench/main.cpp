@@ -2,7 +2,7 @@
 /// @brief tnorm-bench: Könczöl & Gál's Mamdani line follower under six
 /// t-norms: its motor commands for sensor readings (eval), its speed per
 /// inference (bench), laps of a simulated car (laps), and the controller as
-/// fuzzylite FLL (fll). Any FLL controller can stand in for the seed's.
+/// fuzzylite FLL (fll). Any FLL controller can stand in for the paper's.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -38,11 +38,12 @@ struct ControllerOptions {
   std::vector<std::string> tnorms;
   int adc_bits = 10;
   std::string centroid;  ///< "" keeps the controller's own; "exact", "discrete", "discrete:N"
-  double speed_factor = 1.92;
+  double speed_factor = 2.0;
   std::string backward_slowly = "-45,-35,-25,-15";
   std::string implication = "minimum";
   std::string fll_path;
   double fire_threshold = 0;
+  CLI::Option* adc_option = nullptr;
 
   void add_to(CLI::App& sub, bool many_tnorms) {
     auto* t = sub.add_option("--tnorm", tnorms,
@@ -50,19 +51,19 @@ struct ControllerOptions {
                                          : "the rules' t-norm: minimum, product, drastic, lukasiewicz, trigonometric, hamacher")
                   ->type_name("NAME");
     if (!many_tnorms) t->expected(1);
-    sub.add_option("--adc", adc_bits, "the sensors' ADC: 10 (Arduino Uno) or 12 bits (ESP32)")
+    adc_option = sub.add_option("--adc", adc_bits, "the sensors' ADC: 10 (Arduino Uno) or 12 bits (ESP32)")
         ->check(CLI::IsMember({10, 12}))
         ->capture_default_str();
     sub.add_option("--centroid", centroid, "exact, or discrete[:N] (fuzzylite's, N samples, default 100)")
         ->type_name("KIND");
-    sub.add_option("--speed-factor", speed_factor, "scales the motor terms (seed: 1.92, later 2.0)")->capture_default_str();
+    sub.add_option("--speed-factor", speed_factor, "scales the motor terms (the paper: 1.92 first, 2.0 in its Tables 1-2)")->capture_default_str();
     sub.add_option("--backward-slowly", backward_slowly, "BACKWARD_SLOWLY's corners before scaling")
         ->capture_default_str()
         ->type_name("A,B,C,D");
     sub.add_option("--implication", implication, "minimum (clip) or product (scale)")
         ->check(CLI::IsMember({"minimum", "product"}))
         ->capture_default_str();
-    sub.add_option("--fll", fll_path, "use this fuzzylite FLL controller instead of the seed's")->type_name("FILE");
+    sub.add_option("--fll", fll_path, "use this fuzzylite FLL controller instead of the paper's")->type_name("FILE");
     sub.add_option("--fire-threshold", fire_threshold, "rules fire from this activation on (fuzzylite: 1e-6)")
         ->capture_default_str()
         ->type_name("X");
@@ -105,7 +106,7 @@ struct ControllerOptions {
     return d;
   }
 
-  /// The controller: the seed's with `t`, or the FLL file's (with `t` when given).
+  /// The controller: the paper's with `t`, or the FLL file's (with `t` when given).
   fuzzy::Engine engine(std::optional<TNorm> t) const {
     fuzzy::Engine e;
     if (!fll_path.empty()) {
@@ -144,7 +145,7 @@ void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
   if (chosen.size() > 1) throw UsageError("eval takes one --tnorm");
   const fuzzy::Engine engine = options.engine(chosen.empty() ? std::nullopt : std::optional<TNorm>(chosen[0]));
   fuzzy::Mamdani controller = options.controller(engine);
-  const bool seed_controller = options.fll_path.empty();
+  const bool paper_controller = options.fll_path.empty();
   const double full_scale = options.adc_bits == 10 ? 1023 : 4095;
   io::RecordReader reader(tool.common().inputs);
   io::RecordWriter writer(tool.output_format());
@@ -157,7 +158,7 @@ void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
     const Location where = reader.where();
     for (std::size_t i = 0; i < in.size(); ++i) {
       in[i] = io::number_field(record, engine.inputs[i].name, where);
-      if (seed_controller && (in[i] < 0 || in[i] > full_scale))
+      if (paper_controller && (in[i] < 0 || in[i] > full_scale))
         throw Error(fmt::format("{} reading {} is outside the {}-bit ADC's 0..{}", engine.inputs[i].name, in[i],
                                 options.adc_bits, full_scale),
                     where);
@@ -198,22 +199,53 @@ void run_bench(cli::ToolApp& tool, const ControllerOptions& options, double seco
 
 struct LapsOptions {
   int laps = 3;
-  double latency_ms = 1.8;
+  std::string board = "uno";
+  std::string no_rule = "stop";  ///< a motor none of whose rules fired: "stop" (its default, 0) or "hold"
+  double latency_ms = 0;  ///< when given; else the board's loop time for the t-norm (the paper's Tables 3-4)
   double period_ms = 0;
   double time_limit = 120;
   std::string track_path;
   std::string oval = "1000,300";
   std::string svg_path, trace_path;
   std::uint64_t seed = 1;
-  double noise = -1;
-  double sensor_spacing = -1;
+  double noise = 0;  ///< when given; else the car's, scaled to the ADC
   double line_width = vehicle::kTapeWidthMm;
-  double spot_sigma = -1;
+  vehicle::CarParameters car;  ///< the car options land here, but for the lag:
+  double motor_tau_ms = vehicle::CarParameters{}.motor_tau_s * 1000;
+  CLI::Option *latency_option = nullptr, *noise_option = nullptr;
 };
+
+/// The car for an ADC of `adc_bits` with the car options applied.
+vehicle::CarParameters car_from(const LapsOptions& laps, int adc_bits) {
+  vehicle::CarParameters car = vehicle::CarParameters::with_adc_bits(adc_bits);
+  const auto take = [](double value, double& field, const char* option, bool zero_ok) {
+    if (!std::isfinite(value) || value < 0 || (!zero_ok && value == 0) || value > 10000)
+      throw UsageError(fmt::format("{} must be {} and at most 10000", option, zero_ok ? "0 or more" : "above 0"));
+    field = value;
+  };
+  if (laps.noise_option->count() > 0) take(laps.noise, car.noise_counts, "--noise", true);
+  take(laps.car.sensor_spacing_mm, car.sensor_spacing_mm, "--sensor-spacing", false);
+  take(laps.car.spot_sigma_mm, car.spot_sigma_mm, "--spot-sigma", true);
+  take(laps.motor_tau_ms, car.motor_tau_s, "--motor-tau-ms", true);
+  car.motor_tau_s /= 1000;
+  take(laps.car.deadband_units, car.deadband_units, "--deadband", true);
+  take(laps.car.mm_per_s_per_unit, car.mm_per_s_per_unit, "--speed-per-unit", false);
+  take(laps.car.wheel_base_mm, car.wheel_base_mm, "--wheel-base", false);
+  take(laps.car.sensor_ahead_mm, car.sensor_ahead_mm, "--sensor-ahead", true);
+  return car;
+}
 
 void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOptions& laps) {
   if (laps.laps < 1 || laps.laps > 1000) throw UsageError("--laps must be from 1 to 1000");
-  if (!(laps.latency_ms >= 0) || laps.latency_ms > 1000) throw UsageError("--latency-ms must be in [0, 1000]");
+  const bool latency_given = laps.latency_option->count() > 0;
+  if (latency_given && !(laps.latency_ms >= 0 && laps.latency_ms <= 1000))
+    throw UsageError("--latency-ms must be in [0, 1000]");
+  const fuzzy::Board board = laps.board == "esp32" ? fuzzy::Board::esp32 : fuzzy::Board::uno;
+  if (options.adc_option && options.adc_option->count() > 0 && options.adc_bits != fuzzy::board_adc_bits(board))
+    throw UsageError(fmt::format("--adc {} contradicts --board {} ({} bits)", options.adc_bits, laps.board,
+                                 fuzzy::board_adc_bits(board)));
+  ControllerOptions controller_options = options;
+  controller_options.adc_bits = fuzzy::board_adc_bits(board);
   if (!(laps.period_ms >= 0) || laps.period_ms > 1000) throw UsageError("--period-ms must be in [0, 1000]");
   if (!(laps.time_limit > 0) || laps.time_limit > 36000) throw UsageError("--time-limit must be above 0, at most 36000 s");
   vehicle::Track track = [&] {
@@ -228,13 +260,9 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
     if (!(oval[0] >= 0) || !(oval[1] > 0)) throw UsageError("--oval: straight >= 0 and radius > 0, mm");
     return vehicle::oval_track(oval[0], oval[1], laps.line_width);
   }();
-  vehicle::CarParameters car = vehicle::CarParameters::with_adc_bits(options.adc_bits);
-  if (laps.noise >= 0) car.noise_counts = laps.noise;
-  if (laps.sensor_spacing >= 0) car.sensor_spacing_mm = laps.sensor_spacing;
-  if (laps.spot_sigma >= 0) car.spot_sigma_mm = laps.spot_sigma;
+  const vehicle::CarParameters car = car_from(laps, controller_options.adc_bits);
   vehicle::LapOptions run;
   run.laps = laps.laps;
-  run.latency_s = laps.latency_ms / 1000;
   run.control_period_s = laps.period_ms / 1000;
   run.time_limit_s = laps.time_limit;
   run.seed = laps.seed;
@@ -246,16 +274,25 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
     trace_file = std::make_unique<io::RecordFile>(laps.trace_path, tool.output_format());
     trace_file->declare_fields({"tnorm", "t", "x", "y", "heading", "left", "mid", "right", "left_motor", "right_motor"});
   }
-  for (TNorm t : options.chosen_tnorms(false)) {
-    const fuzzy::Engine engine = options.engine(t);
+  for (TNorm t : controller_options.chosen_tnorms(false)) {
+    const fuzzy::Engine engine = controller_options.engine(t);
     if (engine.inputs.size() != 3 || engine.outputs.size() != 2)
       throw Error("laps needs a controller with three inputs (left, mid, right) and two outputs (left, right motor)");
-    fuzzy::Mamdani controller = options.controller(engine);
+    fuzzy::Mamdani controller = controller_options.controller(engine);
+    // One pass of the board's loop computes both motors: Table 3 or 4 over 1024.
+    const TNorm conjunction = engine.rule_block.conjunction;
+    const double latency_ms =
+        latency_given ? laps.latency_ms : fuzzy::paper_ms_per_2x1024(board, conjunction) / 1024;
+    run.latency_s = latency_ms / 1000;
     double out[2];
+    vehicle::MotorCommand held;  // the motors' last command, for --no-rule hold
     auto drive = [&](const vehicle::SensorReadings& s) {
       const double in[3] = {s.left, s.mid, s.right};
       controller.evaluate(in, out);
-      return vehicle::MotorCommand{out[0], out[1]};
+      const auto fired = controller.fired();
+      const bool hold = laps.no_rule == "hold";
+      held = {hold && fired[0] == 0 ? held.left : out[0], hold && fired[1] == 0 ? held.right : out[1]};
+      return held;
     };
     std::vector<vehicle::TracePoint> trace;
     const bool tracing = !laps.svg_path.empty() || trace_file;
@@ -271,10 +308,13 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
     r["rms_deviation_mm"] = result.rms_deviation_mm;
     r["stop_reason"] = result.stop_reason;
     const auto& s = result.readings_at_end;
-    r["sensors_at_end"] = fuzzy::sensor_pattern(s.left, s.mid, s.right, options.adc_bits);
+    r["sensors_at_end"] = fuzzy::sensor_pattern(s.left, s.mid, s.right, controller_options.adc_bits);
     r["readings_at_end"] = {s.left, s.mid, s.right};
     r["distance_mm"] = result.distance_mm;
-    r["latency_ms"] = laps.latency_ms;
+    r["board"] = laps.board;
+    r["latency_ms"] = latency_ms;
+    const auto paper = fuzzy::paper_three_laps_s(board, conjunction);
+    r["paper_total_s"] = paper && laps.laps == 3 && !latency_given ? Record(*paper) : Record();
     writer.write(r);  // in CSV the arrays are JSON text in one cell
     writer.flush();
     if (trace_file) {
@@ -331,8 +371,13 @@ int main(int argc, char** argv) {
   CLI::App* lap = app.add_subcommand("laps", "drive a simulated car round a track: one record per t-norm");
   laps_options.add_to(*lap, true);
   lap->add_option("--laps", laps.laps, "laps to complete")->capture_default_str();
-  lap->add_option("--latency-ms", laps.latency_ms, "sampling to command taking effect (Uno ~1.8 x 2, ESP32 ~0.18 x 2)")
-      ->capture_default_str()
+  lap->add_option("--board", laps.board, "uno or esp32: the ADC, and each t-norm's loop time from the paper's Tables 3-4")
+      ->check(CLI::IsMember({"uno", "esp32"}))
+      ->capture_default_str();
+  lap->add_option("--no-rule", laps.no_rule, "a motor none of whose rules fire: stop (0) or hold its last command")
+      ->check(CLI::IsMember({"stop", "hold"}))
+      ->capture_default_str();
+  laps.latency_option = lap->add_option("--latency-ms", laps.latency_ms, "sampling to command taking effect, for every t-norm (default: the board's)")
       ->type_name("MS");
   lap->add_option("--period-ms", laps.period_ms, "control period (0: the latency, a loop that runs back to back)")
       ->capture_default_str()
@@ -346,12 +391,30 @@ int main(int argc, char** argv) {
   lap->add_option("--svg", laps.svg_path, "draw the track and each t-norm's path")->type_name("FILE");
   lap->add_option("--trace", laps.trace_path, "write the runs' time series (t, x, y, readings, commands)")->type_name("FILE");
   lap->add_option("--seed", laps.seed, "seed of the sensor noise")->capture_default_str();
-  lap->add_option("--noise", laps.noise, "sensor noise, ADC counts (standard deviation; default the car's, 3 at 10 bits)")
-      ->type_name("COUNTS");
-  lap->add_option("--sensor-spacing", laps.sensor_spacing, "mid sensor to each outer one, mm (default the car's)")
+  laps.noise_option =
+      lap->add_option("--noise", laps.noise, "sensor noise, ADC counts (standard deviation; default the car's, 3 at 10 bits)")
+          ->type_name("COUNTS");
+  lap->add_option("--sensor-spacing", laps.car.sensor_spacing_mm, "mid sensor to each outer one, mm")
+      ->capture_default_str()
       ->type_name("MM");
-  lap->add_option("--spot-sigma", laps.spot_sigma, "the sensors' spot on the floor, Gaussian sigma, mm (default the car's)")
+  lap->add_option("--spot-sigma", laps.car.spot_sigma_mm, "the sensors' spot on the floor, Gaussian sigma, mm")
+      ->capture_default_str()
       ->type_name("MM");
+  lap->add_option("--sensor-ahead", laps.car.sensor_ahead_mm, "sensor bar ahead of the axle, mm")
+      ->capture_default_str()
+      ->type_name("MM");
+  lap->add_option("--wheel-base", laps.car.wheel_base_mm, "distance between the wheels, mm")
+      ->capture_default_str()
+      ->type_name("MM");
+  lap->add_option("--motor-tau-ms", laps.motor_tau_ms, "wheel speed's first-order lag behind the command, ms")
+      ->capture_default_str()
+      ->type_name("MS");
+  lap->add_option("--deadband", laps.car.deadband_units, "command a wheel needs to turn")
+      ->capture_default_str()
+      ->type_name("UNITS");
+  lap->add_option("--speed-per-unit", laps.car.mm_per_s_per_unit, "wheel speed per command unit above that, mm/s")
+      ->capture_default_str()
+      ->type_name("MM/S");
 
   CLI::App* fll = app.add_subcommand("fll", "write the controller as fuzzylite FLL");
   fll_options.add_to(*fll, false);
