@@ -29,10 +29,9 @@ std::uint64_t decimal_digits(const mpz_class& value) {
 std::optional<KbncForm> riesel_or_proth_form(const mpz_class& value) {
   if (value < 3) return std::nullopt;
   for (const int c : {-1, 1}) {
-    mpz_class rest = value - c;
-    const mp_bitcnt_t n = mpz_scan1(rest.get_mpz_t(), 0);
-    rest >>= n;
-    if (mpz_sizeinbase(rest.get_mpz_t(), 2) <= n) return KbncForm{rest, 2, n, c};
+    KbncForm form{value - c, 2, 0, c};
+    make_k_odd(form);
+    if (mpz_sizeinbase(form.k.get_mpz_t(), 2) <= form.n) return form;
   }
   return std::nullopt;
 }
@@ -41,12 +40,10 @@ std::optional<KbncForm> riesel_or_proth_form(const mpz_class& value) {
 std::string why_unprovable(const std::optional<KbncForm>& form) {
   if (!form || form->b != 2 || (form->c != 1 && form->c != -1) || form->k <= 0)
     return "it is not k*2^n-1 or k*2^n+1 with k below 2^n";
-  mpz_class odd_k = form->k;
-  const mp_bitcnt_t twos = mpz_scan1(odd_k.get_mpz_t(), 0);
-  odd_k >>= twos;
-  const std::uint64_t n = form->n + twos;
-  if (n < (form->c < 0 ? 2u : 1u)) return form->c < 0 ? "LLR needs n >= 2" : "Proth needs n >= 1";
-  if (mpz_sizeinbase(odd_k.get_mpz_t(), 2) > n) return "k (made odd) is not below 2^n";
+  KbncForm odd = *form;
+  make_k_odd(odd);
+  if (odd.n < (form->c < 0 ? 2u : 1u)) return form->c < 0 ? "LLR needs n >= 2" : "Proth needs n >= 1";
+  if (mpz_sizeinbase(odd.k.get_mpz_t(), 2) > odd.n) return "k (made odd) is not below 2^n";
   return "k (made odd) has more than 64 bits";
 }
 
@@ -67,12 +64,11 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
   bool special = form && form->b == 2 && (form->c == 1 || form->c == -1) && form->k > 0;
   if (special) {
     // k*2^n = (k/2)*2^(n+1): take every factor 2 out of k first.
-    mpz_class odd_k = form->k;
-    const mp_bitcnt_t twos = mpz_scan1(odd_k.get_mpz_t(), 0);
-    odd_k >>= twos;
-    n = form->n + twos;
-    special = mpz_sizeinbase(odd_k.get_mpz_t(), 2) <= 64;
-    if (special) k = mpz_get_ui(odd_k.get_mpz_t());
+    KbncForm odd = *form;
+    make_k_odd(odd);
+    n = odd.n;
+    special = mpz_sizeinbase(odd.k.get_mpz_t(), 2) <= 64;
+    if (special) k = mpz_get_ui(odd.k.get_mpz_t());
     special = special && (n >= 64 || k < (std::uint64_t(1) << n)) && n >= (form->c < 0 ? 2u : 1u);
   }
   proof.n = form ? n : 0;

@@ -1,20 +1,20 @@
 /// @file modulus.cpp
 #include "primes/modulus.hpp"
 
+#include "primes/number.hpp"
+
 namespace tk::primes {
 
 std::optional<SpecialForm> detect_special_form(const mpz_class& N, std::optional<std::int64_t> c_hint) {
   if (N <= 0) return std::nullopt;
   auto try_c = [&](std::int64_t c) -> std::optional<SpecialForm> {
-    mpz_class rest = N - c;
-    if (rest <= 0) return std::nullopt;
-    const mp_bitcnt_t n = mpz_scan1(rest.get_mpz_t(), 0);
-    mpz_tdiv_q_2exp(rest.get_mpz_t(), rest.get_mpz_t(), n);
-    if (mpz_sizeinbase(rest.get_mpz_t(), 2) > 64) return std::nullopt;
-    const std::uint64_t k = mpz_get_ui(rest.get_mpz_t());
+    KbncForm form{N - c, 2, 0, c};
+    if (form.k <= 0) return std::nullopt;
+    make_k_odd(form);
+    if (mpz_sizeinbase(form.k.get_mpz_t(), 2) > 64) return std::nullopt;
     // 2^n >= 2^64 > k: one round of the shift reduction removes about n bits.
-    if (n < 64) return std::nullopt;
-    return SpecialForm{k, n, c};
+    if (form.n < 64) return std::nullopt;
+    return SpecialForm{mpz_get_ui(form.k.get_mpz_t()), form.n, c};
   };
   if (c_hint && *c_hint != 0 && *c_hint > -(std::int64_t{1} << 31) && *c_hint < (std::int64_t{1} << 31))
     if (auto form = try_c(*c_hint)) return form;

@@ -33,6 +33,14 @@ mpz_class evaluate_kbnc(const KbncForm& form, std::size_t max_bits) {
   return value;
 }
 
+std::uint64_t make_k_odd(KbncForm& form) {
+  if (form.b != 2 || form.k <= 0) throw Error("only k*2^n+c with k > 0 has an odd-k form");
+  const mp_bitcnt_t twos = mpz_scan1(form.k.get_mpz_t(), 0);
+  mpz_tdiv_q_2exp(form.k.get_mpz_t(), form.k.get_mpz_t(), twos);
+  form.n += twos;
+  return twos;
+}
+
 std::string kbnc_text(const KbncForm& form) {
   const std::string k = form.k == 1 ? std::string() : form.k.get_str() + "*";
   if (form.c == 0) return fmt::format("{}{}^{}", k, form.b, form.n);

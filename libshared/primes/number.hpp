@@ -29,6 +29,11 @@ mpz_class evaluate_kbnc(const KbncForm& form, std::size_t max_bits);
 /// The size check of evaluate_kbnc alone, without computing the number.
 void evaluate_kbnc_bits_check(const KbncForm& form, std::size_t max_bits);
 
+/// k*2^n = (k/2^t)*2^(n+t): the same number with every factor 2 of k moved
+/// into the exponent, so that k is odd, as LLR, Proth's theorem and the
+/// published prime lists take it. Base 2 and k > 0 only; returns t.
+std::uint64_t make_k_odd(KbncForm& form);
+
 /// "k*b^n+c" text for a form (b^n when k = 1, no c when c = 0).
 std::string kbnc_text(const KbncForm& form);
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <future>
 #include <random>
 
@@ -19,6 +20,7 @@ std::string_view verdict_name(Verdict verdict) {
     case Verdict::composite: return "composite";
     case Verdict::unknown: return "unknown";
     case Verdict::probable_prime: return "probable-prime";
+    case Verdict::prime_if_grh: return "prime-if-grh";
     case Verdict::prime: return "prime";
   }
   return "unknown";
@@ -29,6 +31,7 @@ std::string_view test_name(TestKind kind) {
     case TestKind::trial: return "trial";
     case TestKind::fermat: return "fermat";
     case TestKind::miller_rabin: return "mr";
+    case TestKind::mr_grh: return "mr-grh";
     case TestKind::lucas: return "lucas";
     case TestKind::bpsw: return "bpsw";
   }
@@ -39,6 +42,7 @@ std::optional<TestKind> parse_test_kind(std::string_view text) {
   if (text == "trial") return TestKind::trial;
   if (text == "fermat") return TestKind::fermat;
   if (text == "mr" || text == "miller-rabin") return TestKind::miller_rabin;
+  if (text == "mr-grh") return TestKind::mr_grh;
   if (text == "lucas") return TestKind::lucas;
   if (text == "bpsw") return TestKind::bpsw;
   return std::nullopt;
@@ -51,11 +55,40 @@ std::uint64_t default_trial_bound(std::size_t bits) {
   return std::clamp<std::uint64_t>(scaled, 1000, std::uint64_t{1} << 20);
 }
 
+std::uint64_t grh_last_base(const mpz_class& n) {
+  long exponent = 0;
+  const long double mantissa = mpz_get_d_2exp(&exponent, n.get_mpz_t());  // n = mantissa * 2^exponent
+  const long double ln_n = std::log(mantissa) + static_cast<long double>(exponent) * std::log(2.0L);
+  const long double bound = 2 * ln_n * ln_n;
+  // The rounding errors above are a few units in the 64-bit mantissa's last
+  // place; the margin covers them with room to spare (at 2^26 bits, where
+  // the bound is 4.3e15, it adds at most one base).
+  const long double margin = 1e-6L + bound * 1e-16L;
+  // 2^62 bases would take longer than anyone waits; above it, only the cap matters.
+  const std::uint64_t last = bound >= 0x1p62L ? std::uint64_t{1} << 62 : static_cast<std::uint64_t>(std::floor(bound + margin));
+  const mpz_class largest = n - 2;
+  return mpz_cmp_ui(largest.get_mpz_t(), last) < 0 ? mpz_get_ui(largest.get_mpz_t()) : last;
+}
+
 namespace {
 
 TestOutcome composite(std::string witness) { return {Verdict::composite, std::move(witness)}; }
 
 std::string base_witness(std::uint64_t base) { return "base " + std::to_string(base); }
+
+/// Theorem 2.3 of "Prime Hunting": under GRH an odd composite n > 8 that is
+/// no prime power has a Miller-Rabin witness below 2 (ln n)^2. So: no
+/// perfect power, then every base from 2 to grh_last_base(n). When those
+/// are all the bases up to n - 2, the pass is a proof with no hypothesis.
+/// `passes(a)` runs Miller-Rabin to base a. Odd n > 2.
+template <class StrongTest>
+TestOutcome grh_miller_rabin(const mpz_class& n, StrongTest&& passes) {
+  if (mpz_perfect_power_p(n.get_mpz_t())) return composite("perfect power");
+  const std::uint64_t last = grh_last_base(n);
+  for (std::uint64_t a = 2; a <= last; ++a)
+    if (!passes(a)) return composite(base_witness(a));
+  return {n - 2 <= last ? Verdict::prime : Verdict::prime_if_grh, {}};
+}
 
 /// Bases for Fermat / Miller-Rabin: the chosen ones, then random ones drawn
 /// from a generator seeded by --seed and the number itself, so results do
@@ -105,6 +138,9 @@ TestOutcome test_u64(std::uint64_t n, const TestPlan& plan) {
         if (!pass) return composite(base_witness(b));
       }
       return {Verdict::probable_prime, {}};
+    case TestKind::mr_grh:
+      return grh_miller_rabin(mpz_class(static_cast<unsigned long>(n)),
+                              [n](std::uint64_t a) { return strong_probable_prime_u64(n, a); });
     case TestKind::lucas:
       if (auto failed = lucas()) return *failed;
       return {Verdict::probable_prime, {}};
@@ -198,6 +234,10 @@ TestOutcome test_big(const Number& number, const TestPlan& plan) {
         if (!pass) return composite(witness_text(base));
       }
       return {Verdict::probable_prime, {}};
+    case TestKind::mr_grh:
+      return grh_miller_rabin(n, [&](std::uint64_t a) {
+        return strong_probable_prime(modulus, mpz_class(static_cast<unsigned long>(a)));
+      });
     case TestKind::lucas:
       if (auto outcome = lucas(modulus, nullptr); outcome.failure) return *outcome.failure;
       return {Verdict::probable_prime, {}};

@@ -13,14 +13,23 @@
 
 namespace tk::primes {
 
-/// Ordered from weakest to strongest, so a form's verdict is its members' minimum.
-enum class Verdict { composite, unknown, probable_prime, prime };
+/// Ordered from weakest to strongest, so a form's verdict is its members'
+/// minimum. prime_if_grh is a proof that holds if the Generalised Riemann
+/// Hypothesis does (TestKind::mr_grh).
+enum class Verdict { composite, unknown, probable_prime, prime_if_grh, prime };
 std::string_view verdict_name(Verdict verdict);
 
-enum class TestKind { trial, fermat, miller_rabin, lucas, bpsw };
+enum class TestKind { trial, fermat, miller_rabin, mr_grh, lucas, bpsw };
 std::string_view test_name(TestKind kind);
-/// Parses "trial", "fermat", "mr" (or "miller-rabin"), "lucas", "bpsw".
+/// Parses "trial", "fermat", "mr" (or "miller-rabin"), "mr-grh", "lucas", "bpsw".
 std::optional<TestKind> parse_test_kind(std::string_view text);
+
+/// The largest base TestKind::mr_grh tries on n: every a < 2 (ln n)^2 (Theorem
+/// 2.3 of "Prime Hunting"), that is floor(2 (ln n)^2), and no more than
+/// n - 2. 2 (ln n)^2 is irrational, so no base sits on the bound; computed
+/// in long double, it is rounded up past a value just below an integer
+/// (one base more), never down. n > 2.
+std::uint64_t grh_last_base(const mpz_class& n);
 
 struct TestPlan {
   TestKind kind = TestKind::bpsw;

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "io/error.hpp"
+#include "primes/number.hpp"
 
 namespace tk::primes {
 
@@ -72,8 +73,6 @@ void SieveSpec::validate() const {
     throw Error(fmt::format("the {} range {}:{} is empty (its end is below its start)", parametrised ? "x" : "k", x_min, x_max));
   if (!parametrised && x_min == 0) throw Error("k must start at 1 or more");
   if (parametrised && c == 0) throw Error("c = 0 makes every k equal to h0");
-  if (parametrised && h0 % 2 == 0 && c % 2 == 0)
-    throw Error("h0 and c are both even, so every k is even and k*2^n+-1 repeats (k/2)*2^(n+1)+-1: use an odd h0");
   if (static_cast<u128>(c) * x_max + h0 > UINT64_MAX) throw Error("the largest k, h0 + c*x, does not fit in 64 bits");
   if (x_max - x_min >= kMaxCandidates)
     throw Error(fmt::format("{} candidates are more than one run sieves (at most 2^36): split the range", x_max - x_min + 1));
@@ -90,10 +89,13 @@ void SieveSpec::check_riesel_condition() const {
   for (const SieveMember& member : members()) {
     if (member.c != -1) continue;
     const std::uint64_t e = n + member.exponent_offset;
-    if (single ? k_first % 2 == 0 : !(parametrised && h0 % 2 == 1 && c % 2 == 0))
-      throw Error("riesel condition: k must be odd for every candidate (an odd h0 and an even c)");
-    if (e < 64 && k_last >= (std::uint64_t(1) << e))
-      throw Error(fmt::format("riesel condition: k = {} is not below 2^{}", k_last, e));
+    // An even k is proved as k/2^t * 2^(e+t) - 1, whose k is odd. For one
+    // candidate that form is checked; for a range, k < 2^e for the largest
+    // k is enough: then k/2^t < 2^e <= 2^(e+t) for every k.
+    KbncForm odd{k_last, 2, e, -1};
+    if (single) make_k_odd(odd);
+    if (odd.n < 64 && odd.k >= (std::uint64_t(1) << odd.n))
+      throw Error(fmt::format("riesel condition: k = {} is not below 2^{}", odd.k.get_str(), odd.n));
     if (!single && !(parametrised && c % 13 == 0))
       throw Error("riesel condition: (13/N) = -1 for every x needs 13 to divide c");
     // N mod 13 is the same for every x; (13/N) = (N/13) since 13 = 1 mod 4.

@@ -115,6 +115,27 @@ b,15,composite,bpsw,factor 3"
   assert_output "composite"
 }
 
+# Theorem 2.3 of "Prime Hunting"; PARI/GP's comparisons are in mrtest_paper_oracle.bats.
+@test "--test mr-grh: prime-if-grh above 19, prime up to 19, perfect powers named, --keep selects, --bases refused" {
+  # 10^12+39 is prime (the first prime above 10^12); 1194649 = 1093^2 is a
+  # strong pseudoprime to base 2; 561 = 3*11*17 is Carmichael's first.
+  run bash -c "printf '17\n1000000000039\n1194649\n561\n' | mrtest -t mr-grh --trial-bound 0 | sed -E 's/.*\"verdict\":\"([a-z-]+)\",\"test\":\"([a-z-]+)\"(,\"witness\":\"([^\"]*)\")?.*/\\1 \\2 \\4/'"
+  assert_success
+  assert_line --index 0 "prime mr-grh "
+  assert_line --index 1 "prime-if-grh mr-grh "
+  assert_line --index 2 "composite mr-grh perfect power"
+  assert_line --index 3 "composite mr-grh base 2"
+  run bash -c "printf '1000000000039\n1000000000061\n1000000000041\n' | mrtest -t mr-grh --keep prime-if-grh | wc -l"
+  assert_output "2"
+  run mrtest -t mr-grh --bases 3 <<< "97"
+  assert_failure 2
+  # A form takes its weakest member: the Sophie Germain pair 11, 23 is
+  # prime-if-grh (11 is prime: every base up to 9 was tried; 23 is not).
+  run bash -c "echo '{\"k\":3,\"n\":2,\"form\":\"sg\"}' | mrtest -t mr-grh --trial-bound 0"
+  assert_output --partial '"verdict":"prime-if-grh","test":"mr-grh"'
+  assert_output --partial '"members":[{"n":2,"c":-1,"verdict":"prime"},{"n":3,"c":-1,"verdict":"prime-if-grh"}]'
+}
+
 @test "random bases are reproducible with --seed" {
   seq 1000001 2 1000401 > odd.txt
   run bash -c "mrtest -t mr -r 3 --seed 9 odd.txt | json-field witness | md5sum; mrtest -t mr -r 3 --seed 9 -j 2 odd.txt | json-field witness | md5sum"

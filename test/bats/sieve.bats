@@ -670,7 +670,6 @@ expect_error() {
   expect_error 1 "negative" twin --n 5 --k 1:10 --pmax -7
   expect_error 1 "negative" primes -1 10
   expect_error 1 "c = 0" twin --n 5 --h0 15 --c 0 --x 1:10 --pmax 100
-  expect_error 1 "both even" twin --n 5 --h0 2 --c 30 --x 1:10 --pmax 100
   expect_error 1 "chain length" cc1 --length 1 --n 5 --k 1:10 --pmax 100
   expect_error 1 "chain length" cc2 --length 65 --n 5 --k 1:10 --pmax 100
   expect_error 1 "at least 3" twin --n 5 --k 1:10 --pmax 2
@@ -771,10 +770,13 @@ expect_error() {
   expect_error 1 "2^20" twin --n 20 --h0 "$h0" --c 30030 --x 0:40 --pmax 1e5 --riesel-condition
   # 13 does not divide c = 2310.
   expect_error 1 "13" twin --n 20 --h0 "$h0" --c 2310 --x 0:30 --pmax 1e5 --riesel-condition
-  # Even k: h0 even with an odd c.
-  expect_error 1 "odd" twin --n 20 --h0 $((h0 + 1)) --c 15015 --x 0:30 --pmax 1e5 --riesel-condition
-  # A plain range of several k.
-  expect_error 1 "odd" twin --n 20 --k 1:31 --pmax 1e5 --riesel-condition
+  # Even k: proved as (k/2^t)*2^(20+t)-1, whose k is odd; N mod 13 is the
+  # same for every x when 13 | c, whatever the parity of h0 and c.
+  even_h0=$(gp_lines 'forstep(h = 0, 999, 2, if(kronecker(h*2^20 - 1, 13) == -1 && gcd(h^2*2^40 - 1, 15015) == 1, print(h); break))')
+  run sieve twin --n 20 --h0 "$even_h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
+  assert_success
+  # A plain range of several k: (13/N) changes with k.
+  expect_error 1 "13" twin --n 20 --k 1:31 --pmax 1e5 --riesel-condition
 }
 
 # ------------------------------------------------------------ mrtest pipeline

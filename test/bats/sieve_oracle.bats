@@ -139,6 +139,26 @@ check_grid() {
   [ "$(grep -vc '^#' want.txt)" -gt 100 ]
 }
 
+# "Prime Hunting" (seed 000, section 3.1): h0 = 0, c = 30030, the Cc22
+# project's own choice; every k = 30030x is even, so each candidate is also
+# (k/2^t)*2^(n+t)+-1. The records keep k = h0 + c*x.
+@test "the paper's parametrisation h0 = 0, c = 30030 (every k even) agrees with PARI for every form" {
+  run survivors_agree \
+    "cc2 --length 2 --n 5 --h0 0 --c 30030 --x 1:3000 --pmax 50000" \
+    "cc2 --length 2 --n 64 --h0 0 --c 30030 --x 1:3000 --pmax 3000000" \
+    "cc2 --length 3 --n 20 --h0 0 --c 30030 --x 1:3000 --pmax 50000" \
+    "cc1 --length 2 --n 12 --h0 0 --c 30030 --x 1:3000 --pmax 50000" \
+    "twin --n 1 --h0 0 --c 30030 --x 1:3000 --pmax 50000" \
+    "sg --n 7 --h0 0 --c 30030 --x 1:3000 --pmax 1000" \
+    "riesel --n 100 --h0 0 --c 30030 --x 1:3000 --pmax 50000" \
+    "proth --n 2 --h0 0 --c 30030 --x 1:3000 --pmax 1000"
+  assert_success
+  survivors=$(grep -vc '^#' want.txt)
+  [ "$survivors" -gt 1000 ]
+  # Every survivor's k is even, as written.
+  [ "$(json-field k < got.jsonl | grep -c '^[0-9]*[02468]$')" -eq "$survivors" ]
+}
+
 @test "edge cases agree with PARI: k near 2^64, exponents near 64, tiny pmax, prime members above 2^20" {
   run survivors_agree \
     "riesel --n 1 --k 524000:530000 --pmax 1100000" \

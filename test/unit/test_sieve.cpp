@@ -212,9 +212,11 @@ TEST(SieveSpec, ValidationNamesTheProblem) {
   seed.parametrised = true;
   seed.c = 0;
   EXPECT_NE(message(seed).find("c = 0"), std::string::npos);
-  seed.c = 4;
-  seed.h0 = 2;
-  EXPECT_NE(message(seed).find("both even"), std::string::npos);
+  // "Prime Hunting"'s Cc22 parametrisation, h0 = 0 and c = 30030: every k is
+  // even, and k*2^n+1 is the same number as (k/2^t)*2^(n+t)+1.
+  seed.c = 30030;
+  seed.h0 = 0;
+  EXPECT_EQ(message(seed), "accepted");
   seed.h0 = 1;
   seed.c = std::uint64_t(1) << 62;
   EXPECT_NE(message(seed).find("64 bits"), std::string::npos);
@@ -244,6 +246,26 @@ TEST(SieveSpec, RieselConditionOfTheSeed) {
   spec.c = 30030;
   spec.x_max = std::uint64_t(1) << 30;  // k reaches past 2^40
   EXPECT_THROW(spec.check_riesel_condition(), tk::Error);
+  // An even k is proved as (k/2^t)*2^(40+t) - 1, so k need not be odd: with
+  // h0 even, N mod 13 still is the same for every x.
+  spec.x_max = 1000;
+  for (std::uint64_t h0 = 0; h0 < 26; h0 += 2) {
+    spec.h0 = h0;
+    const std::uint64_t residue = (h0 % 13 * pow_mod(2, 40, 13) + 12) % 13;
+    const bool non_residue = pow_mod(residue, 6, 13) == 12;
+    if (non_residue) EXPECT_NO_THROW(spec.check_riesel_condition()) << h0;
+    else EXPECT_THROW(spec.check_riesel_condition(), tk::Error) << h0;
+  }
+  // One candidate k = 5*2^41 is not below 2^40, but as 5*2^81 - 1 its odd k
+  // is below 2^81; 5*2^81 - 1 = 11 (mod 13), a non-residue.
+  SieveSpec one = plain(SieveForm::riesel, 40, 0, 0, 1000);
+  one.parametrised = true;
+  one.h0 = 5 * (std::uint64_t(1) << 41);
+  one.c = 30030;
+  ASSERT_EQ((5 * pow_mod(2, 81, 13) + 12) % 13, 11u);
+  EXPECT_NO_THROW(one.check_riesel_condition());
+  one.h0 = 5 * (std::uint64_t(1) << 41) + 1;  // odd and above 2^40
+  EXPECT_THROW(one.check_riesel_condition(), tk::Error);
 }
 
 TEST(NumberOption, PrimeHuntersNotation) {

@@ -55,8 +55,9 @@ int main(int argc, char** argv) {
   tk::cli::ToolApp tool("mrtest",
                         "Decide whether numbers are prime: reads numbers, expressions, NewPGen/ABC files or "
                         "records, and adds verdict, test, witness and seconds to each record.",
-                        "Verdicts: prime (proved: BPSW below 2^64, or trial division), probable-prime, "
-                        "composite (with witness), unknown (trial division only).\nSee mrtest(1).");
+                        "Verdicts: prime (proved: BPSW below 2^64, or trial division), prime-if-grh (--test "
+                        "mr-grh: proved if the Generalised Riemann Hypothesis holds), probable-prime, composite "
+                        "(with witness), unknown (trial division only).\nSee mrtest(1).");
   std::string test = "bpsw";
   std::vector<std::uint64_t> bases;
   unsigned rounds = 0;
@@ -67,9 +68,11 @@ int main(int argc, char** argv) {
   std::size_t max_bits = tk::primes::kDefaultMaxBits;
 
   CLI::App& app = tool.app();
-  app.add_option("-t,--test", test, "bpsw (default), mr, fermat, lucas or trial")
+  app.add_option("-t,--test", test,
+                 "bpsw (default), mr, mr-grh (every base below 2(ln N)^2: a proof if GRH holds; slow, see "
+                 "mrtest(1)), fermat, lucas or trial")
       ->type_name("NAME")
-      ->check(CLI::IsMember({"bpsw", "mr", "miller-rabin", "fermat", "lucas", "trial"}));
+      ->check(CLI::IsMember({"bpsw", "mr", "miller-rabin", "mr-grh", "fermat", "lucas", "trial"}));
   app.add_option("-b,--bases", bases, "bases for mr and fermat, e.g. 2,3,5 (default 2)")
       ->type_name("LIST")
       ->delimiter(',')
@@ -80,11 +83,12 @@ int main(int argc, char** argv) {
   app.add_option("--trial-bound", trial_bound, "trial division by primes up to B (0: none; default by size)")
       ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1} << 32))
       ->type_name("B");
-  app.add_option("-k,--keep", keep, "pass on only records with these verdicts: prime, probable, composite, unknown")
+  app.add_option("-k,--keep", keep,
+                 "pass on only records with these verdicts: prime, prime-if-grh, probable, composite, unknown")
       ->type_name("LIST")
       ->delimiter(',')
       ->allow_extra_args(false)
-      ->check(CLI::IsMember({"prime", "probable", "probable-prime", "composite", "unknown"}));
+      ->check(CLI::IsMember({"prime", "prime-if-grh", "probable", "probable-prime", "composite", "unknown"}));
   app.add_flag("--skip-bad", skip_bad, "report malformed records on stderr and go on");
   app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits (default 2^26)")
       ->check(CLI::Range(std::size_t{2}, std::size_t{1} << 32))
@@ -109,6 +113,7 @@ int main(int argc, char** argv) {
       if (name == "prime") wanted.insert(Verdict::prime);
       else if (name == "composite") wanted.insert(Verdict::composite);
       else if (name == "unknown") wanted.insert(Verdict::unknown);
+      else if (name == "prime-if-grh") wanted.insert(Verdict::prime_if_grh);
       else wanted.insert(Verdict::probable_prime);
     }
 

@@ -140,7 +140,9 @@ int main(int argc, char** argv) {
                         "candidates with a small factor before twin, Sophie Germain, Cunningham-chain, Riesel or "
                         "Proth searches.",
                         "Examples:\n  sieve primes 1 1e10 --count\n  sieve twin --n 171960 --k 1:1e9 --pmax 1e9 -j 2 --newpgen\n"
-                        "  sieve sg --n 4000 --h0 15 --c 30030 --x 1:2^20 --pmax 1e8\n  sieve merge shard1.npg shard2.npg\n"
+                        "  sieve sg --n 4000 --h0 15 --c 30030 --x 1:2^20 --pmax 1e8\n"
+                        "  sieve cc2 --n 256000 --h0 0 --c 30030 --x 1:1e6 --pmax 134217689   (the paper's Cc22 project)\n"
+                        "  sieve merge shard1.npg shard2.npg\n"
                         "See sieve(1).");
   CLI::App& app = tool.app();
   tool.add_threads_option();
@@ -174,7 +176,7 @@ int main(int argc, char** argv) {
     FormOptions& o = form_options;
     sub->add_option("--n", o.n, "the exponent n")->required()->type_name("N");
     sub->add_option("--k", o.k, "plain k range A:B (NewPGen's)")->type_name("A:B");
-    sub->add_option("--h0", o.h0, "k = h0 + c*x (the seed's parametrisation)")->type_name("H");
+    sub->add_option("--h0", o.h0, "k = h0 + c*x, the paper's (h0 + c*x)*2^(n+i)+-1; k may be even")->type_name("H");
     sub->add_option("--c", o.c, "step of k per x, usually a primorial")->type_name("C");
     sub->add_option("--x", o.x, "x range A:B for k = h0 + c*x")->type_name("A:B");
     sub->add_option("--pmax", o.pmax, "sieve with every prime up to this bound")->required()->type_name("P");
@@ -188,7 +190,7 @@ int main(int argc, char** argv) {
     sub->add_flag("--resume", o.resume, "continue from the --checkpoint FILE (start afresh when it does not exist)");
     sub->add_option("--shard", o.shard, "sieve only block K of every N blocks of large primes (K/N)")->capture_default_str()->type_name("K/N");
     sub->add_flag("--riesel-condition", o.riesel_condition,
-                  "require the seed's Riesel conditions on every k*2^e-1 member (k odd, k < 2^e, (13/N) = -1)");
+                  "require the paper's Riesel conditions on every k*2^e-1 member (k made odd below 2^e, (13/N) = -1)");
     auto* newpgen = sub->add_flag("--newpgen", o.newpgen, "write a NewPGen file (LLR and PFGW read it)");
     auto* abc = sub->add_flag("--abc", o.abc, "write an ABC file (PFGW)");
     auto* abcd = sub->add_flag("--abcd", o.abcd, "write an ABCD file (PFGW; k as differences)");
