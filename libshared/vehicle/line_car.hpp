@@ -48,11 +48,11 @@ struct CarParameters {
   double mm_per_s_per_unit = 3.7;
   double motor_tau_s = 0.06;  ///< first-order lag of wheel speed behind the command
   /// |command| a wheel needs to turn (static friction): the paper's 55 did
-  /// not start the motors at ~5.2 V and did at 12 V, so 1.1-2.4 V; at the
-  /// ~8.4 V the 9 V supply leaves, 34-73 units; the middle.
+  /// not start the motors on ~5 V and did at 12 V (11.4 V at the motors), so
+  /// 1.1-2.5 V; at the ~8.4 V the 9 V supply leaves, 33-75 units; near the
+  /// middle.
   double deadband_units = 53;
 
-  /// The defaults with the readings scaled from 10 bits to `bits`.
   /// The defaults with the readings scaled from 10 bits to `bits`.
   static CarParameters with_adc_bits(int bits);
   double full_scale() const { return static_cast<double>((1L << adc_bits) - 1); }

@@ -102,6 +102,17 @@ print("compared", compared, "worst", worst)' "$2" theirs.fld "$n"
     run tnorm-bench laps --tnorm minimum $bad
     assert_failure 2
   done
+  # An empty value is not 0 (CLI11 alone reads it so), and a loop under
+  # 0.01 ms would run for ever rather than fail.
+  for option in --deadband --motor-tau-ms --sensor-ahead --spot-sigma --latency-ms --period-ms --noise; do
+    run tnorm-bench laps --tnorm minimum "$option" ""
+    assert_failure 2
+    assert_output --partial "$option: '' is not a number"
+  done
+  run timeout 20 tnorm-bench laps --tnorm minimum --latency-ms 1e-12
+  assert_failure 2
+  run timeout 20 tnorm-bench laps --tnorm minimum --period-ms 0.005
+  assert_failure 2
   run tnorm-bench bench --seconds -1
   assert_failure 2
 }
