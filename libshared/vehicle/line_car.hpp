@@ -95,7 +95,10 @@ class DriveBody {
 
 struct LapOptions {
   int laps = 3;
-  double latency_s = 0.0018;       ///< sampling to command taking effect (Uno: ~1.8 ms, ESP32: ~0.18 ms)
+  /// Sampling to command taking effect. tnorm-bench sets it per board and
+  /// t-norm from the paper's Tables 3-4 (one loop: Uno 3.6-11.4 ms, ESP32
+  /// 0.31-1.16 ms); this default is one inference of the Uno's minimum.
+  double latency_s = 0.0018;
   double control_period_s = 0;     ///< controller runs every period; 0: = latency (back to back), or the physics step if that is 0
   double time_limit_s = 120;
   double physics_step_s = 0.0002;  ///< longest step; steps are also cut at sampling and command instants
