@@ -48,11 +48,11 @@ struct CarParameters {
   double mm_per_s_per_unit = 3.7;
   double motor_tau_s = 0.06;  ///< first-order lag of wheel speed behind the command
   /// |command| a wheel needs to turn (static friction): the paper's 55 did
-  /// not start the motors at ~5.2 V and did at 12 V, so 1.1-2.4 V; at the
-  /// ~8.4 V the 9 V supply leaves, 34-73 units; the middle.
+  /// not start the motors on ~5 V and did at 12 V (11.4 V at the motors), so
+  /// 1.1-2.5 V; at the ~8.4 V the 9 V supply leaves, 33-75 units; near the
+  /// middle.
   double deadband_units = 53;
 
-  /// The defaults with the readings scaled from 10 bits to `bits`.
   /// The defaults with the readings scaled from 10 bits to `bits`.
   static CarParameters with_adc_bits(int bits);
   double full_scale() const { return static_cast<double>((1L << adc_bits) - 1); }
@@ -95,7 +95,10 @@ class DriveBody {
 
 struct LapOptions {
   int laps = 3;
-  double latency_s = 0.0018;       ///< sampling to command taking effect (Uno: ~1.8 ms, ESP32: ~0.18 ms)
+  /// Sampling to command taking effect. tnorm-bench sets it per board and
+  /// t-norm from the paper's Tables 3-4 (one loop: Uno 3.6-11.4 ms, ESP32
+  /// 0.31-1.16 ms); this default is one inference of the Uno's minimum.
+  double latency_s = 0.0018;
   double control_period_s = 0;     ///< controller runs every period; 0: = latency (back to back), or the physics step if that is 0
   double time_limit_s = 120;
   double physics_step_s = 0.0002;  ///< longest step; steps are also cut at sampling and command instants

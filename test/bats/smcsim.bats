@@ -193,6 +193,16 @@ print("ok")' <<< "$(figures "base --duration 3" "mass --duration 3 --mass-end 8"
   assert_failure 1
   [ "${#lines[@]}" -eq 100 ]
   [[ "$stderr" == "smcsim: no/such/dir/run.svg: "* ]]
+  # The title names the law drawn: the printed bracket and sign when asked for.
+  for law in "" "--seed-bracket" "--seed-sign" "--seed-bracket --seed-sign"; do
+    # shellcheck disable=SC2086
+    run smcsim --summary --duration 0.1 --Lambda 400 $law --svg law.svg
+    assert_success
+    py 'import sys, xml.dom.minidom
+title = xml.dom.minidom.parse("law.svg").getElementsByTagName("title")[0].firstChild.data
+want = "smcsim --controller smc --Lambda 400" + "".join(" " + w for w in sys.argv[1].split()) + ":"
+assert title.startswith(want), (title, want)' "$law"
+  done
 }
 
 @test "usage errors exit 2 and name the option" {
@@ -244,6 +254,8 @@ print("ok")' <<< "$(figures "base --duration 3" "mass --duration 3 --mass-end 8"
   check "--reference excludes --reference-file" --reference-file x.csv --reference step
   check "--Lambda takes one value here; ranges are for 'smcsim sweep'" --Lambda 10:100:10
   check "--controller: ded not in {smc,sta,pid,ppd}" --controller ded
+  check "--seed-sign and --seed-bracket change the sliding-mode laws (smc, sta), not pid" --controller pid --seed-bracket
+  check "--seed-sign and --seed-bracket change the sliding-mode laws (smc, sta), not ppd" --controller ppd --seed-sign
   # sweeps
   check "--Lambda '10:1' is not a number or FROM:TO:STEP" sweep --Lambda 10:1
   check "--Lambda '1:2:0' needs FROM <= TO and a positive STEP" sweep --Lambda 1:2:0

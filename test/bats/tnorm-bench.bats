@@ -102,6 +102,17 @@ print("compared", compared, "worst", worst)' "$2" theirs.fld "$n"
     run tnorm-bench laps --tnorm minimum $bad
     assert_failure 2
   done
+  # An empty value is not 0 (CLI11 alone reads it so), and a loop under
+  # 0.01 ms would run for ever rather than fail.
+  for option in --deadband --motor-tau-ms --sensor-ahead --spot-sigma --latency-ms --period-ms --noise; do
+    run tnorm-bench laps --tnorm minimum "$option" ""
+    assert_failure 2
+    assert_output --partial "$option: '' is not a number"
+  done
+  run timeout 20 tnorm-bench laps --tnorm minimum --latency-ms 1e-12
+  assert_failure 2
+  run timeout 20 tnorm-bench laps --tnorm minimum --period-ms 0.005
+  assert_failure 2
   run tnorm-bench bench --seconds -1
   assert_failure 2
 }
@@ -287,9 +298,11 @@ for name, r in rows.items():
 }
 
 @test "laps: --no-rule hold keeps the drastic car's motors going where no rule fires" {
-  run tnorm-bench laps --tnorm drastic --board esp32 --no-rule hold --laps 1
+  run tnorm-bench laps --tnorm drastic minimum --board esp32 --no-rule hold --laps 1
   assert_success
-  check 'assert rows[0]["completed"] and rows[0]["latency_ms"] == 321 / 1024, rows[0]' <<< "$output"
+  # Table 4's loops; one lap, so no three-lap figure of the paper's beside the minimum's (32.49 s for 3).
+  check 'assert rows[0]["completed"] and rows[0]["latency_ms"] == 321 / 1024, rows[0]
+assert rows[1]["tnorm"] == "minimum" and rows[1]["completed"] and rows[1]["paper_total_s"] is None, rows[1]' <<< "$output"
 }
 
 @test "laps: a slower controller follows the line worse" {

@@ -166,5 +166,6 @@ base = r[0]["total_s"]
 assert r[0]["completed"] and r[11.4]["completed"]
 assert r[11.4]["total_s"] < 1.02 * base, (r[11.4]["total_s"], base)
 assert not r[25]["completed"] or r[25]["total_s"] > 1.1 * base  # the pivots overshoot a sensor gap per loop
-assert not r[40]["completed"] and r[40]["sensors_at_end"] == "LLL"  # R1: line lost, STOP'
+assert not r[40]["completed"] and r[40]["sensors_at_end"] == "LLL"  # R1: line lost, STOP
+assert all(x["paper_total_s"] is None for x in r.values())  # not the paper'"'"'s loop times: no paper figure beside them'
 }

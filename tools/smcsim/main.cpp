@@ -204,8 +204,8 @@ int main(int argc, char** argv) {
   app.add_option("--mu", c.gains.mu, "surface S = ė + μ e + λ ∫e: μ, 1/s")->check(non_negative)->capture_default_str()->group(ctl);
   app.add_option("--lambda", c.gains.lambda, "surface: λ, 1/s²")->check(non_negative)->capture_default_str()->group(ctl);
   app.add_option("--boundary-layer", c.gains.boundary_layer, "smc: sat(S/φ) instead of sign(S); φ in length units per second (0: sign)")->check(non_negative)->capture_default_str()->type_name("PHI")->group(ctl);
-  app.add_flag("--seed-sign", seed_sign, "switch with −Λ sign(S) as the seed writes it (destabilises: see smcsim(1))")->group(ctl);
-  app.add_flag("--seed-bracket", seed_bracket, "smc, sta: m̂[ẍ_ref + (b̂/m̂)ẋ_ref + λe] as the seed's eq. 8-9 print it, not F_eq (see smcsim(1))")->group(ctl);
+  app.add_flag("--seed-sign", seed_sign, "smc, sta: switch with −Λ sign(S) as the paper writes it (destabilises: see smcsim(1))")->group(ctl);
+  app.add_flag("--seed-bracket", seed_bracket, "smc, sta: the bracket of the paper's eq. 8-9, m̂[ẍ_ref + (b/m)ẋ_ref + λe] with b/m read b̂/m̂, not F_eq (see smcsim(1))")->group(ctl);
   app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")->check(positive)->capture_default_str()->type_name("HZ")->group(ctl);
   app.add_option("--kp", c.gains.kp, "pid: proportional gain, kg/s² (N/m)")->check(non_negative)->group(ctl);
   app.add_option("--ki", c.gains.ki, "pid: integral gain, kg/s³")->check(non_negative)->group(ctl);
@@ -253,7 +253,7 @@ int main(int argc, char** argv) {
   app.add_option("--encoder", c.encoder_mm, "encoder resolution, mm (0: none)")->check(non_negative)->capture_default_str()->type_name("MM")->group(sim);
   app.add_option("--position-filter", c.position_filter_hz, "low-pass on the position estimate, Hz (0: none)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(sim);
   app.add_option("--velocity-filter", c.velocity_filter_hz, "low-pass on the velocity estimate, Hz (0: none)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(sim);
-  app.add_option("--units", units, "mm: gains in kg·mm/s² (the seed's scale); m: in newtons")->check(CLI::IsMember({"mm", "m"}))->capture_default_str()->group(sim);
+  app.add_option("--units", units, "mm: gains in kg·mm/s² (mN); m: in newtons (see smcsim(1), UNITS)")->check(CLI::IsMember({"mm", "m"}))->capture_default_str()->group(sim);
   app.add_option("--initial-position", c.initial_position_mm, "x(0), mm (default: on the reference)")->check(finite_value)->type_name("MM")->group(sim);
   app.add_option("--initial-velocity", c.initial_velocity_mm_s, "ẋ(0), mm/s (default: the reference's)")->check(finite_value)->type_name("MM/S")->group(sim);
 
@@ -261,12 +261,14 @@ int main(int argc, char** argv) {
   app.add_option("--every", every, "a time-series record every N control periods")->check(tk::cli::count_check(1, 1000000000000))->capture_default_str()->type_name("N")->group(out);
   app.add_option("--settle", c.settle_s, "summary figures from this time on, s")->check(non_negative)->capture_default_str()->type_name("S")->group(out);
   app.add_option("--hf-cutoff", c.hf_cutoff_hz, "hf_share: share of F's power above this, Hz (0: not computed)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(out);
-  app.add_option("--svg", svg_path, "the seed's four panels (position, errors, control) as SVG")->type_name("FILE")->group(out);
+  app.add_option("--svg", svg_path, "the paper's four panels (position, errors, control) as SVG")->type_name("FILE")->group(out);
   CLI::App* sweep = app.add_subcommand("sweep", "one summary record per gain setting (--Lambda, or --alpha and --beta, as FROM:TO:STEP), on -j threads");
   sweep->fallthrough();
 
   return tool.run(argc, argv, [&] {
     c.gains.kind = parse_controller_kind(controller);
+    if ((seed_sign || seed_bracket) && c.gains.kind != ControllerKind::smc && c.gains.kind != ControllerKind::sta)
+      throw tk::UsageError(fmt::format("--seed-sign and --seed-bracket change the sliding-mode laws (smc, sta), not {}", controller));
     c.gains.switching_sign = seed_sign ? -1 : 1;
     c.gains.printed_bracket = seed_bracket;
     c.length_unit_m = units == "m" ? 1 : 1e-3;

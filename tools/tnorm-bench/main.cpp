@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/number_option.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "fuzzy/fll.hpp"
 #include "fuzzy/inference_timing.hpp"
@@ -238,15 +239,17 @@ vehicle::CarParameters car_from(const LapsOptions& laps, int adc_bits) {
 void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOptions& laps) {
   if (laps.laps < 1 || laps.laps > 1000) throw UsageError("--laps must be from 1 to 1000");
   const bool latency_given = laps.latency_option->count() > 0;
-  if (latency_given && !(laps.latency_ms >= 0 && laps.latency_ms <= 1000))
-    throw UsageError("--latency-ms must be in [0, 1000]");
+  // A loop under 10 us (the paper's fastest is 313 us) only stretches the
+  // run: at 1e-12 ms, 120 s of it would take 1.2e17 loops.
+  const auto loop_ms_ok = [](double ms) { return ms == 0 || (ms >= 0.01 && ms <= 1000); };
+  if (latency_given && !loop_ms_ok(laps.latency_ms)) throw UsageError("--latency-ms must be 0 or from 0.01 to 1000");
   const fuzzy::Board board = laps.board == "esp32" ? fuzzy::Board::esp32 : fuzzy::Board::uno;
   if (options.adc_option && options.adc_option->count() > 0 && options.adc_bits != fuzzy::board_adc_bits(board))
     throw UsageError(fmt::format("--adc {} contradicts --board {} ({} bits)", options.adc_bits, laps.board,
                                  fuzzy::board_adc_bits(board)));
   ControllerOptions controller_options = options;
   controller_options.adc_bits = fuzzy::board_adc_bits(board);
-  if (!(laps.period_ms >= 0) || laps.period_ms > 1000) throw UsageError("--period-ms must be in [0, 1000]");
+  if (!loop_ms_ok(laps.period_ms)) throw UsageError("--period-ms must be 0 or from 0.01 to 1000");
   if (!(laps.time_limit > 0) || laps.time_limit > 36000) throw UsageError("--time-limit must be above 0, at most 36000 s");
   vehicle::Track track = [&] {
     if (!(laps.line_width > 0) || laps.line_width > 500) throw UsageError("--line-width must be above 0 and at most 500 mm");
@@ -377,9 +380,14 @@ int main(int argc, char** argv) {
   lap->add_option("--no-rule", laps.no_rule, "a motor none of whose rules fire: stop (0) or hold its last command")
       ->check(CLI::IsMember({"stop", "hold"}))
       ->capture_default_str();
+  // An empty or garbled number is a usage error here, not CLI11's silent 0.
+  const CLI::Validator non_negative = cli::number_check(cli::NumberDomain::non_negative),
+                       positive = cli::number_check(cli::NumberDomain::positive);
   laps.latency_option = lap->add_option("--latency-ms", laps.latency_ms, "sampling to command taking effect, for every t-norm (default: the board's)")
+      ->check(non_negative)
       ->type_name("MS");
   lap->add_option("--period-ms", laps.period_ms, "control period (0: the latency, a loop that runs back to back)")
+      ->check(non_negative)
       ->capture_default_str()
       ->type_name("MS");
   lap->add_option("--time-limit", laps.time_limit, "give up after this many simulated seconds")->capture_default_str();
@@ -393,28 +401,26 @@ int main(int argc, char** argv) {
   lap->add_option("--seed", laps.seed, "seed of the sensor noise")->capture_default_str();
   laps.noise_option =
       lap->add_option("--noise", laps.noise, "sensor noise, ADC counts (standard deviation; default the car's, 3 at 10 bits)")
+          ->check(non_negative)
           ->type_name("COUNTS");
-  lap->add_option("--sensor-spacing", laps.car.sensor_spacing_mm, "mid sensor to each outer one, mm")
-      ->capture_default_str()
-      ->type_name("MM");
-  lap->add_option("--spot-sigma", laps.car.spot_sigma_mm, "the sensors' spot on the floor, Gaussian sigma, mm")
-      ->capture_default_str()
-      ->type_name("MM");
-  lap->add_option("--sensor-ahead", laps.car.sensor_ahead_mm, "sensor bar ahead of the axle, mm")
-      ->capture_default_str()
-      ->type_name("MM");
-  lap->add_option("--wheel-base", laps.car.wheel_base_mm, "distance between the wheels, mm")
-      ->capture_default_str()
-      ->type_name("MM");
-  lap->add_option("--motor-tau-ms", laps.motor_tau_ms, "wheel speed's first-order lag behind the command, ms")
-      ->capture_default_str()
-      ->type_name("MS");
-  lap->add_option("--deadband", laps.car.deadband_units, "command a wheel needs to turn")
-      ->capture_default_str()
-      ->type_name("UNITS");
-  lap->add_option("--speed-per-unit", laps.car.mm_per_s_per_unit, "wheel speed per command unit above that, mm/s")
-      ->capture_default_str()
-      ->type_name("MM/S");
+  struct CarOption {
+    const char* name;
+    double* value;
+    const char* help;
+    const char* unit;
+    bool zero_ok;
+  };
+  const CarOption car_options[] = {
+      {"--sensor-spacing", &laps.car.sensor_spacing_mm, "mid sensor to each outer one, mm", "MM", false},
+      {"--spot-sigma", &laps.car.spot_sigma_mm, "the sensors' spot on the floor, Gaussian sigma, mm", "MM", true},
+      {"--sensor-ahead", &laps.car.sensor_ahead_mm, "sensor bar ahead of the axle, mm", "MM", true},
+      {"--wheel-base", &laps.car.wheel_base_mm, "distance between the wheels, mm", "MM", false},
+      {"--motor-tau-ms", &laps.motor_tau_ms, "wheel speed's first-order lag behind the command, ms", "MS", true},
+      {"--deadband", &laps.car.deadband_units, "command a wheel needs to turn", "UNITS", true},
+      {"--speed-per-unit", &laps.car.mm_per_s_per_unit, "wheel speed per command unit above that, mm/s", "MM/S", false},
+  };
+  for (const CarOption& o : car_options)
+    lap->add_option(o.name, *o.value, o.help)->check(o.zero_ok ? non_negative : positive)->capture_default_str()->type_name(o.unit);
 
   CLI::App* fll = app.add_subcommand("fll", "write the controller as fuzzylite FLL");
   fll_options.add_to(*fll, false);
