@@ -54,7 +54,7 @@ fuzz:
 
 # Regenerates man/*.1 from the scdoc sources (the .1 files are committed).
 man: deps
-	for src in man/*.scd; do scdoc < $$src > $${src%.scd}; done
+	for src in man/*.scd; do bash scripts/man-page.sh $$src $${src%.scd}; done
 
 install: build
 	$(CMAKE) --install $(BUILD_DIR) --prefix $(PREFIX)
