@@ -2,6 +2,8 @@
 /// @brief The streaming guard.
 #include "cad/invasion_check.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,7 +38,11 @@ PositionCheck InvasionGuard::check(Point p, std::optional<double> t) {
     if (last_t_ && *t > *last_t_) {
       const double dt = *t - *last_t_;
       approach = std::max(0.0, (last_distance_ - distance) / dt);
-      ahead = {p.x + (p.x - last_at_.x) / dt * options_.latency_s, p.y + (p.y - last_at_.y) / dt * options_.latency_s};
+      const Point velocity{(p.x - last_at_.x) / dt, (p.y - last_at_.y) / dt};
+      ahead = {p.x + velocity.x * options_.latency_s, p.y + velocity.y * options_.latency_s};
+      if (!std::isfinite(velocity.x) || !std::isfinite(velocity.y) || !std::isfinite(ahead.x) || !std::isfinite(ahead.y))
+        throw Error(fmt::format("a move of {:g} mm in {:g} s is too fast to tell where a stop would take effect",
+                                std::hypot(p.x - last_at_.x, p.y - last_at_.y), dt));
     }
     result.approach_mm_s = approach;
     const SignedDistance region = [&](Point q) { return guard_query(index_, q, options_.tool_radius, options_.side).distance; };

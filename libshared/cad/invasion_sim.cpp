@@ -160,7 +160,7 @@ StrokeLengths stroke_lengths(const std::vector<double>& tolerances_mm, const Inv
   const double coast = options.feed_mm_s * (options.latency_s + 2 * options.period_s);
   const double approach = largest + 3 * coast + 10;
   const double travel_limit = approach + coast + 10;
-  if (!(travel_limit <= 1e6)) throw Error("strokes of more than a kilometre: the feed or the latency is too large");
+  if (!(travel_limit <= 1e6)) throw Error("strokes of more than a kilometre: the feed, the latency, a tolerance or the margin is too large");
   if (!(travel_limit / (options.feed_mm_s * options.period_s) <= 1e7))
     throw Error("more than 10 million control readings a stroke: the period is too short for the feed, or the latency too long");
   return {approach, travel_limit};

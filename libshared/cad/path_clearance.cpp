@@ -9,6 +9,8 @@ namespace tk::cad {
 namespace {
 
 constexpr double kMinStepMm = 1e-4;
+/// 100 mm of a move within 0.1 um of the level; more is not resolved.
+constexpr int kMaxSteps = 1'000'000;
 
 Point along(Point from, Point to, double f) { return {from.x + f * (to.x - from.x), from.y + f * (to.y - from.y)}; }
 
@@ -16,11 +18,16 @@ Point along(Point from, Point to, double f) { return {from.x + f * (to.x - from.
 
 std::optional<double> first_below(const SignedDistance& distance, Point from, Point to, double level) {
   const double length = std::hypot(to.x - from.x, to.y - from.y);
-  for (double f = 0;;) {
+  double f = 0;
+  for (int steps = 0;; ++steps) {
     const double d = distance(along(from, to, f));
     if (!(d >= level)) return f;  // NaN counts as below: refuse rather than pass
     if (f >= 1 || !(length > 0)) return std::nullopt;
-    f = std::min(1.0, f + std::max(d - level, kMinStepMm) / length);
+    const double next = std::min(1.0, f + std::max(d - level, kMinStepMm) / length);
+    // A step lost in rounding (a move of 10^12 mm) or a very long graze:
+    // not resolved, so refused rather than passed.
+    if (!(next > f) || steps == kMaxSteps) return f;
+    f = next;
   }
 }
 

@@ -21,7 +21,9 @@ using SignedDistance = std::function<double(Point)>;
 /// The first point of the move from `from` to `to` whose distance is below
 /// `level`, as the fraction of the move (0 at `from`), or nothing. Steps
 /// are at least 0.1 um: a dip below the level shallower than that can be
-/// missed.
+/// missed. A move it cannot resolve (a step lost in rounding, or more than
+/// 10^6 steps: 100 mm within 0.1 um of the level) gives the point reached,
+/// as if it were below.
 std::optional<double> first_below(const SignedDistance& distance, Point from, Point to, double level);
 
 /// How deep the move goes into the region: 0 when it never enters, else

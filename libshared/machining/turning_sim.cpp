@@ -168,6 +168,10 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
 
   // A law that keeps the feed near 0 would otherwise run for ever.
   const double baseline_cycles = baseline_time_s(params) / T;
+  if (!(baseline_cycles <= params.max_cycles))
+    throw UsageError(fmt::format("the cut at 100 % takes {:g} IPO cycles, more than the simulation's {:g}: raise --feed, "
+                                 "--cutting-speed or --ipo, or shorten the profile",
+                                 baseline_cycles, params.max_cycles));
   const double cycle_limit = std::min(params.max_cycles, std::max(1e6, 1000 * baseline_cycles));
 
   RunStats run;
@@ -187,8 +191,9 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
   double weighted_load = 0, override_sum = 0;
   for (std::uint64_t cycle = 0;; ++cycle) {
     if (static_cast<double>(cycle) > cycle_limit)
-      throw Error(fmt::format("the cut takes more than {:g} IPO cycles ({:g} times the cut at 100 %): the override stays near 0",
-                              cycle_limit, cycle_limit / baseline_cycles));
+      throw Error(fmt::format("the cut takes more than {:g} IPO cycles ({:g} times the cut at 100 %){}", cycle_limit,
+                              cycle_limit / baseline_cycles,
+                              cycle_limit == params.max_cycles ? ", the simulation's limit" : ": the override stays near 0"));
     const double t = static_cast<double>(cycle) * T;
     while (segment + 1 < params.profile.size() && z >= params.profile[segment].z_to_mm) {
       if (!recorder.empty()) run.segments.push_back(recorder.finish());

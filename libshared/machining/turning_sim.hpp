@@ -55,18 +55,24 @@ class FirstOrderLag {
 /// (a following error of v τ: K_v = 1 (m/min)/mm lags 1 mm at 1 m/min).
 class FeedAxis {
  public:
+  // 1 - e^(-T/τ) by expm1: for a lag of many steps (a tiny K_v) 1 - exp
+  // rounds to 0 and the axis would follow without lag.
   FeedAxis(double lag_s, double step_s, double velocity_mm_s)
-      : lag_s_(lag_s), step_s_(step_s), decay_(std::exp(-step_s / lag_s)), velocity_(velocity_mm_s) {}
+      : lag_s_(lag_s),
+        step_s_(step_s),
+        decay_(std::exp(-step_s / lag_s)),
+        response_(-std::expm1(-step_s / lag_s)),
+        velocity_(velocity_mm_s) {}
   /// Moves one step with the command held; returns the distance, mm (exact).
   double advance(double command_mm_s) {
-    const double travel = command_mm_s * step_s_ + (velocity_ - command_mm_s) * lag_s_ * (1 - decay_);
+    const double travel = command_mm_s * step_s_ + (velocity_ - command_mm_s) * lag_s_ * response_;
     velocity_ = command_mm_s + (velocity_ - command_mm_s) * decay_;
     return travel;
   }
   double velocity() const { return velocity_; }
 
  private:
-  double lag_s_, step_s_, decay_, velocity_;
+  double lag_s_, step_s_, decay_, response_, velocity_;
 };
 
 /// The tool's axial positions at the last cycle starts, enough to reach one
@@ -122,7 +128,10 @@ struct TurningParams {
   double noise_pct = 1.0;            ///< σ of the load signal's noise, % of rated
   std::uint64_t seed = 1;            ///< of the noise
   double above_tolerance = 0.1;      ///< "above M_z" means above (1 + this) M_z
-  double max_cycles = 2e8;           ///< a run longer than this, or than 1000 baselines (at least 10^6), is an error
+  /// A run longer than this, or than 1000 baselines (at least 10^6), is an
+  /// error; so is a baseline longer than this (a usage error). Each cycle
+  /// keeps 16 bytes for its segment's statistics: 2e7 cycles, 320 MB.
+  double max_cycles = 2e7;
 };
 
 /// Throws tk::UsageError naming the option of the first bad parameter.

@@ -81,6 +81,10 @@ print("agree", len(ours))' "$1" "$2"
   assert_failure 2
   run fuzzyfeed --simulate --kv 0
   assert_failure 2
+  # 204 mm at 10^-6 mm/rev: 2.7e9 IPO cycles at 100 %, refused at once.
+  run fuzzyfeed --simulate --feed 1e-6
+  assert_failure 2
+  assert_output --partial "IPO cycles"
   run fuzzyfeed --no-such-option
   assert_failure 2
 }
@@ -163,6 +167,7 @@ assert all(a >= b >= 40 for a, b in zip(o, o[1:])) and o[0] < 180 and near(o[-1]
   check 't,load\n0,30\n0.1,1e400\n' 3 "field 'load' is out of range: '1e400'"
   check '{"t":0,"load":30}\n{"t":1e300,"load":1e300}\n' 2 "load 1e+300 is outside 0-100 % of rated"
   check 't,load,feed\n0,30,0.4\n0.1,30,-1\n' 3 "feed -1 is negative"
+  check 't,load,feed\n0,30,0.4\n0.1,30,1e308\n' 3 "feed 1e+308 times the override overflows"
   check '{"t":0,"load":30}\n{"t":0.1,"load":30\n' 2 "invalid json: parse error column 19: syntax error while parsing object - unexpected end of input; expected '}'"
   printf '{"t":0,"load":30}\n\x00\x01\xff\n' > bad.txt
   run --separate-stderr fuzzyfeed bad.txt

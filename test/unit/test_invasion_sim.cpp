@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "cad/invasion_sim.hpp"
 #include "io/error.hpp"
@@ -131,6 +132,30 @@ TEST(InvasionSim, InAPocketTheLatencyAwareGuardNeverInvades) {
   }
 }
 
+// A strip 0.5 mm thick, read every 5 mm of travel with no latency: a
+// fixed guard at T = 0.1 catches a stroke only when a reading falls in the
+// 0.7 mm band in front of the strip (up to 1.4 mm at 60 degrees), at most
+// 28 % of the strokes; the others cross the strip and end beyond it,
+// outside the region. Crossing is trespassing: at least 70 % invade,
+// though almost none ends inside. Ours sees the strip on the way and
+// never invades.
+TEST(InvasionSim, AStrokeThatCrossesTheRegionAndEndsBeyondItInvades) {
+  const std::vector<std::vector<Point>> strip = {{{-100, 0}, {100, 0}, {100, 0.5}, {-100, 0.5}}};  // counter-clockwise
+  const auto distance = [](Point p) {  // exact signed distance to [-100, 100] x [0, 0.5], positive outside
+    const double dx = std::abs(p.x) - 100, dy = std::abs(p.y - 0.25) - 0.25;
+    return dx > 0 || dy > 0 ? std::hypot(std::max(dx, 0.0), std::max(dy, 0.0)) : std::max(dx, dy);
+  };
+  InvasionSimOptions options;
+  options.feed_mm_s = 10;
+  options.period_s = 0.5;
+  options.latency_s = 0;
+  options.strokes = 400;
+  const auto results = simulate_invasions(distance, strip, {0.1}, options);
+  ASSERT_EQ(results.size(), 2u);
+  EXPECT_GE(results[0].invasions, 280u);
+  EXPECT_EQ(results[1].invasions, 0u);
+}
+
 // A stroke that clips a corner of the region and ends outside it has
 // trespassed: the seed counts it a failure.
 TEST(PathClearance, AMoveThatClipsACornerGoesIn) {
@@ -155,6 +180,24 @@ TEST(PathClearance, AMoveThatClipsACornerGoesIn) {
   const auto near = first_below(square, {-2, 9}, {1, 12}, 0.8);
   ASSERT_TRUE(near.has_value());
   EXPECT_NEAR(*near, (1.5 - std::sqrt(0.07)) / 3, 1e-4);
+}
+
+TEST(PathClearance, AMoveItCannotResolveIsRefusedNotLooped) {
+  // The line y = 0 grazed 1e-5 mm above a 0.02 mm level along 10^13 mm:
+  // each step of 0.1 um is lost in rounding once the fraction is not tiny,
+  // and 10^6 steps cover 100 mm. Either way the answer comes, as "below",
+  // within a bounded number of distance queries.
+  long calls = 0;
+  const auto wall = [&](Point p) {
+    if (++calls > 2'000'000) throw std::runtime_error("first_below does not stop");
+    return p.y;
+  };
+  EXPECT_TRUE(first_below(wall, {-1e13, 0.02001}, {0, 0.02001}, 0.02).has_value());
+  calls = 0;
+  EXPECT_TRUE(first_below(wall, {0, 0.02001}, {1000, 0.02001}, 0.02).has_value());
+  // A graze under 100 mm is still resolved.
+  calls = 0;
+  EXPECT_FALSE(first_below(wall, {0, 0.02001}, {50, 0.02001}, 0.02).has_value());
 }
 
 // The seed's eq. (2), by hand: |(P - P1) x (P2 - P1)| / |P2 - P1| for the

@@ -246,6 +246,10 @@ TEST(InvasionGuard, LatencyAwareStopFromTheApproachSpeed) {
   EXPECT_THROW(guard.check({5, -2}, 0.3), tk::Error);
   EXPECT_EQ(guard.summary().positions, 4u);
   EXPECT_EQ(guard.summary().invasions, 0u);
+  // 1 mm in 1e-320 s: no speed to extrapolate from, an error rather than "no stop".
+  tk::cad::InvasionGuard fresh(index, {1, MachiningSide::outside, 0.1, 0.0});
+  fresh.check({5, -10}, 0.0);
+  EXPECT_THROW(fresh.check({5, -9}, 1e-320), tk::Error);
 }
 
 TEST(InvasionGuard, LatencyAwareStopSeesTheWallItIsNotNearestTo) {

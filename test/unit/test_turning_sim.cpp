@@ -85,6 +85,10 @@ TEST(TurningModel, FeedAxisFollowingErrorIsVelocityOverKv) {
     const double t = i * T;
     ASSERT_NEAR(z, v * (t - 0.06 * (1 - std::exp(-t / 0.06))), 1e-12) << i;
   }
+  // A lag of 10^20 steps (a tiny K_v): the axis keeps its speed, it does not
+  // jump to the command.
+  FeedAxis sluggish(T * 1e20, T, v);
+  EXPECT_NEAR(sluggish.advance(2 * v), v * T, 1e-12 * v * T);
 }
 
 TEST(TurningModel, ChipIsTheTravelOverOneRevolution) {
@@ -207,9 +211,21 @@ TEST(TurningSim, RejectsBadProfilesAndParameters) {
   p.kv = 0;
   EXPECT_THROW(validate(p), tk::UsageError);
   p = {};
-  p.max_cycles = 100;  // the default cut needs thousands
+  p.max_cycles = 100;  // the default cut needs thousands at 100 %: refused before it runs
   FeedOverrideParams law;
-  EXPECT_THROW(simulate_turning(p, law, 60), tk::Error);
+  EXPECT_THROW(simulate_turning(p, law, 60), tk::UsageError);
+  // A drive too small for any cut: the law holds the override near 0 and the
+  // run stops at the limit, a runtime error.
+  p = {};
+  p.cutting.rated_power_w = 1;
+  p.max_cycles = 20000;
+  try {
+    simulate_turning(p, law, 60);
+    ADD_FAILURE() << "no error";
+  } catch (const tk::UsageError&) {
+    ADD_FAILURE() << "a usage error";
+  } catch (const tk::Error&) {
+  }
 }
 
 }  // namespace

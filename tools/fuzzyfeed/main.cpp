@@ -42,7 +42,11 @@ void filter_records(const std::vector<std::string>& inputs, const FeedOverridePa
     const OverrideStep step = law.step(load);
     record["wk"] = step.wk;
     record["override"] = step.override_pct;
-    if (feed) record["feed_out"] = *feed * step.override_pct / 100;
+    if (feed) {
+      const double feed_out = *feed * step.override_pct / 100;
+      if (!std::isfinite(feed_out)) throw tk::Error(fmt::format("feed {} times the override overflows", *feed), where);
+      record["feed_out"] = feed_out;
+    }
     writer.write(record);
   }
   writer.flush();
