@@ -12,6 +12,11 @@ FIXTURES="$TOOLKIT_ROOT/test/fixtures"
 # json-field FIELD < records: one value per line (test/bin, plain python3).
 PATH="$TOOLKIT_ROOT/test/bin:$PATH"
 
+# Every python3 the suites start (python3 -c, the test/bin scripts' env
+# shebang, bash -c children) is Debian's: it has NumPy, SciPy and ezdxf,
+# and starts in ~0.1 s where a pyenv shim first on PATH takes ~1 s.
+PATH="$TOOLKIT_ROOT/test/python:$PATH"
+
 # wait_for FILE [SECONDS]: polls until FILE (a glob is fine) exists; fails after SECONDS (default 60).
 wait_for() {
   local tries=$(( ${2:-60} * 20 ))
