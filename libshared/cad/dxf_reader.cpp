@@ -123,6 +123,43 @@ Drawing read_dxf(std::string_view contents, const std::string& name, const DxfRe
   return drawing;
 }
 
+namespace {
+
+/// Refuses what cannot be a DXF file while it is read, so that /dev/zero or
+/// an endless line fails at once instead of filling memory: a NUL byte in
+/// text that does not start with the binary sentinel, a line over 64 MiB,
+/// a file over 1 GiB.
+class ArrivingText {
+ public:
+  static constexpr std::size_t kMaxBytes = std::size_t{1} << 30, kMaxLine = std::size_t{64} << 20;
+
+  /// `all` is everything read so far; `at_end` once the input has ended.
+  void check(std::string_view all, bool at_end, const std::string& name) {
+    if (all.size() > kMaxBytes) throw Error("larger than 1 GiB: not a part drawing", {name, 0});
+    if (!binary_known_) {
+      if (all.size() < dxf::kBinarySentinel.size() && !at_end) return;
+      binary_known_ = true;
+      binary_ = all.starts_with(dxf::kBinarySentinel);
+    }
+    if (binary_) return;
+    for (; checked_ < all.size(); ++checked_) {
+      if (all[checked_] == '\n') {
+        ++lines_;
+        line_start_ = checked_ + 1;
+      } else if (all[checked_] == '\0') {
+        throw Error("binary data (NUL byte) in text input", {name, lines_ + 1});
+      }
+    }
+    if (all.size() - line_start_ > kMaxLine) throw Error("line longer than 64 MiB", {name, lines_ + 1});
+  }
+
+ private:
+  bool binary_known_ = false, binary_ = false;
+  std::size_t checked_ = 0, lines_ = 0, line_start_ = 0;
+};
+
+}  // namespace
+
 Drawing read_dxf_file(const std::string& path, const DxfReadOptions& options) {
   const bool standard_input = path == "-";
   const std::string name = standard_input ? "<stdin>" : path;
@@ -141,11 +178,18 @@ Drawing read_dxf_file(const std::string& path, const DxfReadOptions& options) {
       if (S_ISREG(st.st_mode)) contents.resize(static_cast<std::size_t>(st.st_size) + 1);
     }
   }
-  for (;;) {
-    if (used == contents.size()) contents.resize(std::max<std::size_t>(contents.size() * 2, 1u << 20));
-    const std::size_t got = std::fread(contents.data() + used, 1, contents.size() - used, file);
-    used += got;
-    if (got == 0) break;
+  ArrivingText text;
+  try {
+    for (;;) {
+      if (used == contents.size()) contents.resize(std::max<std::size_t>(contents.size() * 2, 1u << 20));
+      const std::size_t got = std::fread(contents.data() + used, 1, contents.size() - used, file);
+      text.check(std::string_view(contents.data(), used + got), got == 0, name);
+      used += got;
+      if (got == 0) break;
+    }
+  } catch (const Error&) {
+    if (!standard_input) std::fclose(file);
+    throw;
   }
   const bool failed = std::ferror(file) != 0;
   const int error = errno;

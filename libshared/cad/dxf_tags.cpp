@@ -17,7 +17,6 @@ namespace tk::cad::dxf {
 
 namespace {
 
-constexpr std::string_view kBinarySentinel{"AutoCAD Binary DXF\r\n\x1a\0", 22};
 constexpr std::string_view kUtf8Bom{"\xEF\xBB\xBF"};
 constexpr int kMaxGroupCode = 1071;
 

@@ -12,6 +12,9 @@
 
 namespace tk::cad::dxf {
 
+/// The first 22 bytes of a binary DXF file.
+inline constexpr std::string_view kBinarySentinel{"AutoCAD Binary DXF\r\n\x1a\0", 22};
+
 struct Tag {
   int code = 0;
   std::string_view text;  ///< ASCII: the value line, trimmed; binary: a string or binary chunk

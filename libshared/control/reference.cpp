@@ -43,6 +43,7 @@ Reference Reference::from_records(const std::string& path) {
   Reference r;
   r.kind_ = Kind::samples;
   io::RecordReader reader({path});
+  reader.expect_columns({{"t", "x"}});
   Record record;
   bool have_v = true, have_a = true;
   while (reader.next(record)) {

@@ -1,14 +1,19 @@
 /// @file input_file.cpp
 #include "io/input_file.hpp"
 
+#include <poll.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 
+#include "io/stop_signal.hpp"
+
 namespace tk::io {
 
-InputFile::InputFile(const std::string& path) : buffer_(1u << 16) {
+InputFile::InputFile(const std::string& path, std::size_t max_line_bytes)
+    : max_line_bytes_(max_line_bytes), buffer_(1u << 16) {
   if (path == "-" || path.empty()) {
     file_ = stdin;
     name_ = "<stdin>";
@@ -41,61 +46,91 @@ bool InputFile::fill() {
     begin_ = 0;
   }
   if (end_ == buffer_.size()) buffer_.resize(buffer_.size() * 2);
-  std::size_t got = std::fread(buffer_.data() + end_, 1, buffer_.size() - end_, file_);
-  if (got == 0) {
-    eof_ = true;  // also after a read error: the next call ends this input
-    if (std::ferror(file_))
-      throw Error(std::string("read error: ") + std::strerror(errno), {name_, 0});
-    return false;
+  // read(2), not fread: it returns what a pipe holds instead of waiting for
+  // the whole buffer, and the poll's timeout lets a caught SIGINT/SIGTERM
+  // end a read that no data would end.
+  const int fd = fileno(file_);
+  for (;;) {
+    if (const int signal = noticed_stop_signal())
+      throw Error("stopped by signal " + std::to_string(signal), {name_, line_number_});
+    pollfd ready{fd, POLLIN, 0};
+    const int polled = ::poll(&ready, 1, 250);
+    if (polled == 0 || (polled < 0 && errno == EINTR)) continue;  // look at the signal again
+    const ssize_t got = ::read(fd, buffer_.data() + end_, buffer_.size() - end_);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) {
+      eof_ = true;  // also after a read error: the next call ends this input
+      if (got < 0) throw Error(std::string("read error: ") + std::strerror(errno), {name_, 0});
+      return false;
+    }
+    end_ += static_cast<std::size_t>(got);
+    return true;
   }
-  end_ += got;
-  return true;
 }
 
-// Drops the rest of an over-long line, then reports it, so that the next
-// call (with --skip-bad) starts on the following line.
-void InputFile::skip_long_line() {
-  const std::size_t line = ++line_number_;
+std::string InputFile::limit_text() const {
+  return max_line_bytes_ % (1u << 20) == 0 ? std::to_string(max_line_bytes_ >> 20) + " MiB"
+                                           : std::to_string(max_line_bytes_) + " bytes";
+}
+
+// Reports the line being read without waiting for its end: the rest is
+// dropped by the next call (for --skip-bad), not here, so that an endless
+// line is reported at once.
+void InputFile::fail_line(const std::string& message) {
+  ++line_number_;
+  skipping_ = true;
+  throw Error(message, where());
+}
+
+// Drops the rest of a refused line, reading at most another limit's worth.
+// Throws, with the input given up, when the line does not end there.
+void InputFile::skip_bad_line() {
+  skipping_ = false;
+  std::uint64_t dropped = 0;
+  const std::uint64_t limit = (end_ - begin_) + max_line_bytes_;
   for (;;) {
     const void* newline = std::memchr(buffer_.data() + begin_, '\n', end_ - begin_);
     if (newline) {
       const std::size_t stop = static_cast<std::size_t>(static_cast<const char*>(newline) - buffer_.data()) + 1;
       consumed_ += stop - begin_;
       begin_ = stop;
-      break;
+      return;
     }
+    dropped += end_ - begin_;
     consumed_ += end_ - begin_;
     begin_ = end_ = 0;
-    if (!fill()) break;
+    if (dropped > limit) break;
+    if (!fill()) return;
   }
-  throw Error("line longer than 64 MiB", {name_, line});
+  abandoned_ = true;
+  throw Error("no end of line within " + limit_text() + " after this line: the rest of the input is skipped", where());
 }
 
 bool InputFile::next(std::string_view& line) {
-  std::size_t searched = 0;  // bytes after begin_ already known to hold no newline
+  if (abandoned_) return false;
+  if (skipping_) skip_bad_line();
+  std::size_t searched = 0;  // bytes after begin_ known to hold no newline and no NUL
   for (;;) {
     const char* base = buffer_.data() + begin_;
     const std::size_t available = end_ - begin_;
     const void* newline = std::memchr(base + searched, '\n', available - searched);
-    std::size_t length = 0, advance = 0;
-    if (newline) {
-      length = static_cast<std::size_t>(static_cast<const char*>(newline) - base);
-      advance = length + 1;
-    } else {
+    const std::size_t length = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - base) : available;
+    if (std::memchr(base + searched, '\0', length - searched)) fail_line("binary data (NUL byte) in text input");
+    if (length > max_line_bytes_) fail_line("line longer than " + limit_text());
+    if (!newline) {
       searched = available;
-      if (available > kMaxLineBytes) skip_long_line();  // throws
       if (fill()) continue;  // fill() keeps offsets relative to begin_ valid
       if (end_ == begin_) return false;
-      length = advance = end_ - begin_;  // last line without a newline
-      base = buffer_.data() + begin_;
+      base = buffer_.data() + begin_;  // the last line, without a newline
     }
-    if (length > kMaxLineBytes) skip_long_line();
+    const std::size_t advance = newline ? length + 1 : length;
+    std::size_t kept = length;
+    if (kept > 0 && base[kept - 1] == '\r') --kept;
     ++line_number_;
     consumed_ += advance;
     begin_ += advance;
-    if (length > 0 && base[length - 1] == '\r') --length;
-    if (std::memchr(base, '\0', length)) throw Error("binary data (NUL byte) in text input", where());
-    line = std::string_view(base, length);
+    line = std::string_view(base, kept);
+    if (line_number_ == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);
     return true;
   }
 }

@@ -13,13 +13,18 @@
 namespace tk::io {
 
 /// Reads one input ("-" is stdin) line by line. Lines lose their "\n" or
-/// "\r\n"; a NUL byte or a line longer than the limit is an Error at that
-/// line, so binary garbage never reaches a parser.
+/// "\r\n", and the first line a UTF-8 byte-order mark. A NUL byte or a line
+/// longer than the limit is an Error at that line, raised as soon as the
+/// bytes arrive (an endless line such as /dev/zero's fails at once), so
+/// binary garbage never reaches a parser. The next call skips the rest of
+/// the bad line, but at most another limit's worth: an input whose line
+/// never ends is then given up with a second Error.
 class InputFile {
  public:
   static constexpr std::size_t kMaxLineBytes = 64u << 20;
 
-  explicit InputFile(const std::string& path);
+  /// `max_line_bytes` other than the default is for tests.
+  explicit InputFile(const std::string& path, std::size_t max_line_bytes = kMaxLineBytes);
   ~InputFile();
   InputFile(const InputFile&) = delete;
   InputFile& operator=(const InputFile&) = delete;
@@ -38,15 +43,20 @@ class InputFile {
 
  private:
   bool fill();
-  [[noreturn]] void skip_long_line();
+  [[noreturn]] void fail_line(const std::string& message);
+  std::string limit_text() const;
+  void skip_bad_line();
 
   std::FILE* file_ = nullptr;
   bool owns_ = false;
   std::string name_;
+  std::size_t max_line_bytes_;
   std::size_t line_number_ = 0;
   std::vector<char> buffer_;
   std::size_t begin_ = 0, end_ = 0;
   bool eof_ = false;
+  bool skipping_ = false;   // the last line was refused: drop its rest first
+  bool abandoned_ = false;  // a refused line never ended: the input is over
   std::uint64_t consumed_ = 0, size_ = 0;
 };
 

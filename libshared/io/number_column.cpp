@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "io/csv.hpp"
 #include "io/record_fields.hpp"
 #include "io/text.hpp"
 
@@ -38,7 +39,9 @@ class ColumnDecoder final : public LineDecoder {
 NativeFormatProbe column_probe(std::string field, std::function<bool(std::string_view)> recognise, ColumnValue value) {
   return [field = std::move(field), recognise = std::move(recognise),
           value = std::move(value)](std::string_view first_line) -> std::unique_ptr<LineDecoder> {
-    if (!recognise(trim(first_line))) return nullptr;
+    // A first line that is neither a value nor a header naming the field is
+    // a bad value, reported as such at line 1.
+    if (!recognise(trim(first_line)) && is_csv_header_for(first_line, {{field}})) return nullptr;
     return std::make_unique<ColumnDecoder>(field, value);
   };
 }

@@ -18,7 +18,8 @@ using ColumnValue = std::function<Record(std::string_view line, const Location& 
 
 /// Recognises an input whose first non-blank line (trimmed) `recognise`
 /// accepts, and reads every line as {field: value(line)}; blank lines and
-/// lines starting with '#' are skipped. Otherwise nullptr (a CSV header).
+/// lines starting with '#' are skipped. A first line that `recognise`
+/// refuses is a CSV header (nullptr) if it names `field`, else a bad value.
 NativeFormatProbe column_probe(std::string field, std::function<bool(std::string_view)> recognise, ColumnValue value);
 
 /// A column of finite numbers: the first non-blank line must be one.

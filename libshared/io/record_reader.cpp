@@ -3,7 +3,6 @@
 
 #include <unordered_set>
 
-#include "io/csv.hpp"
 
 namespace tk::io {
 
@@ -86,8 +85,6 @@ bool RecordReader::next(Record& out) {
       input_.reset();
       continue;
     }
-    if (format_ == InputFormat::unknown && input_->line_number() == 1 && line.starts_with("\xEF\xBB\xBF"))
-      line.remove_prefix(3);  // a UTF-8 byte-order mark would hide the first byte
     if (is_blank(line)) continue;
     if (format_ == InputFormat::unknown) start_format(line);
     bool produced = false;
@@ -111,6 +108,13 @@ bool RecordReader::next_csv(std::string_view line, Record& out) {
   std::vector<std::string> fields = read_csv_row(line, *input_);
   if (header_pending_) {
     header_pending_ = false;
+    if (!wanted_columns_.empty() && !names_columns(fields, wanted_columns_)) {
+      const std::string shown(line.substr(0, 60));
+      input_.reset();  // without its header, the rows cannot be read
+      throw Error("'" + shown + (line.size() > 60 ? "...'" : "'") + " is not a csv header naming " +
+                      describe_columns(wanted_columns_) + ", nor a json object",
+                  at);
+    }
     std::unordered_set<std::string> seen;
     for (const auto& name : fields) {
       if (name.empty()) throw Error("empty column name in csv header", at);

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/csv.hpp"
 #include "io/error.hpp"
 #include "io/input_file.hpp"
 #include "io/record.hpp"
@@ -36,6 +37,11 @@ class RecordReader {
  public:
   explicit RecordReader(std::vector<std::string> paths, NativeFormatProbe probe = {});
 
+  /// The columns a CSV header must name (any one set), so that a first line
+  /// that is data, not a header, is an error at line 1 instead of a header
+  /// that no row follows. The input is given up after such an error.
+  void expect_columns(ColumnSets wanted) { wanted_columns_ = std::move(wanted); }
+
   /// Reads the next record. Returns false at the end of the last input.
   /// A malformed record throws Error naming file and line; calling next()
   /// again continues after it (for --skip-bad).
@@ -59,6 +65,7 @@ class RecordReader {
   InputFormat format_ = InputFormat::unknown;
   std::unique_ptr<LineDecoder> decoder_;
   std::vector<std::string> csv_header_;
+  ColumnSets wanted_columns_;
   bool header_pending_ = false;
 };
 

@@ -9,6 +9,7 @@ namespace tk::machining {
 
 std::vector<AllowanceSegment> read_profile(const std::string& path) {
   io::RecordReader reader({path});
+  reader.expect_columns({{"z_from", "z_to", "depth"}, {"z", "depth"}});
   std::vector<AllowanceSegment> profile;
   Record record;
   bool segments_shape = false, first = true;

@@ -1,6 +1,7 @@
 /// @file candidate_input.cpp
 #include "primes/candidate_input.hpp"
 
+#include "io/csv.hpp"
 #include "io/text.hpp"
 #include "primes/candidate.hpp"
 #include "primes/number_expression.hpp"
@@ -9,6 +10,8 @@
 namespace tk::primes {
 
 using io::trim;
+
+io::ColumnSets candidate_columns() { return {{"number"}, {"expr"}, {"k", "n"}}; }
 
 bool NumberLineDecoder::decode(std::string_view line, const Location& where, Record& out) {
   const std::string_view text = trim(line);
@@ -25,9 +28,10 @@ io::NativeFormatProbe candidate_format_probe(std::size_t max_bits) {
   return [max_bits](std::string_view first_line) -> std::unique_ptr<io::LineDecoder> {
     if (auto decoder = probe_prime_text_format(first_line, max_bits)) return decoder;
     const std::string_view text = trim(first_line);
-    if (text.starts_with("#") || text.starts_with("//") || looks_like_number(text))
-      return std::make_unique<NumberLineDecoder>(max_bits);
-    return nullptr;
+    // A CSV header must name the fields candidate_from_record reads;
+    // anything else is a number line, and a bad one says so at line 1.
+    if (io::is_csv_header_for(text, candidate_columns())) return nullptr;
+    return std::make_unique<NumberLineDecoder>(max_bits);
   };
 }
 

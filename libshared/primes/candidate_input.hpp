@@ -7,6 +7,7 @@
 #include <memory>
 #include <string_view>
 
+#include "io/csv.hpp"
 #include "io/record_reader.hpp"
 
 namespace tk::primes {
@@ -14,6 +15,9 @@ namespace tk::primes {
 /// Recognises the prime tools' text formats from an input's first non-blank
 /// line; for a CSV header it returns nullptr.
 io::NativeFormatProbe candidate_format_probe(std::size_t max_bits);
+
+/// The columns a CSV header of candidates must name: number, expr, or k and n.
+io::ColumnSets candidate_columns();
 
 /// One number or expression per line; blank lines and lines starting with
 /// '#' or '//' are skipped.

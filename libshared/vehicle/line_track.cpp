@@ -224,6 +224,7 @@ Track oval_track(double straight_mm, double radius_mm, double line_width_mm) {
 
 Track read_track(const std::string& path, double line_width_mm) {
   io::RecordReader reader({path});
+  reader.expect_columns({{"x", "y"}});
   std::vector<Point> points;
   std::vector<Location> where;
   Record record;

@@ -112,7 +112,11 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   run -1 threadcalc -i orders.csv
   [ "$(grep -c '^{' <<< "$output")" -eq 4 ]
   assert_output --partial "threadcalc: orders.csv:4: designation 'M30x2-6q'"
+  # A first line that names no 'designation' column is no header: data.
   printf 'part\nA\n' > nofield.csv
+  run -1 threadcalc -i nofield.csv
+  assert_output --partial "threadcalc: nofield.csv:1: designation 'part'"
+  printf 'part,designation\nA,\n' > nofield.csv
   run -1 threadcalc -i nofield.csv
   assert_output "threadcalc: nofield.csv:2: no 'designation' field with a designation"
   printf '{"designation":"M6"}\n{"designation":"M8","qty":3}\n' > growing.jsonl

@@ -158,7 +158,7 @@ TEST(Reference, MalformedFilesNameFileAndLine) {
   expect_error_at("t,x\n0,0\n1,1\n1,2\n", ".csv", 4, "increase");          // t repeats
   expect_error_at("t,x\n0,0\n2,1\n1,2\n", ".csv", 4, "increase");          // t goes back
   expect_error_at("t,x\n0,0\n1,abc\n", ".csv", 3, "x");                    // not a number
-  expect_error_at("t,y\n0,0\n1,1\n", ".csv", 2, "x");                      // no x column
+  expect_error_at("t,y\n0,0\n1,1\n", ".csv", 1, "x");                      // no x column: the header says so
   expect_error_at("{\"t\": 0, \"x\": 0}\n{\"x\": 1}\n", ".jsonl", 2, "t");  // no t
   expect_error_at("t,x,v\n0,0,1\n1,1,nan\n", ".csv", 3, "finite");         // a NaN velocity
   expect_error_at("t,x\n0,0\n1,inf\n", ".csv", 3, "finite");

@@ -277,6 +277,7 @@ int main(int argc, char** argv) {
         fields.insert(fields.end(), {"summary", "positions", "invasions", "deepest_invasion_mm", "deepest_x", "deepest_y", "closest_mm", "stops"});
       writer.declare_fields(fields);
       tk::io::RecordReader reader({check_path.empty() ? std::string("-") : check_path});
+      reader.expect_columns({{"x", "y"}});
       tk::Record record;
       const auto& elements = part.index->elements();
       while (reader.next(record)) {

@@ -28,6 +28,7 @@ void filter_records(const std::vector<std::string>& inputs, const FeedOverridePa
   tk::io::RecordWriter writer(format);
   writer.declare_fields({"wk", "override", "feed_out"});
   tk::io::RecordReader reader(inputs.empty() ? std::vector<std::string>{"-"} : inputs);
+  reader.expect_columns({{"t", "load"}});
   tk::Record record;
   double previous_t = -std::numeric_limits<double>::infinity();
   while (reader.next(record)) {

@@ -17,6 +17,7 @@
 #include "io/error.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
+#include "io/stop_signal.hpp"
 #include "primes/candidate.hpp"
 #include "primes/candidate_input.hpp"
 #include "primes/candidate_proof.hpp"
@@ -34,6 +35,7 @@ std::atomic<bool> g_cancel{false};
 extern "C" void on_stop_signal(int signal) {
   g_stop_signal.store(signal);
   g_cancel.store(true);
+  tk::io::notice_stop_signal(signal);  // a blocked read gives up too
 }
 
 struct Job {

@@ -7,6 +7,7 @@
 
 #include "cli/number_option.hpp"
 #include "cli/tool_app.hpp"
+#include "io/stop_signal.hpp"
 #include "io/error.hpp"
 #include "io/record_writer.hpp"
 #include "primes/generalized_sieve.hpp"
@@ -18,7 +19,10 @@ namespace {
 
 std::atomic<int> g_stop_signal{0};
 
-extern "C" void on_stop_signal(int signal) { g_stop_signal.store(signal); }
+extern "C" void on_stop_signal(int signal) {
+  g_stop_signal.store(signal);
+  tk::io::notice_stop_signal(signal);  // a blocked read gives up too
+}
 
 struct FormOptions {
   std::string n, k, h0, c, x, pmax, shard = "1/1", factors, checkpoint;

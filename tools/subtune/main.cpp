@@ -183,6 +183,7 @@ void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::O
   std::vector<tk::machining::CalibrationPoint> points;
   std::vector<tk::Record> records;
   tk::io::RecordReader reader(inputs);
+  reader.expect_columns({{"a", "f", "y"}});
   tk::Record record;
   while (reader.next(record)) {
     const tk::Location where = reader.where();

@@ -149,6 +149,9 @@ void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
   const bool paper_controller = options.fll_path.empty();
   const double full_scale = options.adc_bits == 10 ? 1023 : 4095;
   io::RecordReader reader(tool.common().inputs);
+  std::vector<std::string> input_names;
+  for (const auto& input : engine.inputs) input_names.push_back(input.name);
+  reader.expect_columns({input_names});
   io::RecordWriter writer(tool.output_format());
   std::vector<std::string> added;
   for (const auto& out : engine.outputs) added.push_back(out.name);
