@@ -2,11 +2,15 @@
 /// @brief Reading a part: layers, units, loops, index.
 #include "cad/part.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <utility>
 
 #include "cad/dxf_reader.hpp"
+#include "cad/segment_geometry.hpp"
 #include "io/error.hpp"
 
 namespace tk::cad {
@@ -27,6 +31,23 @@ double millimetres_per_named_unit(const std::string& name) {
   }
   throw Error("unknown unit '" + name + "' (known: " + known + ")");
 }
+
+namespace {
+/// An entity all of whose segments are shorter than the join tolerance
+/// vanishes from the loops (a closed polyline too): say so, once per entity.
+void warn_vanishing_entities(const std::vector<Segment>& segments, double join_tolerance, const std::string& name,
+                             const std::function<void(const std::string&)>& warn) {
+  std::map<std::uint32_t, std::pair<std::size_t, bool>> entities;  // entity -> line, every segment short
+  for (const Segment& s : segments) {
+    auto [it, fresh] = entities.try_emplace(s.entity, s.source_line, true);
+    if (!(segment_length(s) < join_tolerance)) it->second.second = false;
+  }
+  for (const auto& [entity, state] : entities)
+    if (state.second && warn)
+      warn(fmt::format("{}:{}: entity {} vanishes: every segment of it is shorter than --join-tol {:g} mm", name, state.first,
+                       entity, join_tolerance));
+}
+}  // namespace
 
 Part load_part(const std::string& path, const PartOptions& options, const std::function<void(const std::string&)>& warn) {
   Part part;
@@ -71,9 +92,16 @@ Part load_part(const std::string& path, const PartOptions& options, const std::f
       s.end = {s.end.x * k, s.end.y * k};
     }
   }
-  for (const Segment& s : d.segments)
+  for (const Segment& s : d.segments) {
     if (!std::isfinite(s.start.x) || !std::isfinite(s.start.y) || !std::isfinite(s.end.x) || !std::isfinite(s.end.y))
       throw Error("coordinates overflow when scaled to millimetres", {name, s.source_line});
+    for (const double v : {s.start.x, s.start.y, s.end.x, s.end.y})
+      if (std::abs(v) > kMaxCoordinateMm)
+        throw Error(fmt::format("coordinate {:g} mm is beyond ±{:g} mm (entity {}): not a part drawing", v, kMaxCoordinateMm,
+                                s.entity),
+                    {name, s.source_line});
+  }
+  warn_vanishing_entities(d.segments, options.join_tolerance, name, warn);
   part.loops = build_loops(d.segments, options.join_tolerance);
   part.index = std::make_unique<RegionIndex>(part.loops.loops);
   return part;

@@ -21,6 +21,11 @@ struct PartOptions {
   double chord_tolerance = 1e-3;    ///< drawing units: ELLIPSE and SPLINE flattening
 };
 
+/// Coordinates (drawing and tool positions) beyond ±1e9 mm, 1000 km, are
+/// not a part: bad data. The bound keeps the offset's integer polygon stage
+/// and every distance far inside double and 64-bit range.
+inline constexpr double kMaxCoordinateMm = 1e9;
+
 struct Part {
   Drawing drawing;                  ///< in mm, only the chosen layers' segments
   double millimetres_per_unit = 1;

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "cad/segment_geometry.hpp"
+#include "cli/option_checks.hpp"
 #include "io/error.hpp"
 
 namespace tk::cad {
@@ -334,6 +335,25 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
 
 }  // namespace
 
+double offset_vertices_estimate(const std::vector<Loop>& loops, double tool_radius, double tolerance) {
+  // Chords of sagitta `tolerance` on a turn of θ at radius R: about
+  // θ / (2 acos(1 - tol/R)) ~ θ/2 sqrt(R / (2 tol)).
+  const auto chords = [tolerance](double turn, double radius) { return turn / 2 * std::sqrt(radius / (2 * tolerance)); };
+  double vertices = 0;
+  if (tool_radius == 0) return vertices;  // the loops are the region: nothing is flattened
+  for (const Loop& loop : loops) {
+    vertices += chords(2 * std::numbers::pi, tool_radius);  // the corners' arcs turn once round in all
+    for (const Segment& s : loop.segments) {
+      vertices += 1;
+      if (s.bulge == 0) continue;
+      const double turn = 4 * std::atan(std::abs(s.bulge));  // the arc's angle
+      const double radius = std::hypot(s.end.x - s.start.x, s.end.y - s.start.y) / (2 * std::sin(turn / 2));
+      vertices += chords(turn, radius + tool_radius);
+    }
+  }
+  return vertices;
+}
+
 RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& index, const OffsetOptions& options) {
   if (!(options.tool_radius >= 0 && std::isfinite(options.tool_radius)))
     throw Error("the tool radius must be a finite number >= 0");
@@ -349,6 +369,8 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
                                 std::max(b.max_x - b.min_x, b.max_y - b.min_y)),
                     {"", s.source_line});
     }
+  cli::require_run_size(offset_vertices_estimate(drawn, options.tool_radius, options.tolerance), options.max_vertices,
+                        "offset polygon vertices", "--tool-radius, --offset-tol and the drawing's arcs");
   if (options.tool_radius == 0 || drawn.empty()) {
     result.loops = drawn;
   } else {

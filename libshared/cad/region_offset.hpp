@@ -31,7 +31,16 @@ struct OffsetOptions {
   MachiningSide side = MachiningSide::outside;
   double tolerance = 1e-4;         ///< mm: flattening for Clipper, and the checks of the exact recovery
   double uncut_report_mm = 1e-3;   ///< material left thicker than this is reported
+  /// The polygon stage's vertices (offset_vertices_estimate) beyond which
+  /// the offset is refused before it starts (a usage error: dxf2region(1)).
+  double max_vertices = 3e5;  // its time grows with them: a drawing estimated at 124,000 took 7 s
 };
+
+/// The vertices the offset's polygon stage implies: chords within
+/// `tolerance` along each arc at its radius plus the tool's, a full turn at
+/// the tool's radius per loop (the corners), and one per element; none for
+/// a tool radius of 0 (the drawing is the region).
+double offset_vertices_estimate(const std::vector<Loop>& loops, double tool_radius, double tolerance);
 
 /// A stretch of the drawing the tool cannot reach: material stays there
 /// (a concave corner, a slot narrower than the tool, a pocket it does not

@@ -9,6 +9,8 @@
 #include <limits>
 #include <string>
 
+#include "io/error.hpp"
+
 namespace tk::cli {
 
 std::string out_of_domain(double v, NumberDomain domain) {
@@ -55,6 +57,35 @@ CLI::Validator count_check(std::uint64_t low, std::uint64_t high) {
         return {};
       },
       "");
+}
+
+std::string out_of_range(double v, double low, double high, ZeroAllowed zero) {
+  if ((zero == ZeroAllowed::yes && v == 0) || (v >= low && v <= high)) return {};  // NaN fails both
+  return fmt::format("must be {}a number from {:g} to {:g}", zero == ZeroAllowed::yes ? "0 or " : "", low, high);
+}
+
+CLI::Validator range_check(double low, double high, ZeroAllowed zero) {
+  return CLI::Validator(
+      [low, high, zero](std::string& text) -> std::string {
+        errno = 0;
+        char* end = nullptr;
+        double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || end != text.c_str() + text.size()) return fmt::format("'{}' is not a number", text);
+        if (errno == ERANGE && std::abs(v) > 1) v = std::numeric_limits<double>::quiet_NaN();  // overflow: out of every range
+        const std::string problem = out_of_range(v, low, high, zero);
+        return problem.empty() ? problem : fmt::format("{}, not {}", problem, text);
+      },
+      "");
+}
+
+void require_range(double v, double low, double high, std::string_view option, ZeroAllowed zero) {
+  const std::string problem = out_of_range(v, low, high, zero);
+  if (!problem.empty()) throw UsageError(fmt::format("{}: {}, not {:g}", option, problem, v));
+}
+
+void require_run_size(double implied, double cap, std::string_view what, std::string_view options) {
+  if (!(implied <= cap))
+    throw UsageError(fmt::format("{} imply {:.3g} {}, more than the {:g} this tool allows", options, implied, what, cap));
 }
 
 }  // namespace tk::cli

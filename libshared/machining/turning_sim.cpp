@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <numbers>
 
+#include "cli/option_checks.hpp"
 #include "io/error.hpp"
 #include "sim/gaussian_noise.hpp"
 
@@ -116,25 +117,22 @@ void check_profile(const std::vector<AllowanceSegment>& profile) {
 }
 
 void validate(const TurningParams& p) {
-  const auto positive = [](double value, const char* option) {
-    if (!(value > 0 && std::isfinite(value))) throw UsageError(fmt::format("{} must be a finite number > 0, not {}", option, value));
-  };
-  positive(p.cutting.kc11_n_mm2, "--kc11");
-  if (!(p.cutting.mc >= 0 && p.cutting.mc < 1)) throw UsageError(fmt::format("--mc must be in [0, 1), not {}", p.cutting.mc));
-  if (!(p.cutting.kappa_deg > 0 && p.cutting.kappa_deg < 180))
-    throw UsageError(fmt::format("--kappa must be in (0, 180) degrees, not {}", p.cutting.kappa_deg));
-  positive(p.cutting.rated_power_w, "--power");
-  if (!(p.cutting.efficiency > 0 && p.cutting.efficiency <= 1))
-    throw UsageError(fmt::format("--efficiency must be in (0, 1], not {}", p.cutting.efficiency));
-  positive(p.feed_mm_rev, "--feed");
-  positive(p.cutting_speed_m_min, "--cutting-speed");
-  positive(p.diameter_mm, "--diameter");
-  positive(p.ipo_s, "--ipo");
-  if (p.ipo_s > 1) throw UsageError("--ipo is in seconds and must be at most 1");
-  positive(p.kv, "--kv");
-  if (!(p.load_smoothing_s >= 0 && std::isfinite(p.load_smoothing_s))) throw UsageError("--lag must be a finite number >= 0");
-  if (!(p.noise_pct >= 0 && p.noise_pct <= 100)) throw UsageError("--noise must be in [0, 100] % of rated");
-  if (!(p.above_tolerance >= 0 && std::isfinite(p.above_tolerance))) throw UsageError("--above-tol must be a finite number >= 0");
+  // Ranges wide enough for any lathe and material (fuzzyfeed(1), OPTIONS);
+  // the bounds keep a run's cycle count and the revolution history finite.
+  using cli::require_range, cli::ZeroAllowed;
+  require_range(p.cutting.kc11_n_mm2, 100, 10000, "--kc11");
+  require_range(p.cutting.mc, 0, 0.9, "--mc");
+  require_range(p.cutting.kappa_deg, 1, 179, "--kappa");
+  require_range(p.cutting.rated_power_w / 1000, 0.1, 1000, "--power");
+  require_range(p.cutting.efficiency, 0.05, 1, "--efficiency");
+  require_range(p.feed_mm_rev, 0.001, 5, "--feed");
+  require_range(p.cutting_speed_m_min, 1, 5000, "--cutting-speed");
+  require_range(p.diameter_mm, 0.5, 5000, "--diameter");
+  require_range(p.ipo_s, 1e-4, 1, "--ipo");
+  require_range(p.kv, 0.01, 1000, "--kv");
+  require_range(p.load_smoothing_s, 0, 10, "--lag");
+  require_range(p.noise_pct, 0, 100, "--noise");
+  require_range(p.above_tolerance, 0, 10, "--above-tol");
   // The revolution history holds one position per IPO cycle of a revolution.
   if (!(1 / (spindle_speed_rev_s(p) * p.ipo_s) <= 1e6))
     throw UsageError("a spindle revolution lasts more than 10^6 IPO cycles: raise --cutting-speed or --ipo, or lower --diameter");
@@ -168,10 +166,8 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
 
   // A law that keeps the feed near 0 would otherwise run for ever.
   const double baseline_cycles = baseline_time_s(params) / T;
-  if (!(baseline_cycles <= params.max_cycles))
-    throw UsageError(fmt::format("the cut at 100 % takes {:g} IPO cycles, more than the simulation's {:g}: raise --feed, "
-                                 "--cutting-speed or --ipo, or shorten the profile",
-                                 baseline_cycles, params.max_cycles));
+  cli::require_run_size(baseline_cycles, params.max_cycles, "IPO cycles for the cut at 100 % (raise --feed or --ipo, or shorten the profile)",
+                        "--feed, --cutting-speed, --diameter, --ipo and the profile's length");
   const double cycle_limit = std::min(params.max_cycles, std::max(1e6, 1000 * baseline_cycles));
 
   RunStats run;

@@ -471,3 +471,36 @@ print("ok")' <<< "$output"
     fi
   done
 }
+
+@test "option ranges and the offset's size are checked before the offset; far positions and vanishing loops are reported" {
+  load bounded_run
+  bounded dxf2region --tool-radius 1e10 "$DXF/plate.dxf"
+  assert_failure 2
+  assert_output --partial "--tool-radius: must be a number from 0 to 1000, not 1e+10"
+  bounded dxf2region --tool-radius 1e300 "$DXF/plate.dxf"
+  assert_failure 2
+  assert_output --partial "--tool-radius: must be a number from 0 to 1000, not 1e+300"
+  bounded dxf2region --tool-radius 10 --offset-tol 1e-6 "$DXF/plate.dxf"
+  assert_failure 2
+  assert_output --partial "--offset-tol: must be a number from 0.0001 to 1, not 1e-06"
+  # Two circles 980 m across (each element under the 1 km limit), offset at
+  # 0.1 um by a 1 m tool: each half circle needs pi/2 sqrt(491000 / 2e-4)
+  # ~ 77,800 chords, 311,000 for the four; the corners 7,000 more.
+  py 'import math; n = 4 * math.pi / 2 * math.sqrt(491000 / 2e-4) + 2 * math.pi * math.sqrt(1000 / 2e-4) + 4; assert 3.2e5 < n < 3.3e5, n'
+  circle() { printf '0\nLWPOLYLINE\n8\n0\n90\n2\n70\n1\n10\n%s\n20\n0\n42\n1\n10\n%s\n20\n0\n42\n1\n' "$1" "$2"; }
+  { printf '0\nSECTION\n2\nENTITIES\n'; circle 0 980000; circle 2000000 2980000; printf '0\nENDSEC\n0\nEOF\n'; } > big_arcs.dxf
+  bounded dxf2region -q --tool-radius 1000 big_arcs.dxf
+  assert_failure 2
+  assert_output --partial "--tool-radius, --offset-tol and the drawing's arcs imply 3.2"
+  assert_output --partial "offset polygon vertices, more than the 300000 this tool allows"
+  # A tool position 1e300 mm out: bad data with its line, not "distance":null.
+  printf 'x,y\n1,1\n1e300,0\n' > far.csv
+  bounded dxf2region -q --check far.csv "$DXF/plate.dxf"
+  assert_failure 1
+  assert_output --partial "dxf2region: far.csv:3: position 1e+300 mm is beyond ±1e+09 mm"
+  # A closed polyline 0.1 um square vanishes under --join-tol 0.001: said, with its line.
+  printf '0\nSECTION\n2\nENTITIES\n0\nLWPOLYLINE\n5\n2A\n8\n0\n90\n4\n70\n1\n10\n0\n20\n0\n10\n0.0001\n20\n0\n10\n0.0001\n20\n0.0001\n10\n0\n20\n0.0001\n0\nLWPOLYLINE\n8\n0\n90\n4\n70\n1\n10\n10\n20\n10\n10\n20\n20\n10\n10\n20\n20\n20\n10\n10\n20\n20\n0\nENDSEC\n0\nEOF\n' > vanish.dxf
+  run --separate-stderr dxf2region --units mm vanish.dxf
+  assert_success
+  [[ "$stderr" == *"dxf2region: vanish.dxf:5: entity 0 vanishes: every segment of it is shorter than --join-tol 0.001 mm"* ]] || { echo "$stderr"; false; }
+}

@@ -81,8 +81,8 @@ print("agree", len(ours))' "$1" "$2"
   assert_failure 2
   run fuzzyfeed --simulate --kv 0
   assert_failure 2
-  # 204 mm at 10^-6 mm/rev: 2.7e9 IPO cycles at 100 %, refused at once.
-  run fuzzyfeed --simulate --feed 1e-6
+  # 204 mm at 10^-3 mm/rev and a 0.1 ms IPO: 2.2e8 IPO cycles at 100 %, refused at once.
+  run fuzzyfeed --simulate --feed 0.001 --ipo 1e-4
   assert_failure 2
   assert_output --partial "IPO cycles"
   run fuzzyfeed --no-such-option
@@ -297,4 +297,25 @@ print(len(root.findall(ns + "polyline")), len(root.findall(ns + "rect")) >= 3)'
   assert_success
   [ -s "$BATS_TEST_TMPDIR/example/original.svg" ]
   [ -s "$BATS_TEST_TMPDIR/example/modified.svg" ]
+}
+
+@test "the size of a run is checked before it starts: every process option has a range, a traced run a cap" {
+  load bounded_run
+  bounded fuzzyfeed --simulate --feed 1e-12
+  assert_failure 2
+  assert_output --partial "--feed: must be a number from 0.001 to 5, not 1e-12"
+  bounded fuzzyfeed --simulate --ipo 1e-9
+  assert_failure 2
+  assert_output --partial "--ipo: must be a number from 0.0001 to 1"
+  bounded fuzzyfeed --simulate --power 1e300
+  assert_failure 2
+  assert_output --partial "--power: must be a number from 0.1 to 1000"
+  # 204 mm at 0.0012 mm/rev and 557 rpm: 18300 s, 2.29e6 IPO cycles of 8 ms
+  # at 100 %, above the trace's 2e6 (it wrote ~110 bytes a cycle, 250 MB).
+  py 'import math; n = 140e3 / (math.pi * 80) / 60; c = 204 / (0.0012 * n) / 0.008; assert 2e6 < c < 2.4e6, c'
+  bounded fuzzyfeed --simulate --feed 0.0012 --trace trace.jsonl
+  assert_failure 2
+  assert_output --partial "--trace with --feed, --cutting-speed, --diameter, --ipo and the profile's length imply 2.29e+06 trace records"
+  assert_output --partial "more than the 2e+06 this tool allows"
+  [ ! -e trace.jsonl ]
 }

@@ -61,7 +61,7 @@ assert all(float(c[k]) == r[k] for r, c in zip(rows, cells) for k in r)
 print("ok")'
   assert_output "ok"
   run smcsim --summary --csv
-  assert_line --index 0 "controller,Lambda,alpha,beta,rms_error_mm,max_error_mm,rms_velocity_error_mm_s,rms_s,chattering,hf_share,effort_rms_n,max_force_n,saturated_share,measured_s,plant_steps,diverged"
+  assert_line --index 0 "controller,Lambda,alpha,beta,rms_error_mm,max_error_mm,rms_velocity_error_mm_s,rms_s,chattering,hf_share,effort_rms_n,max_force_n,saturated_share,measured_s,plant_steps,diverged,diverged_at_s"
   assert_line --index 1 --regexp "^smc,40.0,,,"
 }
 
@@ -215,21 +215,21 @@ assert title.startswith(want), (title, want)' "$law"
     [ "${stderr%%$'\n'*}" = "smcsim: $message" ] || { echo "for $*: $stderr"; return 1; }
     [[ "$stderr" == *"Try 'smcsim --help' for more information." ]]
   }
-  positive="must be a positive number from 1e-12 to 1e12"
-  check "--mass: $positive, not -1" --mass -1
-  check "--mass: $positive, not 0" --mass 0
-  check "--mass: $positive, not nan" --mass nan
-  check "--mass: $positive, not 1e308" --mass 1e308
-  check "--mass: $positive, not 1e-320" --mass 1e-320
+  mass="must be a number from 0.001 to 10000"  # a micro stage to a gantry
+  check "--mass: $mass, not -1" --mass -1
+  check "--mass: $mass, not 0" --mass 0
+  check "--mass: $mass, not nan" --mass nan
+  check "--mass: $mass, not 1e308" --mass 1e308
+  check "--mass: $mass, not 1e-320" --mass 1e-320
   check "--mass: 'ten' is not a number" --mass ten
-  check "--mass-end: $positive, not -5" --mass-end -5
-  check "--mass-estimate: $positive, not inf" --mass-estimate inf
+  check "--mass-end: $mass, not -5" --mass-end -5
+  check "--mass-estimate: $mass, not inf" --mass-estimate inf
   check "--damping: must be 0 or a number from 1e-12 to 1e12, not -250" --damping -250
   check "--damping-end: must be 0 or a number from 1e-12 to 1e12, not -2" --damping-end -2
-  check "--period: $positive, not 0" --period 0
-  check "--period: $positive, not -1e-4" --period -1e-4
-  check "--duration: $positive, not -1" --duration -1
-  check "--duration: $positive, not 1e400" --duration 1e400
+  check "--period: must be a number from 1e-07 to 1, not 0" --period 0
+  check "--period: must be a number from 1e-07 to 1, not -1e-4" --period -1e-4
+  check "--duration: must be a number from 1e-06 to 100000, not -1" --duration -1
+  check "--duration: must be a number from 1e-06 to 100000, not 1e400" --duration 1e400
   check "--Lambda 'nan' is not a number or FROM:TO:STEP" --Lambda nan
   check "--Lambda: must be 0 or a number from 1e-12 to 1e12, not -5" --Lambda -5
   check "--Lambda: must be 0 or a number from 1e-12 to 1e12, not 1e+300" --Lambda 1e300
@@ -237,16 +237,16 @@ assert title.startswith(want), (title, want)' "$law"
   check "--beta: must be 0 or a number from 1e-12 to 1e12, not -1" --controller sta --beta -1
   check "--kp: must be 0 or a number from 1e-12 to 1e12, not -5" --controller pid --kp -5
   check "--pid-ff: must be a number from 0 to 1, not 1.5" --controller pid --pid-ff 1.5
-  check "--amplitude: must be a number from -1e12 to 1e12, not 1e308" --amplitude 1e308
+  check "--amplitude: must be a number from -10000 to 10000, not 1e308" --amplitude 1e308
   check "--initial-position: must be a number from -1e12 to 1e12, not nan" --initial-position nan
   check "--substeps: must be a whole number from 1 to 100000, not 0" --substeps 0
   check "--substeps: must be a whole number from 1 to 100000, not -3" --substeps -3
   check "--every: must be a whole number from 1 to 1000000000000, not 0" --every 0
   check "--every: must be a whole number from 1 to 1000000000000, not -1" --every -1
   check "--teeth: must be a whole number from 1 to 64, not 0" --teeth 0
-  check "--period 20 s is longer than --duration 10 s" --period 20
+  check "--period 0.5 s is longer than --duration 0.1 s" --period 0.5 --duration 0.1
   check "--duration 10000 s at --period 0.0001 s is 1e+08 control periods; at most 1e+07" --duration 1e4
-  check "--duration 10 s at --period 1e-12 s is 1e+13 control periods; at most 1e+07" --period 1e-12
+  check "--duration 10 s at --period 1e-07 s is 1e+08 control periods; at most 1e+07" --period 1e-7
   check "--substeps 100000 over 1e+05 control periods is 1e+10 plant steps; at most 1e+08" --substeps 100000
   check "--settle 10 s leaves nothing of --duration 10 s" --settle 10
   check "--radial-depth 2 mm is more than --tool-diameter 0.9 mm" --radial-depth 2
@@ -341,4 +341,33 @@ assert title.startswith(want), (title, want)' "$law"
   assert_output --regexp "Lambda [0-9]+: rms 0\.0[0-9]+ mm, chattering [0-9]+ N/s, hf_share 0\.(0[0-9]+|100) "
   [ -s "$BATS_TEST_TMPDIR/example/best.svg" ]
   [ "$(wc -l < "$BATS_TEST_TMPDIR/example/sweep.csv")" -eq 101 ]
+}
+
+@test "a run that diverges before --settle has no tracking error (null), not 0.0, and a sweep writes it last" {
+  # PID gains of 1e12 against a 1e8 N amplifier: the error passes 1000 mm
+  # within a few periods, long before the 1 s --settle.
+  run --separate-stderr smcsim --summary --controller pid --kp 1e12 --kd 1e12 --voltage-limit 1000 --kt 1000 --ka 1e4 --settle 1
+  assert_success
+  echo "$output" | check 'r = rows[0]
+assert r["diverged"] is True and r["diverged_at_s"] < 0.01, r
+for f in ("rms_error_mm", "max_error_mm", "rms_velocity_error_mm_s", "rms_s"):
+    assert r[f] is None, (f, r[f])'
+  # --seed-sign's wrong sign pushes away from the surface: Lambda 0 tracks,
+  # 5e8 and 1e9 (swept first and last) diverge at once.
+  run --separate-stderr smcsim sweep --seed-sign --Lambda 0:1e9:5e8 --voltage-limit 1000 --kt 1000 --ka 1e4 --settle 1 --duration 2 -j 2
+  assert_success
+  echo "$output" | check 'assert [r["Lambda"] for r in rows] == [0, 5e8, 1e9], rows
+assert [r["diverged"] for r in rows] == [False, True, True]
+assert rows[0]["rms_error_mm"] > 0 and rows[1]["rms_error_mm"] is None and rows[2]["rms_error_mm"] is None'
+}
+
+@test "a sweep's plant steps are capped before it starts" {
+  load bounded_run
+  # 10^4 settings x 10^5 periods x 10 substeps = 10^10 plant steps (~30 min of two cores).
+  bounded smcsim sweep --Lambda 0:9999:1 --duration 10
+  assert_failure 2
+  assert_output --partial "the sweep's settings, --duration, --period and --substeps imply 1e+10 plant steps, more than the 1e+09 this tool allows"
+  bounded smcsim --summary --voltage-limit 1e9
+  assert_failure 2
+  assert_output --partial "--voltage-limit: must be a number from 0.01 to 1000, not 1e9"
 }

@@ -319,3 +319,29 @@ assert rows[1]["tnorm"] == "minimum" and rows[1]["completed"] and rows[1]["paper
   assert_failure 1
   assert_output --partial "short.csv"
 }
+
+@test "laps: every option has a range and the steps a run implies are capped before it starts" {
+  load bounded_run
+  bounded tnorm-bench laps --noise -1
+  assert_failure 2
+  assert_output --partial "--noise: must be a number from 0 to 4096, not -1"
+  bounded tnorm-bench laps --period-ms 1e-9
+  assert_failure 2
+  assert_output --partial "--period-ms: must be 0 or a number from 0.01 to 1000, not 1e-9"
+  bounded tnorm-bench laps --oval 1000,1e12
+  assert_failure 2
+  assert_output --partial "--oval (radius, mm): must be a number from 10 to 100000"
+  bounded tnorm-bench laps --speed-factor 1e9
+  assert_failure 2
+  assert_output --partial "--speed-factor: must be a number from 0.1 to 10"
+  # 1000 laps of 17 s each at a 10 us period: 36000 s x (5000 physics steps
+  # + 2 x 10^5 samples and commands) a second for each of the six t-norms.
+  py 'n = 6 * 36000 * (1 / 0.0002 + 2 / 1e-5); assert abs(n - 4.428e10) < 1e7, n'
+  bounded tnorm-bench laps --tnorm all --laps 1000 --period-ms 0.01 --time-limit 36000
+  assert_failure 2
+  assert_output --partial "--time-limit, --period-ms, --latency-ms and --tnorm imply 4.43e+10 simulation steps, more than the 1e+08 this tool allows"
+  bounded tnorm-bench laps --tnorm all --time-limit 3000 --trace trace.jsonl
+  assert_failure 2
+  assert_output --partial "imply 1.8e+06 trace points"
+  [ ! -e trace.jsonl ]
+}

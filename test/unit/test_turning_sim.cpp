@@ -217,7 +217,7 @@ TEST(TurningSim, RejectsBadProfilesAndParameters) {
   // A drive too small for any cut: the law holds the override near 0 and the
   // run stops at the limit, a runtime error.
   p = {};
-  p.cutting.rated_power_w = 1;
+  p.cutting.rated_power_w = 100;  // the smallest --power, 0.1 kW
   p.max_cycles = 20000;
   try {
     simulate_turning(p, law, 60);

@@ -15,6 +15,7 @@
 #include "cad/segment_geometry.hpp"
 #include "cad/toolpath.hpp"
 #include "cli/number_option.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
 #include "io/record_fields.hpp"
@@ -32,10 +33,6 @@ std::vector<double> number_list(const std::string& text, const char* option) {
   }
 }
 
-void require_positive(double value, const char* option, bool zero_allowed = false) {
-  if (!std::isfinite(value) || value < 0 || (!zero_allowed && value == 0))
-    throw tk::UsageError(std::string(option) + " must be a finite number " + (zero_allowed ? ">= 0" : "> 0"));
-}
 
 }  // namespace
 
@@ -116,20 +113,30 @@ int main(int argc, char** argv) {
     const bool checking = check->count() > 0;
     if (checking + toolpath + simulate > 1) throw tk::UsageError("--check, --toolpath and --simulate exclude each other");
     if (summary && !checking) throw tk::UsageError("--summary goes with --check");
-    require_positive(tool_radius, "--tool-radius", true);
-    require_positive(join_tolerance, "--join-tol");
-    require_positive(flatten_tolerance, "--flatten-tol");
-    require_positive(offset_tolerance, "--offset-tol");
-    require_positive(latency, "--latency", true);
-    require_positive(margin, "--margin", true);
-    require_positive(period, "--period");
+    // The ranges dxf2region(1) gives under OPTIONS: a metre-radius tool is
+    // past the largest face mill; an offset tolerance finer than 0.1 um is
+    // below any machine's resolution and slows the offset without bound.
+    using tk::cli::require_range;
+    require_range(tool_radius, 0, 1000, "--tool-radius");
+    require_range(join_tolerance, 1e-6, 10, "--join-tol");
+    require_range(flatten_tolerance, 1e-6, 10, "--flatten-tol");
+    require_range(offset_tolerance, 1e-4, 1, "--offset-tol");
+    require_range(latency, 0, 10, "--latency");
+    require_range(margin, 0, 100, "--margin");
+    require_range(period, 1e-6, 1, "--period");
+    require_range(feed, 0.1, 1e5, "--feed");
+    require_range(plunge_feed, 0.1, 1e5, "--plunge-feed");
+    require_range(cut_z, -1e4, 1e4, "--cut-z");
+    require_range(safe_z, -1e4, 1e4, "--safe-z");
+    require_range(strokes, 1, 1e6, "--strokes");
     const bool travel_latency = latency_mm_option->count() > 0, travel_period = period_mm_option->count() > 0;
     if (!simulate && (travel_latency || travel_period || invasion_check != "exact"))
       throw tk::UsageError("--latency-mm, --period-mm and --invasion-check go with --simulate");
-    if (travel_latency) require_positive(latency_mm, "--latency-mm", true);
-    if (travel_period) require_positive(period_mm, "--period-mm");
+    if (travel_latency) require_range(latency_mm, 0, 1000, "--latency-mm");
+    if (travel_period) require_range(period_mm, 1e-4, 1000, "--period-mm");
     const std::vector<double> speeds = number_list(speeds_text, "--joystick-speed");
     const std::vector<double> tolerances = number_list(tolerances_text, "--tolerances");
+    for (const double tolerance : tolerances) require_range(tolerance, 0, 1000, "--tolerances");
     auto experiment_at = [&](double v) {
       tk::cad::InvasionSimOptions options;
       options.feed_mm_s = v;
@@ -142,7 +149,7 @@ int main(int argc, char** argv) {
     };
     if (simulate)
       for (double v : speeds) {
-        require_positive(v, "--joystick-speed");
+        require_range(v, 0.01, 1e4, "--joystick-speed");
         try {
           tk::cad::check_invasion_sim(tolerances, experiment_at(v));
         } catch (const tk::Error& e) {
@@ -205,6 +212,8 @@ int main(int argc, char** argv) {
     tk::cad::RegionOffset region;
     try {
       region = tk::cad::offset_region(found.loops, *part.index, offset_options);
+    } catch (const tk::UsageError&) {
+      throw;  // the offset's size, named by its options
     } catch (const tk::Error& e) {
       throw tk::Error(e.what(), {name, e.where().line});  // the library knows the DXF line, not the file
     }
@@ -283,6 +292,9 @@ int main(int argc, char** argv) {
       while (reader.next(record)) {
         const tk::Location where = reader.where();
         const tk::cad::Point p{tk::io::number_field(record, "x", where), tk::io::number_field(record, "y", where)};
+        for (const double v : {p.x, p.y})  // a distance that far out would be all rounding: bad data
+          if (!(std::abs(v) <= tk::cad::kMaxCoordinateMm))
+            throw tk::Error(fmt::format("position {:g} mm is beyond ±{:g} mm", v, tk::cad::kMaxCoordinateMm), where);
         const std::optional<double> t = tk::io::optional_number_field(record, "t", where);
         tk::cad::PositionCheck c;
         try {

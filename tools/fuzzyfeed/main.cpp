@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 
+#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
 #include "io/record_fields.hpp"
@@ -21,6 +22,9 @@
 namespace {
 
 using namespace tk::machining;
+
+/// The most IPO cycles a run with --trace may take (fuzzyfeed(1), OPTIONS).
+constexpr double kMaxTraceCycles = 2e6;
 
 /// The stream mode: each record gets the law's answer to its load.
 void filter_records(const std::vector<std::string>& inputs, const FeedOverrideParams& law_params, tk::io::OutputFormat format) {
@@ -162,8 +166,15 @@ int main(int argc, char** argv) {
     check_profile(process.profile);
 
     std::unique_ptr<TraceFile> trace;
-    if (!trace_path.empty())
+    if (!trace_path.empty()) {
+      // A trace line is about 110 bytes: at most ~250 MB of trace, and a
+      // run that the law slows past the cap stops there (exit 1).
+      tk::cli::require_run_size(baseline_time_s(process) / process.ipo_s, kMaxTraceCycles,
+                                "trace records (IPO cycles at 100 %; raise --feed or --ipo, or shorten the profile)",
+                                "--trace with --feed, --cutting-speed, --diameter, --ipo and the profile's length");
+      process.max_cycles = kMaxTraceCycles;
       trace = std::make_unique<TraceFile>(trace_path, tool.output_format(), process.feed_mm_rev);
+    }
     TurningSvg plot;
     const RunStats run = simulate_turning(process, law, law.mz_pct, [&](const TraceSample& s) {
       if (trace) trace->add(s);

@@ -25,6 +25,8 @@ using namespace tk::control;
 constexpr double kMaxPeriods = 1e7, kMaxPlantSteps = 1e8;
 /// Settings in one sweep (for sta, the product of the --alpha and --beta grids).
 constexpr std::size_t kMaxSweepPoints = 100000;
+/// Plant steps in one sweep, every setting together: about 200 s of one core.
+constexpr double kMaxSweepPlantSteps = 1e9;
 
 /// The gains a sweep may vary; one value each outside a sweep.
 struct GainGrids {
@@ -33,14 +35,18 @@ struct GainGrids {
 
 const std::vector<std::string> kSummaryFields{
     "controller", "Lambda", "alpha", "beta", "rms_error_mm", "max_error_mm", "rms_velocity_error_mm_s", "rms_s", "chattering",
-    "hf_share", "effort_rms_n", "max_force_n", "saturated_share", "measured_s", "plant_steps", "diverged"};
+    "hf_share", "effort_rms_n", "max_force_n", "saturated_share", "measured_s", "plant_steps", "diverged", "diverged_at_s"};
 
 tk::Record summary_record(const FeedDriveConfig& c, const FeedDriveSummary& s) {
   tk::Record r{{"controller", controller_name(c.gains.kind)}};
   if (c.gains.kind == ControllerKind::smc) r["Lambda"] = c.gains.switching;
   if (c.gains.kind == ControllerKind::sta) r["alpha"] = c.gains.alpha, r["beta"] = c.gains.beta;
-  r["rms_error_mm"] = s.rms_error_mm, r["max_error_mm"] = s.max_error_mm;
-  r["rms_velocity_error_mm_s"] = s.rms_velocity_error_mm_s, r["rms_s"] = s.rms_s;
+  // A diverged run has no tracking error to rank it by (the figures before
+  // the divergence, or none at all when it came before --settle, would say
+  // 0.0 and top a sweep sorted by error): null, and `diverged` says why.
+  const auto tracking = [&s](double figure) { return s.diverged ? tk::Record() : tk::Record(figure); };
+  r["rms_error_mm"] = tracking(s.rms_error_mm), r["max_error_mm"] = tracking(s.max_error_mm);
+  r["rms_velocity_error_mm_s"] = tracking(s.rms_velocity_error_mm_s), r["rms_s"] = tracking(s.rms_s);
   r["chattering"] = s.chattering_n_s, r["hf_share"] = s.hf_share;
   r["effort_rms_n"] = s.effort_rms_n, r["max_force_n"] = s.max_force_n, r["saturated_share"] = s.saturated_share;
   r["measured_s"] = s.measured_s, r["plant_steps"] = s.plant_steps, r["diverged"] = s.diverged;
@@ -51,6 +57,7 @@ tk::Record summary_record(const FeedDriveConfig& c, const FeedDriveSummary& s) {
 /// A summary with an inf or NaN figure (a reference file's huge values) is
 /// an error, not a record with nulls in it.
 const FeedDriveSummary& checked(const FeedDriveSummary& s) {
+  if (s.diverged) return s;  // its figures are written as null
   for (const double v : {s.rms_error_mm, s.max_error_mm, s.rms_velocity_error_mm_s, s.rms_s, s.chattering_n_s, s.hf_share,
                          s.effort_rms_n, s.max_force_n, s.saturated_share})
     if (!std::isfinite(v)) throw tk::Error("the run's figures overflowed (is the reference beyond 1e12 mm?)");
@@ -117,8 +124,11 @@ void run_sweep(const FeedDriveConfig& base, const GainGrids& grids, unsigned thr
         points.push_back(gains);
       }
   }
+  tk::cli::require_run_size(static_cast<double>(points.size()) * static_cast<double>(base.periods()) * base.substeps,
+                            kMaxSweepPlantSteps, "plant steps", "the sweep's settings, --duration, --period and --substeps");
   tk::io::RecordWriter writer(format);
   writer.declare_fields(kSummaryFields);
+  std::vector<tk::Record> diverged;  // written after every setting that held, so that they sort last
   tk::OrderedPool<ControllerGains, tk::Record> pool(
       threads,
       [&base](ControllerGains& g) {
@@ -126,9 +136,15 @@ void run_sweep(const FeedDriveConfig& base, const GainGrids& grids, unsigned thr
         c.gains = g;
         return summary_record(c, checked(simulate_feed_drive(c)));
       },
-      [&](tk::Record& r) { writer.write(r); });
+      [&](tk::Record& r) {
+        if (r["diverged"].get<bool>())
+          diverged.push_back(std::move(r));
+        else
+          writer.write(r);
+      });
   for (ControllerGains& p : points) pool.submit(p);
   pool.finish();
+  for (const tk::Record& r : diverged) writer.write(r);
   writer.flush();
 }
 
@@ -206,53 +222,53 @@ int main(int argc, char** argv) {
   app.add_option("--boundary-layer", c.gains.boundary_layer, "smc: sat(S/φ) instead of sign(S); φ in length units per second (0: sign)")->check(non_negative)->capture_default_str()->type_name("PHI")->group(ctl);
   app.add_flag("--seed-sign", seed_sign, "smc, sta: switch with −Λ sign(S) as the paper writes it (destabilises: see smcsim(1))")->group(ctl);
   app.add_flag("--seed-bracket", seed_bracket, "smc, sta: the bracket of the paper's eq. 8-9, m̂[ẍ_ref + (b/m)ẋ_ref + λe] with b/m read b̂/m̂, not F_eq (see smcsim(1))")->group(ctl);
-  app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")->check(positive)->capture_default_str()->type_name("HZ")->group(ctl);
+  app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")->check(tk::cli::range_check(1e-3, 1e5))->capture_default_str()->type_name("HZ")->group(ctl);
   app.add_option("--kp", c.gains.kp, "pid: proportional gain, kg/s² (N/m)")->check(non_negative)->group(ctl);
   app.add_option("--ki", c.gains.ki, "pid: integral gain, kg/s³")->check(non_negative)->group(ctl);
   app.add_option("--kd", c.gains.kd, "pid: derivative gain, kg/s")->check(non_negative)->group(ctl);
   app.add_option("--pid-ff", c.gains.pid_feedforward, "pid: share of m̂ ẍ_ref + b̂ ẋ_ref fed forward, 0-1")->check(fraction)->capture_default_str()->group(ctl);
   app.add_option("--kv", c.gains.position_gain, "ppd: position loop gain K_v, 1/s")->check(non_negative)->capture_default_str()->group(ctl);
-  app.add_option("--velocity-bandwidth", c.gains.velocity_bandwidth_hz, "ppd: velocity P gain = m̂·2π·this, Hz")->check(positive)->capture_default_str()->type_name("HZ")->group(ctl);
+  app.add_option("--velocity-bandwidth", c.gains.velocity_bandwidth_hz, "ppd: velocity P gain = m̂·2π·this, Hz")->check(tk::cli::range_check(1e-3, 1e5))->capture_default_str()->type_name("HZ")->group(ctl);
   app.add_option("--kvp", c.gains.velocity_p, "ppd: velocity loop P gain, kg/s (overrides the bandwidth)")->check(non_negative)->group(ctl);
   app.add_option("--kvd", c.gains.velocity_d, "ppd: velocity loop D gain, kg")->check(non_negative)->capture_default_str()->group(ctl);
   app.add_option("--velocity-ff", c.gains.velocity_feedforward, "ppd: share of the reference velocity fed forward, 0-1")->check(fraction)->capture_default_str()->group(ctl);
 
-  app.add_option("--mass", c.plant.mass_kg, "the axis's mass m, kg")->check(positive)->capture_default_str()->group(plant);
+  app.add_option("--mass", c.plant.mass_kg, "the axis's mass m, kg")->check(tk::cli::range_check(1e-3, 1e4))->capture_default_str()->group(plant);
   app.add_option("--damping", c.plant.damping_kg_s, "viscous damping b, kg/s")->check(non_negative)->capture_default_str()->group(plant);
-  app.add_option("--mass-end", c.plant.mass_end_kg, "the mass drifts linearly to this by the end (material removal)")->check(positive)->group(plant);
+  app.add_option("--mass-end", c.plant.mass_end_kg, "the mass drifts linearly to this by the end (material removal)")->check(tk::cli::range_check(1e-3, 1e4))->group(plant);
   app.add_option("--damping-end", c.plant.damping_end_kg_s, "the damping drifts linearly to this by the end (lubricant)")->check(non_negative)->group(plant);
-  app.add_option("--mass-estimate", c.mass_estimate_kg, "m̂, the controller's mass")->check(positive)->capture_default_str()->group(plant);
+  app.add_option("--mass-estimate", c.mass_estimate_kg, "m̂, the controller's mass")->check(tk::cli::range_check(1e-3, 1e4))->capture_default_str()->group(plant);
   app.add_option("--damping-estimate", c.damping_estimate_kg_s, "b̂, the controller's damping")->check(non_negative)->capture_default_str()->group(plant);
-  app.add_option("--kt", c.amplifier_a_v, "current amplifier gain K_t, A/V")->check(positive)->capture_default_str()->group(plant);
-  app.add_option("--ka", c.force_constant_n_a, "motor force constant K_a, N/A")->check(positive)->capture_default_str()->group(plant);
-  app.add_option("--voltage-limit", c.voltage_limit_v, "the amplifier's input saturates at ± this, V")->check(positive)->capture_default_str()->group(plant);
+  app.add_option("--kt", c.amplifier_a_v, "current amplifier gain K_t, A/V")->check(tk::cli::range_check(1e-3, 1000))->capture_default_str()->group(plant);
+  app.add_option("--ka", c.force_constant_n_a, "motor force constant K_a, N/A")->check(tk::cli::range_check(1e-3, 1e4))->capture_default_str()->group(plant);
+  app.add_option("--voltage-limit", c.voltage_limit_v, "the amplifier's input saturates at ± this, V")->check(tk::cli::range_check(0.01, 1000))->capture_default_str()->group(plant);
 
   CLI::Option* reference_option = app.add_option("--reference", reference, "sine, step or ramp")->check(CLI::IsMember({"sine", "step", "ramp"}))->capture_default_str()->group(ref);
   CLI::Option* file_option = app.add_option("--reference-file", reference_file, "records t, x (mm), optionally v, a: the reference from samples ('-': stdin)")->type_name("FILE")->group(ref);
-  CLI::Option* amplitude_option = app.add_option("--amplitude", amplitude, "sine amplitude or step height, mm")->check(finite_value)->capture_default_str()->type_name("MM")->group(ref);
-  CLI::Option* omega_option = app.add_option("--omega", omega, "sine frequency, rad/s")->check(finite_value)->capture_default_str()->group(ref);
-  CLI::Option* slope_option = app.add_option("--slope", slope, "ramp speed, mm/s")->check(finite_value)->capture_default_str()->group(ref);
+  CLI::Option* amplitude_option = app.add_option("--amplitude", amplitude, "sine amplitude or step height, mm")->check(tk::cli::range_check(-1e4, 1e4))->capture_default_str()->type_name("MM")->group(ref);
+  CLI::Option* omega_option = app.add_option("--omega", omega, "sine frequency, rad/s")->check(tk::cli::range_check(0, 1e6))->capture_default_str()->group(ref);
+  CLI::Option* slope_option = app.add_option("--slope", slope, "ramp speed, mm/s")->check(tk::cli::range_check(-1e5, 1e5))->capture_default_str()->group(ref);
   CLI::Option* start_option = app.add_option("--start", step_at, "step or ramp start, s")->check(finite_value)->capture_default_str()->type_name("S")->group(ref);
   for (CLI::Option* shape : {reference_option, amplitude_option, omega_option, slope_option, start_option}) file_option->excludes(shape);
 
   app.add_flag("--no-cut", no_cut, "no cutting force")->group(cut);
   app.add_option("--teeth", c.cut.teeth, "flutes")->check(tk::cli::count_check(1, 64))->capture_default_str()->group(cut);
-  app.add_option("--tool-diameter", c.cut.diameter_mm, "mm")->check(positive)->capture_default_str()->group(cut);
-  app.add_option("--spindle", c.cut.spindle_rpm, "spindle speed, rpm")->check(positive)->capture_default_str()->group(cut);
-  app.add_option("--axial-depth", c.cut.axial_depth_mm, "mm")->check(positive)->capture_default_str()->group(cut);
-  app.add_option("--radial-depth", c.cut.radial_depth_mm, "mm (up-milling); default a full slot")->check(positive)->group(cut);
-  app.add_option("--feed", c.cut.feed_mm_min, "mm/min")->check(non_negative)->capture_default_str()->group(cut);
+  app.add_option("--tool-diameter", c.cut.diameter_mm, "mm")->check(tk::cli::range_check(0.01, 100))->capture_default_str()->group(cut);
+  app.add_option("--spindle", c.cut.spindle_rpm, "spindle speed, rpm")->check(tk::cli::range_check(1, 1e6))->capture_default_str()->group(cut);
+  app.add_option("--axial-depth", c.cut.axial_depth_mm, "mm")->check(tk::cli::range_check(1e-4, 100))->capture_default_str()->group(cut);
+  app.add_option("--radial-depth", c.cut.radial_depth_mm, "mm (up-milling); default a full slot")->check(tk::cli::range_check(1e-4, 100))->group(cut);
+  app.add_option("--feed", c.cut.feed_mm_min, "mm/min")->check(tk::cli::range_check(0, 1e5))->capture_default_str()->group(cut);
   app.add_option("--ktc", c.cut.ktc_n_mm2, "tangential shear coefficient, N/mm²")->check(finite_value)->capture_default_str()->group(cut);
   app.add_option("--krc", c.cut.krc_n_mm2, "radial shear coefficient, N/mm²")->check(finite_value)->capture_default_str()->group(cut);
   app.add_option("--kte", c.cut.kte_n_mm, "tangential edge coefficient, N/mm")->check(finite_value)->capture_default_str()->group(cut);
   app.add_option("--kre", c.cut.kre_n_mm, "radial edge coefficient, N/mm")->check(finite_value)->capture_default_str()->group(cut);
 
-  app.add_option("--duration", c.duration_s, "simulated time, s")->check(positive)->capture_default_str()->type_name("S")->group(sim);
-  app.add_option("--period", c.period_s, "control period, s")->check(positive)->capture_default_str()->type_name("S")->group(sim);
+  app.add_option("--duration", c.duration_s, "simulated time, s")->check(tk::cli::range_check(1e-6, 1e5))->capture_default_str()->type_name("S")->group(sim);
+  app.add_option("--period", c.period_s, "control period, s")->check(tk::cli::range_check(1e-7, 1))->capture_default_str()->type_name("S")->group(sim);
   app.add_option("--substeps", c.substeps, "exact plant steps per control period")->check(tk::cli::count_check(1, 100000))->capture_default_str()->type_name("N")->group(sim);
-  app.add_option("--encoder", c.encoder_mm, "encoder resolution, mm (0: none)")->check(non_negative)->capture_default_str()->type_name("MM")->group(sim);
-  app.add_option("--position-filter", c.position_filter_hz, "low-pass on the position estimate, Hz (0: none)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(sim);
-  app.add_option("--velocity-filter", c.velocity_filter_hz, "low-pass on the velocity estimate, Hz (0: none)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(sim);
+  app.add_option("--encoder", c.encoder_mm, "encoder resolution, mm (0: none)")->check(tk::cli::range_check(0, 1))->capture_default_str()->type_name("MM")->group(sim);
+  app.add_option("--position-filter", c.position_filter_hz, "low-pass on the position estimate, Hz (0: none)")->check(tk::cli::range_check(0, 1e7))->capture_default_str()->type_name("HZ")->group(sim);
+  app.add_option("--velocity-filter", c.velocity_filter_hz, "low-pass on the velocity estimate, Hz (0: none)")->check(tk::cli::range_check(0, 1e7))->capture_default_str()->type_name("HZ")->group(sim);
   app.add_option("--units", units, "mm: gains in kg·mm/s² (mN); m: in newtons (see smcsim(1), UNITS)")->check(CLI::IsMember({"mm", "m"}))->capture_default_str()->group(sim);
   app.add_option("--initial-position", c.initial_position_mm, "x(0), mm (default: on the reference)")->check(finite_value)->type_name("MM")->group(sim);
   app.add_option("--initial-velocity", c.initial_velocity_mm_s, "ẋ(0), mm/s (default: the reference's)")->check(finite_value)->type_name("MM/S")->group(sim);
@@ -260,7 +276,7 @@ int main(int argc, char** argv) {
   app.add_flag("--summary", summary_only, "one summary record instead of the time series")->group(out);
   app.add_option("--every", every, "a time-series record every N control periods")->check(tk::cli::count_check(1, 1000000000000))->capture_default_str()->type_name("N")->group(out);
   app.add_option("--settle", c.settle_s, "summary figures from this time on, s")->check(non_negative)->capture_default_str()->type_name("S")->group(out);
-  app.add_option("--hf-cutoff", c.hf_cutoff_hz, "hf_share: share of F's power above this, Hz (0: not computed)")->check(non_negative)->capture_default_str()->type_name("HZ")->group(out);
+  app.add_option("--hf-cutoff", c.hf_cutoff_hz, "hf_share: share of F's power above this, Hz (0: not computed)")->check(tk::cli::range_check(0, 1e7))->capture_default_str()->type_name("HZ")->group(out);
   app.add_option("--svg", svg_path, "the paper's four panels (position, errors, control) as SVG")->type_name("FILE")->group(out);
   CLI::App* sweep = app.add_subcommand("sweep", "one summary record per gain setting (--Lambda, or --alpha and --beta, as FROM:TO:STEP), on -j threads");
   sweep->fallthrough();

@@ -57,7 +57,9 @@ struct ControllerOptions {
         ->capture_default_str();
     sub.add_option("--centroid", centroid, "exact, or discrete[:N] (fuzzylite's, N samples, default 100)")
         ->type_name("KIND");
-    sub.add_option("--speed-factor", speed_factor, "scales the motor terms (the paper: 1.92 first, 2.0 in its Tables 1-2)")->capture_default_str();
+    sub.add_option("--speed-factor", speed_factor, "scales the motor terms (the paper: 1.92 first, 2.0 in its Tables 1-2)")
+        ->check(cli::range_check(0.1, 10))
+        ->capture_default_str();
     sub.add_option("--backward-slowly", backward_slowly, "BACKWARD_SLOWLY's corners before scaling")
         ->capture_default_str()
         ->type_name("A,B,C,D");
@@ -66,6 +68,7 @@ struct ControllerOptions {
         ->capture_default_str();
     sub.add_option("--fll", fll_path, "use this fuzzylite FLL controller instead of the paper's")->type_name("FILE");
     sub.add_option("--fire-threshold", fire_threshold, "rules fire from this activation on (fuzzylite: 1e-6)")
+        ->check(cli::range_check(0, 1))
         ->capture_default_str()
         ->type_name("X");
   }
@@ -132,7 +135,6 @@ struct ControllerOptions {
   }
 
   fuzzy::Mamdani controller(const fuzzy::Engine& e) const {
-    if (!(fire_threshold >= 0 && fire_threshold <= 1)) throw UsageError("--fire-threshold must be in [0, 1]");
     fuzzy::Mamdani m(e);
     m.set_fire_threshold(fire_threshold);
     return m;
@@ -180,7 +182,6 @@ void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
 }
 
 void run_bench(cli::ToolApp& tool, const ControllerOptions& options, double seconds) {
-  if (!(seconds > 0) || seconds > 3600) throw UsageError("--seconds must be above 0 and at most 3600");
   io::RecordWriter writer(tool.output_format());
   const auto triples = fuzzy::protocol_triples(options.adc_bits);
   for (TNorm t : options.chosen_tnorms(true)) {
@@ -219,43 +220,54 @@ struct LapsOptions {
   CLI::Option *latency_option = nullptr, *noise_option = nullptr;
 };
 
-/// The car for an ADC of `adc_bits` with the car options applied.
+/// The car for an ADC of `adc_bits` with the car options applied (their
+/// ranges were checked as they were parsed).
 vehicle::CarParameters car_from(const LapsOptions& laps, int adc_bits) {
   vehicle::CarParameters car = vehicle::CarParameters::with_adc_bits(adc_bits);
-  const auto take = [](double value, double& field, const char* option, bool zero_ok) {
-    if (!std::isfinite(value) || value < 0 || (!zero_ok && value == 0) || value > 10000)
-      throw UsageError(fmt::format("{} must be {} and at most 10000", option, zero_ok ? "0 or more" : "above 0"));
-    field = value;
-  };
-  if (laps.noise_option->count() > 0) take(laps.noise, car.noise_counts, "--noise", true);
-  take(laps.car.sensor_spacing_mm, car.sensor_spacing_mm, "--sensor-spacing", false);
-  take(laps.car.spot_sigma_mm, car.spot_sigma_mm, "--spot-sigma", true);
-  take(laps.motor_tau_ms, car.motor_tau_s, "--motor-tau-ms", true);
-  car.motor_tau_s /= 1000;
-  take(laps.car.deadband_units, car.deadband_units, "--deadband", true);
-  take(laps.car.mm_per_s_per_unit, car.mm_per_s_per_unit, "--speed-per-unit", false);
-  take(laps.car.wheel_base_mm, car.wheel_base_mm, "--wheel-base", false);
-  take(laps.car.sensor_ahead_mm, car.sensor_ahead_mm, "--sensor-ahead", true);
+  if (laps.noise_option->count() > 0) car.noise_counts = laps.noise;
+  car.sensor_spacing_mm = laps.car.sensor_spacing_mm;
+  car.spot_sigma_mm = laps.car.spot_sigma_mm;
+  car.motor_tau_s = laps.motor_tau_ms / 1000;
+  car.deadband_units = laps.car.deadband_units;
+  car.mm_per_s_per_unit = laps.car.mm_per_s_per_unit;
+  car.wheel_base_mm = laps.car.wheel_base_mm;
+  car.sensor_ahead_mm = laps.car.sensor_ahead_mm;
   return car;
 }
 
+/// The most simulation steps (physics steps and control samples, every
+/// t-norm together) and trace points one laps run may take (tnorm-bench(1)):
+/// about 2 min and 100 MB.
+constexpr double kMaxLapSteps = 1e8, kMaxLapTracePoints = 1e6;
+
+/// Refuses a run whose simulated time and steps imply more than the caps.
+void check_laps_size(const LapsOptions& laps, const std::vector<double>& latencies_ms, bool tracing) {
+  const vehicle::LapOptions defaults;
+  double steps = 0;
+  for (double latency_ms : latencies_ms) {
+    const double period_s = laps.period_ms > 0 ? laps.period_ms / 1000 : latency_ms > 0 ? latency_ms / 1000 : defaults.physics_step_s;
+    steps += laps.time_limit * (1 / defaults.physics_step_s + 2 / period_s);  // a sample and a command per period
+  }
+  cli::require_run_size(steps, kMaxLapSteps, "simulation steps", "--time-limit, --period-ms, --latency-ms and --tnorm");
+  if (tracing)
+    cli::require_run_size(laps.time_limit / defaults.trace_interval_s * static_cast<double>(latencies_ms.size()),
+                          kMaxLapTracePoints, "trace points (one per 10 ms)", "--svg or --trace with --time-limit and --tnorm");
+}
+
 void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOptions& laps) {
-  if (laps.laps < 1 || laps.laps > 1000) throw UsageError("--laps must be from 1 to 1000");
   const bool latency_given = laps.latency_option->count() > 0;
-  // A loop under 10 us (the paper's fastest is 313 us) only stretches the
-  // run: at 1e-12 ms, 120 s of it would take 1.2e17 loops.
-  const auto loop_ms_ok = [](double ms) { return ms == 0 || (ms >= 0.01 && ms <= 1000); };
-  if (latency_given && !loop_ms_ok(laps.latency_ms)) throw UsageError("--latency-ms must be 0 or from 0.01 to 1000");
   const fuzzy::Board board = laps.board == "esp32" ? fuzzy::Board::esp32 : fuzzy::Board::uno;
   if (options.adc_option && options.adc_option->count() > 0 && options.adc_bits != fuzzy::board_adc_bits(board))
     throw UsageError(fmt::format("--adc {} contradicts --board {} ({} bits)", options.adc_bits, laps.board,
                                  fuzzy::board_adc_bits(board)));
   ControllerOptions controller_options = options;
   controller_options.adc_bits = fuzzy::board_adc_bits(board);
-  if (!loop_ms_ok(laps.period_ms)) throw UsageError("--period-ms must be 0 or from 0.01 to 1000");
-  if (!(laps.time_limit > 0) || laps.time_limit > 36000) throw UsageError("--time-limit must be above 0, at most 36000 s");
+  std::vector<double> latencies_ms;
+  for (TNorm t : controller_options.chosen_tnorms(false))
+    latencies_ms.push_back(latency_given ? laps.latency_ms
+                                         : fuzzy::paper_ms_per_2x1024(board, controller_options.engine(t).rule_block.conjunction) / 1024);
+  check_laps_size(laps, latencies_ms, !laps.svg_path.empty() || !laps.trace_path.empty());
   vehicle::Track track = [&] {
-    if (!(laps.line_width > 0) || laps.line_width > 500) throw UsageError("--line-width must be above 0 and at most 500 mm");
     if (!laps.track_path.empty()) return vehicle::read_track(laps.track_path, laps.line_width);
     std::vector<double> oval;
     try {
@@ -263,7 +275,8 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
     } catch (const Error& e) {
       throw UsageError(e.what());
     }
-    if (!(oval[0] >= 0) || !(oval[1] > 0)) throw UsageError("--oval: straight >= 0 and radius > 0, mm");
+    cli::require_range(oval[0], 0, 1e5, "--oval (straight, mm)");
+    cli::require_range(oval[1], 10, 1e5, "--oval (radius, mm)");  // a chord per 5 mm of the bends
     return vehicle::oval_track(oval[0], oval[1], laps.line_width);
   }();
   const vehicle::CarParameters car = car_from(laps, controller_options.adc_bits);
@@ -371,12 +384,12 @@ int main(int argc, char** argv) {
   double seconds = 0.5;
   CLI::App* bench = app.add_subcommand("bench", "time the inference per t-norm: one record each");
   bench_options.add_to(*bench, true);
-  bench->add_option("--seconds", seconds, "CPU time per t-norm")->capture_default_str()->type_name("S");
+  bench->add_option("--seconds", seconds, "CPU time per t-norm")->check(cli::range_check(0.001, 3600))->capture_default_str()->type_name("S");
 
   LapsOptions laps;
   CLI::App* lap = app.add_subcommand("laps", "drive a simulated car round a track: one record per t-norm");
   laps_options.add_to(*lap, true);
-  lap->add_option("--laps", laps.laps, "laps to complete")->capture_default_str();
+  lap->add_option("--laps", laps.laps, "laps to complete")->check(cli::count_check(1, 1000))->capture_default_str();
   lap->add_option("--board", laps.board, "uno or esp32: the ADC, and each t-norm's loop time from the paper's Tables 3-4")
       ->check(CLI::IsMember({"uno", "esp32"}))
       ->capture_default_str();
@@ -384,46 +397,51 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"stop", "hold"}))
       ->capture_default_str();
   // An empty or garbled number is a usage error here, not CLI11's silent 0.
-  const CLI::Validator non_negative = cli::number_check(cli::NumberDomain::non_negative),
-                       positive = cli::number_check(cli::NumberDomain::positive);
+  // A loop under 10 us (the paper's fastest is 313 us) only stretches the run.
+  const CLI::Validator loop_ms = cli::range_check(0.01, 1000, cli::ZeroAllowed::yes);
   laps.latency_option = lap->add_option("--latency-ms", laps.latency_ms, "sampling to command taking effect, for every t-norm (default: the board's)")
-      ->check(non_negative)
+      ->check(loop_ms)
       ->type_name("MS");
   lap->add_option("--period-ms", laps.period_ms, "control period (0: the latency, a loop that runs back to back)")
-      ->check(non_negative)
+      ->check(loop_ms)
       ->capture_default_str()
       ->type_name("MS");
-  lap->add_option("--time-limit", laps.time_limit, "give up after this many simulated seconds")->capture_default_str();
+  lap->add_option("--time-limit", laps.time_limit, "give up after this many simulated seconds")
+      ->check(cli::range_check(0.01, 36000))
+      ->capture_default_str();
   lap->add_option("--track", laps.track_path, "centre line as records with x, y in mm (a closed loop)")->type_name("FILE");
   lap->add_option("--oval", laps.oval, "the default track: straight length and radius, mm")
       ->capture_default_str()
       ->type_name("L,R");
-  lap->add_option("--line-width", laps.line_width, "width of the line (tape), mm")->capture_default_str()->type_name("MM");
+  lap->add_option("--line-width", laps.line_width, "width of the line (tape), mm")
+      ->check(cli::range_check(1, 500))
+      ->capture_default_str()
+      ->type_name("MM");
   lap->add_option("--svg", laps.svg_path, "draw the track and each t-norm's path")->type_name("FILE");
   lap->add_option("--trace", laps.trace_path, "write the runs' time series (t, x, y, readings, commands)")->type_name("FILE");
   lap->add_option("--seed", laps.seed, "seed of the sensor noise")->capture_default_str();
   laps.noise_option =
       lap->add_option("--noise", laps.noise, "sensor noise, ADC counts (standard deviation; default the car's, 3 at 10 bits)")
-          ->check(non_negative)
+          ->check(cli::range_check(0, 4096))  // a 12-bit ADC's full scale
           ->type_name("COUNTS");
   struct CarOption {
     const char* name;
     double* value;
     const char* help;
     const char* unit;
-    bool zero_ok;
+    double low, high;
   };
   const CarOption car_options[] = {
-      {"--sensor-spacing", &laps.car.sensor_spacing_mm, "mid sensor to each outer one, mm", "MM", false},
-      {"--spot-sigma", &laps.car.spot_sigma_mm, "the sensors' spot on the floor, Gaussian sigma, mm", "MM", true},
-      {"--sensor-ahead", &laps.car.sensor_ahead_mm, "sensor bar ahead of the axle, mm", "MM", true},
-      {"--wheel-base", &laps.car.wheel_base_mm, "distance between the wheels, mm", "MM", false},
-      {"--motor-tau-ms", &laps.motor_tau_ms, "wheel speed's first-order lag behind the command, ms", "MS", true},
-      {"--deadband", &laps.car.deadband_units, "command a wheel needs to turn", "UNITS", true},
-      {"--speed-per-unit", &laps.car.mm_per_s_per_unit, "wheel speed per command unit above that, mm/s", "MM/S", false},
+      {"--sensor-spacing", &laps.car.sensor_spacing_mm, "mid sensor to each outer one, mm", "MM", 1, 500},
+      {"--spot-sigma", &laps.car.spot_sigma_mm, "the sensors' spot on the floor, Gaussian sigma, mm", "MM", 0, 100},
+      {"--sensor-ahead", &laps.car.sensor_ahead_mm, "sensor bar ahead of the axle, mm", "MM", 0, 1000},
+      {"--wheel-base", &laps.car.wheel_base_mm, "distance between the wheels, mm", "MM", 10, 1000},
+      {"--motor-tau-ms", &laps.motor_tau_ms, "wheel speed's first-order lag behind the command, ms", "MS", 0, 10000},
+      {"--deadband", &laps.car.deadband_units, "command a wheel needs to turn", "UNITS", 0, 10000},
+      {"--speed-per-unit", &laps.car.mm_per_s_per_unit, "wheel speed per command unit above that, mm/s", "MM/S", 0.001, 1000},
   };
   for (const CarOption& o : car_options)
-    lap->add_option(o.name, *o.value, o.help)->check(o.zero_ok ? non_negative : positive)->capture_default_str()->type_name(o.unit);
+    lap->add_option(o.name, *o.value, o.help)->check(cli::range_check(o.low, o.high))->capture_default_str()->type_name(o.unit);
 
   CLI::App* fll = app.add_subcommand("fll", "write the controller as fuzzylite FLL");
   fll_options.add_to(*fll, false);
