@@ -179,7 +179,7 @@ void write_region_svg(const std::string& path, const SvgLayers& layers) {
       svg += fmt::format("<circle cx=\"{:.6g}\" cy=\"{:.6g}\" r=\"{:.3g}\" fill=\"none\" stroke=\"red\" stroke-width=\"{:.3g}\"/>\n",
                          end.at.x, end.at.y, 6 * stroke, stroke);
   svg += "</g>\n</svg>\n";
-  io::write_file_atomically(path, svg, path + ".tmp");
+  io::write_file_atomically(path, svg);
 }
 
 }  // namespace tk::cad

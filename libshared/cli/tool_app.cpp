@@ -55,6 +55,11 @@ void ToolApp::warn(const std::string& message) const {
 
 int ToolApp::run(int argc, char** argv, const std::function<void()>& body) {
   std::signal(SIGPIPE, SIG_DFL);
+  // Room for a long record (a loop's polyline) in one write: RecordWriter
+  // flushes on record boundaries, and the default 4 KiB buffer would send a
+  // longer record in two writes, which a kill can part. Before any output.
+  static char stdout_buffer[1 << 16];
+  if (!isatty(STDOUT_FILENO)) std::setvbuf(stdout, stdout_buffer, _IOFBF, sizeof stdout_buffer);
   auto usage_error = [&](const std::string& message) {
     std::fflush(stdout);
     std::fprintf(stderr, "%s: %s\nTry '%s --help' for more information.\n", name_.c_str(),

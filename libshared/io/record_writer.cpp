@@ -1,6 +1,7 @@
 /// @file record_writer.cpp
 #include "io/record_writer.hpp"
 
+#include <stdio_ext.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -54,17 +55,38 @@ Record cell_value(const Cell& cell) {
   return nullptr;
 }
 
+RecordWriter::~RecordWriter() {
+  try {
+    write_pending();  // records decided before an error stay written
+  } catch (const Error&) {
+  }
+}
+
 void RecordWriter::emit(const std::string& text) {
-  if (std::fwrite(text.data(), 1, text.size(), out_) != text.size())
-    throw Error(std::string("write error: ") + std::strerror(errno));
+  if (pending_.size() + text.size() > kWriteChunk) write_pending();
+  pending_ += text;
   const double now = coarse_now();
   if (interactive_ || now - last_flush_ > 0.2) {
     flush();
     last_flush_ = now;
+  } else if (pending_.size() >= kWriteChunk) {
+    write_pending();
   }
 }
 
+void RecordWriter::write_pending() {
+  if (pending_.empty()) return;
+  if (__fpending(out_) != 0 && std::fflush(out_) != 0)  // bytes someone else wrote go first, on their own
+    throw Error(std::string("write error: ") + std::strerror(errno));
+  const std::size_t size = pending_.size();
+  const bool written = std::fwrite(pending_.data(), 1, size, out_) == size;
+  pending_.clear();  // not again from the destructor after an error
+  // The stream's buffer gets whole records only and hands them on at once.
+  if (!written || std::fflush(out_) != 0) throw Error(std::string("write error: ") + std::strerror(errno));
+}
+
 void RecordWriter::flush() {
+  write_pending();
   if (std::fflush(out_) != 0) throw Error(std::string("write error: ") + std::strerror(errno));
 }
 
@@ -187,20 +209,16 @@ void RecordWriter::write_row(std::span<const Cell> cells) {
 
 namespace tk::io {
 
-RecordFile::RecordFile(const std::string& path, OutputFormat format) : path_(path), file_(std::fopen(path.c_str(), "w")) {
-  if (!file_) throw Error(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
-  writer_ = std::make_unique<RecordWriter>(format, file_);
-}
+RecordFile::RecordFile(const std::string& path, OutputFormat format)
+    : file_(path), writer_(std::make_unique<RecordWriter>(format, file_.stream())) {}
 
-RecordFile::~RecordFile() {
-  if (file_) std::fclose(file_);
-}
+RecordFile::~RecordFile() = default;
 
 void RecordFile::write(const Record& record) {
   try {
     writer_->write(record);
   } catch (const Error& e) {
-    throw Error(fmt::format("{}: {}", path_, e.what()));
+    throw Error(e.what(), Location{file_.path(), 0});
   }
 }
 
@@ -208,7 +226,7 @@ void RecordFile::write_numbers(std::span<const double> values, std::uint64_t int
   try {
     writer_->write_numbers(values, integers);
   } catch (const Error& e) {
-    throw Error(fmt::format("{}: {}", path_, e.what()));
+    throw Error(e.what(), Location{file_.path(), 0});
   }
 }
 
@@ -216,11 +234,9 @@ void RecordFile::close() {
   try {
     writer_->flush();
   } catch (const Error& e) {
-    throw Error(fmt::format("{}: {}", path_, e.what()));
+    throw Error(e.what(), Location{file_.path(), 0});
   }
-  const int status = std::fclose(file_);
-  file_ = nullptr;
-  if (status != 0) throw Error(fmt::format("cannot write {}: {}", path_, std::strerror(errno)));
+  file_.commit();
 }
 
 }  // namespace tk::io

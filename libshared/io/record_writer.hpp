@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/atomic_file.hpp"
 #include "io/record.hpp"
 
 namespace tk::io {
@@ -35,10 +36,21 @@ struct Cell {
 /// object. CSV takes its columns from the first record plus the fields the
 /// tool declares, so records that lack an optional field still line up.
 /// Output is buffered but flushed at least every 0.2 s (and per record on a
-/// terminal) so slow pipelines show results as they come.
+/// terminal) so slow pipelines show results as they come. The buffer hands
+/// the stream whole records, at most kWriteChunk bytes at a time (one
+/// record when it is longer), flushed at once: a process killed at any
+/// moment leaves whole lines, and a pipe gets each chunk in one piece
+/// (POSIX makes writes of up to PIPE_BUF bytes atomic). A longer record is
+/// one write when the stream's buffer holds it (ToolApp gives stdout 64 KiB).
 class RecordWriter {
  public:
+  static constexpr std::size_t kWriteChunk = 4096;  ///< PIPE_BUF on Linux
+
   explicit RecordWriter(OutputFormat format, std::FILE* out = stdout);
+  /// Writes the records still buffered (errors ignored: see flush()).
+  ~RecordWriter();
+  RecordWriter(const RecordWriter&) = delete;
+  RecordWriter& operator=(const RecordWriter&) = delete;
 
   /// Fields the tool may add to records, in output order.
   void declare_fields(std::vector<std::string> names);
@@ -64,6 +76,8 @@ class RecordWriter {
   template <class AppendCell>
   void write_declared(std::size_t count, const AppendCell& append);
   void emit(const std::string& text);
+  /// The buffered records to the stream, flushed; Error on a write failure.
+  void write_pending();
 
   OutputFormat format_;
   std::FILE* out_;
@@ -72,15 +86,19 @@ class RecordWriter {
   std::vector<std::string> json_keys_;  ///< the declared names as JSON keys, "name": (escaped), for the fast paths
   std::vector<std::string> columns_;
   std::string line_;
+  std::string pending_;  ///< whole records not yet handed to out_
   double last_flush_ = 0;  ///< seconds, CLOCK_MONOTONIC_COARSE
 };
 
 /// Records in a file of their own beside the main output (a trace of a
-/// simulation): the same formats, every error naming the file.
+/// simulation): the same formats, every error naming the file. The file
+/// appears when close() succeeds, whole (an AtomicFile): until then, and
+/// after an error or a kill, `path` keeps what it held before.
 class RecordFile {
  public:
-  /// Creates or truncates `path`; Error when it cannot be written.
+  /// Error naming `path` when it cannot be written.
   RecordFile(const std::string& path, OutputFormat format);
+  /// Without close(): the records are dropped and `path` is left as it was.
   ~RecordFile();
   RecordFile(const RecordFile&) = delete;
   RecordFile& operator=(const RecordFile&) = delete;
@@ -88,13 +106,12 @@ class RecordFile {
   void declare_fields(std::vector<std::string> names) { writer_->declare_fields(std::move(names)); }
   void write(const Record& record);
   void write_numbers(std::span<const double> values, std::uint64_t integers);
-  /// Flushes and closes the file; Error naming it on a write failure.
+  /// Flushes, syncs and puts the file in place; Error naming it on a write failure.
   void close();
 
  private:
-  std::string path_;
-  std::FILE* file_;
-  std::unique_ptr<RecordWriter> writer_;
+  AtomicFile file_;
+  std::unique_ptr<RecordWriter> writer_;  ///< after file_: destroyed before it
 };
 
 /// A record field as CSV cell text: strings raw, numbers and booleans as in

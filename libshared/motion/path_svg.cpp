@@ -106,7 +106,7 @@ void PathSvg::write(const std::string& path) const {
   svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#c8281e\" stroke-width=\"{:.6g}\"/>\n",
                      path_data(stepped_, stepped_breaks_, window_), stroke);
   svg += "</svg>\n";
-  io::write_file_atomically(path, svg, path + ".tmp");
+  io::write_file_atomically(path, svg);
 }
 
 }  // namespace tk::motion

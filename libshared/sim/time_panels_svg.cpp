@@ -201,12 +201,7 @@ std::string time_panels_svg(const TimePanelsPlot& plot) {
 }
 
 void write_time_panels_svg(const std::string& path, const TimePanelsPlot& plot) {
-  const std::string svg = time_panels_svg(plot);
-  try {
-    io::write_file_atomically(path, svg, path + ".tmp");
-  } catch (const Error& e) {  // it names the temporary when that cannot be made
-    throw Error(e.what(), Location{path, 0});
-  }
+  io::write_file_atomically(path, time_panels_svg(plot));
 }
 
 }  // namespace tk::sim

@@ -73,7 +73,7 @@ void write_lap_svg(const std::string& path, const Track& track, const std::vecto
                        margin + 2.5 * legend_row, y, 0.7 * legend_row, sim::xml_escape(runs[r].first));
   }
   svg += "</svg>\n";
-  io::write_file_atomically(path, svg, path + ".tmp");
+  io::write_file_atomically(path, svg);
 }
 
 }  // namespace tk::vehicle

@@ -312,7 +312,7 @@ TEST(RecordFile, WritesBothFormatsAndNamesTheFileOnErrors) {
     tk::io::RecordFile bad("/nonexistent-dir/trace.jsonl", tk::io::OutputFormat::json_lines);
     FAIL() << "no error";
   } catch (const tk::Error& e) {
-    EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/trace.jsonl"), std::string::npos) << e.what();
+    EXPECT_EQ(e.located_message().rfind("/nonexistent-dir/trace.jsonl: ", 0), 0u) << e.located_message();
   }
 }
 

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
                         "per lattice move (t, dx, dy, dz), or a summary of them.",
                         "See gcode-pulse(1).");
   std::string steps = "200,200,400", method = "nearest", svg_path, window_text, machine_file, axis_max_feed, axis_accel,
-              start;
+              start, verify_path;
   bool summary_only = false, lenient = false, binary = false;
   double accel = 500, rapid = 5000, max_feed = 0, junction_deviation = 0.01;
   std::size_t lookahead = 256;
@@ -51,6 +51,9 @@ int main(int argc, char** argv) {
       ->type_name("NAME");
   app.add_flag("--summary", summary_only, "write one summary record instead of the pulses");
   app.add_flag("--binary", binary, "write the pulses in the compact binary form (see gcode-pulse(1))");
+  app.add_option("--verify-binary", verify_path,
+                 "check that FILE is a complete --binary stream and write one record of what it holds")
+      ->type_name("FILE");
   app.add_flag("--lenient", lenient, "skip words that change motion but cannot be honoured (G41, canned cycles...) with a warning");
   app.add_option("--svg", svg_path, "draw the ideal and the stepped path in the XY plane (needs --window)")
       ->type_name("FILE");
@@ -73,6 +76,13 @@ int main(int argc, char** argv) {
   tool.add_input_files("G-code files, run one after another; standard input when none or '-'");
 
   return tool.run(argc, argv, [&] {
+    if (!verify_path.empty()) {
+      if (!tool.common().inputs.empty()) throw tk::UsageError("--verify-binary reads no G-code");
+      tk::io::RecordWriter writer(tool.output_format());
+      writer.write(tk::motion::pulse_stream_record(verify_path, tk::motion::read_pulse_binary(verify_path)));
+      writer.flush();
+      return;
+    }
     // The machine file first, then whatever the command line gives.
     tk::motion::MachineSettings settings;
     if (!machine_file.empty()) settings = tk::motion::read_machine_file(machine_file);
@@ -167,7 +177,7 @@ int main(int argc, char** argv) {
       record["unused_words"] = tool.output_format() == tk::io::OutputFormat::csv ? tk::Record(unused.dump()) : unused;
       writer.write(record);
     }
-    if (binary_writer) binary_writer->flush();
+    if (binary_writer) binary_writer->finish();
     writer.flush();
   });
 }
