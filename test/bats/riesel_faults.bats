@@ -1,0 +1,246 @@
+#!/usr/bin/env bats
+# Fault injection for riesel --state: kills at random moments, damaged
+# journal lines and crafted checkpoints. Verdicts are held against PARI/GP's
+# isprime, never against riesel's own earlier output.
+
+bats_require_minimum_version 1.5.0
+
+setup() {
+  load test_helper
+  cd "$BATS_TEST_TMPDIR"
+  command -v gp > /dev/null || skip "PARI/GP (pari-gp) is not installed"
+}
+
+# candidates COUNT SEED > in.txt: k*2^n+-1 with k odd below 2^n, n from 40 to
+# 130, about a third of them prime (chosen with gp), in a shuffled order.
+candidates() {
+  python3 - "$1" "$2" <<'PY' > pool.txt
+import random, sys
+rng = random.Random(int(sys.argv[2]))
+seen = set()
+while len(seen) < 12 * int(sys.argv[1]):
+    n = rng.randrange(40, 131)
+    k = rng.randrange(1, 4000) | 1
+    seen.add(f"{k}*2^{n}{rng.choice(['-1', '+1'])}")
+print("\n".join(sorted(seen)))
+PY
+  gp_verdicts < pool.txt > pool.verdicts
+  python3 - "$1" "$2" <<'PY'
+import random, sys
+count, rng = int(sys.argv[1]), random.Random(int(sys.argv[2]))
+pool = list(zip(open("pool.txt").read().split(), open("pool.verdicts").read().split()))
+primes = [n for n, v in pool if v == "prime"][: count // 3]
+composites = [n for n, v in pool if v == "composite"][: count - len(primes)]
+chosen = primes + composites
+rng.shuffle(chosen)
+print("\n".join(chosen))
+PY
+}
+
+# gp_verdicts < numbers: "prime" or "composite" per line, by PARI's isprime.
+gp_verdicts() {
+  sed -E 's/.*/print(if(isprime(&),"prime","composite"))/' | gp -q -f
+}
+
+# lresults_verdicts FILE: "NUMBER prime|composite" per lresults.txt line.
+lresults_verdicts() {
+  sed -E 's/^([^ ]+) is prime!.*/\1 prime/; s/^([^ ]+) is not prime\..*/\1 composite/' "$1"
+}
+
+@test "kill -9 and SIGTERM at random moments, then a run to the end: every number logged once, journal and output agree, PARI's verdicts" {
+  candidates 240 21 > in.txt
+  paste -d' ' in.txt <(gp_verdicts < in.txt) | sort > want.txt
+  grep -q ' prime$' want.txt && grep -q ' composite$' want.txt
+  RANDOM=21
+  kills=0
+  for round in $(seq 1 18); do
+    riesel --state st in.txt > "out.$round" 2> "err.$round" 3>&- &
+    pid=$!
+    # 20 to 150 ms: some kills land in a proof, some between the files' appends.
+    sleep "0.$(printf '%03d' $((20 + RANDOM % 130)))"
+    signal=KILL
+    [ $((round % 4)) -eq 0 ] && signal=TERM
+    kill -"$signal" "$pid" 2> /dev/null && kills=$((kills + 1))
+    status=0
+    wait "$pid" || status=$?
+    # Killed (137, 143) or finished before the signal (0); nothing else.
+    [[ " 0 137 143 " == *" $status "* ]] || { echo "round $round: exit $status"; cat "err.$round"; false; }
+  done
+  echo "kills: $kills"
+  [ "$kills" -ge 15 ]
+  # The run to the end.
+  run --separate-stderr timeout 120 riesel --state st in.txt
+  assert_success
+  echo "$output" > final.out
+  # Output: one record per input line, in order, with PARI's verdict.
+  run python3 -c '
+import json, sys
+want = dict(line.split() for line in open("want.txt"))
+numbers = open("in.txt").read().split()
+records = [json.loads(line) for line in open("final.out")]
+assert len(records) == len(numbers), (len(records), len(numbers))
+for number, record in zip(numbers, records):
+    assert record["verdict"] == want[number], (number, record)
+print("ok")'
+  assert_output ok
+  # lresults.txt: each number exactly once, with PARI's verdict.
+  lresults_verdicts st/lresults.txt | sort > logged.txt
+  run uniq -d logged.txt
+  assert_output ""
+  run cmp logged.txt want.txt
+  assert_success
+  # The journal: one line per number with PARI's verdict, and its lresults.txt
+  # lines in order are the file's lines.
+  run python3 -c '
+import json
+want = dict(line.split() for line in open("want.txt"))
+lines = open("st/journal.tsv").read().split("\n")
+assert lines[-1] == ""
+fields = [line.split("\t") for line in lines[:-1]]
+outputs = [json.loads(f[1]) for f in fields]
+assert len(outputs) == len(want), (len(outputs), len(want))
+for key, output in zip(fields, outputs):
+    number = json.loads(key[0].split(" ", 1)[1])
+    number = "%d*2^%d%+d" % (number["k"], number["n"], number["c"])
+    assert output["verdict"] == want[number], (number, output)
+logged = [line for f in fields for line in json.loads(f[3])]
+assert logged == open("st/lresults.txt").read().splitlines(), "journal and lresults.txt differ"
+print("ok")'
+  assert_output ok
+}
+
+@test "a run killed after journaling a record but before lresults.txt: the next start writes its lines, once" {
+  printf '%s\n' '{"k":3,"b":2,"n":391,"c":-1}' '{"k":5,"b":2,"n":100,"c":-1}' '{"k":3,"n":2,"form":"cc1","length":3}' > in.txt
+  riesel --state st in.txt > /dev/null
+  cp st/lresults.txt whole.txt
+  # The form's three members, then all of its lines but the first, then half a line.
+  size=$(stat -c %s whole.txt)
+  last3=$(tail -n 3 whole.txt | wc -c)
+  last2=$(tail -n 2 whole.txt | wc -c)
+  for cut in "$last3" "$last2" 20; do
+    truncate -s $((size - cut)) st/lresults.txt
+    run --separate-stderr riesel --state st in.txt
+    assert_success
+    run cmp st/lresults.txt whole.txt
+    assert_success
+  done
+  # Against PARI: 3*2^391-1 prime, 5*2^100-1 composite, 5, 11, 23 prime.
+  run python3 -c 'print(open("whole.txt").read())'
+  assert_line --index 0 --regexp '^3\*2\^391-1 is prime! '
+  assert_line --index 1 --regexp '^5\*2\^100-1 is not prime\. '
+  [ "$(wc -l < whole.txt)" -eq 5 ]
+  printf 'print(isprime(3*2^391-1), isprime(5*2^100-1), isprime(5), isprime(11), isprime(23))\n' | gp -q > gp.txt
+  [ "$(cat gp.txt)" = "10111" ]
+}
+
+# checkpoint FILE MEMBER ITERATION RESIDUE: a checkpoint with a valid checksum.
+checkpoint() {
+  python3 - "$@" <<'PY'
+import sys
+def fnv1a(data):
+    h = 0xcbf29ce484222325
+    for b in data:
+        h = ((h ^ b) * 0x100000001b3) % 2**64
+    return h
+path, member, iteration, residue = sys.argv[1:]
+body = "riesel-checkpoint 1\n%s\n%s\n%s\n" % (member, iteration, residue)
+open(path, "w").write(body + "%016x\n" % fnv1a(body.encode()))
+PY
+}
+
+# checkpoint_file DIR MEMBER: where riesel keeps MEMBER's checkpoint.
+checkpoint_file() {
+  python3 -c '
+import sys
+h = 0xcbf29ce484222325
+for b in sys.argv[2].encode():
+    h = ((h ^ b) * 0x100000001b3) % 2**64
+print("%s/checkpoint-%016x" % (sys.argv[1], h))' "$1" "$2"
+}
+
+@test "crafted checkpoints with valid checksums (iteration outside the proof, residue not below N, another number's) restart the proof with a warning" {
+  printf 'print(isprime(3*2^391-1), isprime(3*2^353+1))\n' | gp -q > gp.txt
+  [ "$(cat gp.txt)" = "11" ]
+  llr_n=$(python3 -c 'print("%x" % (3 * 2**391 - 1))')
+  proth_n=$(python3 -c 'print("%x" % (3 * 2**353 + 1))')
+  plus5=$(python3 -c 'print("%x" % (3 * 2**391 - 1 + 5))')
+  # NUMBER ITERATION RESIDUE [MEMBER THE FILE NAMES]: 389 and 352 squarings in all.
+  cases=(
+    "3*2^391-1 99999999 5"
+    "3*2^391-1 -5 5"
+    "3*2^391-1 389 5"
+    "3*2^391-1 0 5"
+    "3*2^391-1 100 $llr_n"
+    "3*2^391-1 100 $plus5"
+    "3*2^391-1 100 -5"
+    "3*2^391-1 100 5 3*2^393-1"
+    "3*2^353+1 99999999 5"
+    "3*2^353+1 100 $proth_n"
+  )
+  for spec in "${cases[@]}"; do
+    read -r number iteration residue other <<< "$spec"
+    rm -rf st && mkdir st
+    checkpoint "$(checkpoint_file st "$number start=llr")" "${other:-$number} start=llr" "$iteration" "$residue"
+    run --separate-stderr riesel --state st <<< "$number"
+    assert_success
+    [ "$(json-field verdict <<< "$output")" = prime ] || { echo "$spec: $output"; false; }
+    [[ "$stderr" == *"checkpoint "*": proving $number from the start"* ]] || { echo "$spec: stderr '$stderr'"; false; }
+    grep -qF "$number is prime! " st/lresults.txt
+  done
+}
+
+# One bit flipped in a journal line: in the verdict ("prime" to "psime"),
+# the key, a tab, each later field, the checksum, the newline. Every byte
+# and bit is tried in-process by test_proof_journal.cpp; here the tool
+# itself must refuse the line and prove the record again.
+@test "a flipped bit in a journal line never replays a wrong verdict: the line is refused and the record proved again" {
+  printf '%s\n' '3*2^391-1' '5*2^100-1' > in.txt
+  printf 'print(if(isprime(3*2^391-1),"prime","composite"));print(if(isprime(5*2^100-1),"prime","composite"))\n' |
+    gp -q > want.txt
+  riesel --state base in.txt > /dev/null
+  run python3 - <<'PY'
+import json, shutil, subprocess
+want = open("want.txt").read().split()
+journal = open("base/journal.tsv", "rb").read()
+line = journal[: journal.index(b"\n") + 1]
+tabs = [i for i, byte in enumerate(line) if byte == 9]
+positions = {
+    line.index(b'"verdict":"prime"') + 12: 1,  # "prime" -> "psime"
+    line.index(b"391"): 1,                     # the key's n
+    tabs[0]: 2,
+    tabs[0] + 20: 4,                           # inside the output record
+    tabs[-1] - 3: 1,                           # the last field before the checksum
+    len(line) - 3: 1,                          # the checksum (or the line's end)
+    len(line) - 1: 4,                          # the newline
+}
+for position, bit in positions.items():
+    damaged = bytearray(journal)
+    damaged[position] ^= bit
+    shutil.rmtree("st", ignore_errors=True)
+    shutil.copytree("base", "st")
+    open("st/journal.tsv", "wb").write(damaged)
+    run = subprocess.run(["riesel", "--state", "st", "in.txt"], capture_output=True, text=True)
+    verdicts = [json.loads(record)["verdict"] for record in run.stdout.splitlines()]
+    assert run.returncode == 0 and verdicts == want, (position, run.returncode, run.stdout, run.stderr)
+    assert "st/journal.tsv:1: journal line " in run.stderr, (position, run.stderr)
+    assert open("st/journal.rejected", "rb").read().startswith(bytes(damaged[:10])), position
+print("ok")
+PY
+  assert_output ok
+}
+
+@test "a journal from an older riesel (no checksums) is refused with a warning and its records proved again" {
+  printf 'print(isprime(3*2^391-1))\n' | gp -q > gp.txt
+  [ "$(cat gp.txt)" = 1 ]
+  mkdir st
+  printf 'start=llr {"k":3,"b":2,"n":391,"c":-1}\t{"k":3,"b":2,"n":391,"c":-1,"verdict":"composite","test":"llr","P":3,"res64":"0000000000000005","seconds":0.1}\n' > st/journal.tsv
+  run --separate-stderr riesel --state st <<< '3*2^391-1'
+  assert_success
+  [ "$(json-field verdict <<< "$output")" = prime ]
+  [[ "$stderr" == *"st/journal.tsv:1: journal line has no checksum (written by an older riesel)"* ]]
+  grep -q '"verdict":"composite"' st/journal.rejected
+  # Moved aside: the next run has nothing to warn about.
+  run --separate-stderr riesel --state st <<< '3*2^391-1'
+  assert_success
+  [ -z "$stderr" ]
+}
