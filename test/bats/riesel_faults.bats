@@ -54,7 +54,7 @@ lresults_verdicts() {
   RANDOM=21
   kills=0
   for round in $(seq 1 18); do
-    riesel --state st in.txt > "out.$round" 2> "err.$round" 3>&- &
+    riesel -j $((1 + round % 2)) --state st in.txt > "out.$round" 2> "err.$round" 3>&- &
     pid=$!
     # 20 to 150 ms: some kills land in a proof, some between the files' appends.
     sleep "0.$(printf '%03d' $((20 + RANDOM % 130)))"
