@@ -12,7 +12,7 @@ setup() {
 }
 
 # candidates COUNT SEED > in.txt: k*2^n+-1 with k odd below 2^n, n from 40 to
-# 130, about a third of them prime (chosen with gp), in a shuffled order.
+# 130, a quarter of them prime (chosen with gp), in a shuffled order.
 candidates() {
   python3 - "$1" "$2" <<'PY' > pool.txt
 import random, sys
@@ -29,7 +29,7 @@ PY
 import random, sys
 count, rng = int(sys.argv[1]), random.Random(int(sys.argv[2]))
 pool = list(zip(open("pool.txt").read().split(), open("pool.verdicts").read().split()))
-primes = [n for n, v in pool if v == "prime"][: count // 3]
+primes = [n for n, v in pool if v == "prime"][: count // 4]
 composites = [n for n, v in pool if v == "composite"][: count - len(primes)]
 chosen = primes + composites
 rng.shuffle(chosen)
@@ -47,26 +47,49 @@ lresults_verdicts() {
   sed -E 's/^([^ ]+) is prime!.*/\1 prime/; s/^([^ ]+) is not prime\..*/\1 composite/' "$1"
 }
 
+# count_journal: sets journaled to the lines of st/journal.tsv so far. Bash
+# builtins only (as the pause in the polling loop): under load, starting a
+# process takes longer than riesel takes to journal several records.
+count_journal() {
+  journaled=0
+  if [ -f st/journal.tsv ]; then
+    mapfile -t journal_text < st/journal.tsv
+    journaled=${#journal_text[@]}
+  fi
+}
+
 @test "kill -9 and SIGTERM at random moments, then a run to the end: every number logged once, journal and output agree, PARI's verdicts" {
-  candidates 240 21 > in.txt
+  candidates 400 21 > in.txt
   paste -d' ' in.txt <(gp_verdicts < in.txt) | sort > want.txt
   grep -q ' prime$' want.txt && grep -q ' composite$' want.txt
   RANDOM=21
   kills=0
-  for round in $(seq 1 18); do
+  mkfifo never
+  exec {never}<> never  # read -t on it: a pause without starting a process
+  # Until 16 kills have landed in a working run (at most 40 rounds).
+  for round in $(seq 1 40); do
+    [ "$kills" -lt 16 ] || break
+    count_journal
+    target=$((journaled + 1 + RANDOM % 8))
     riesel -j $((1 + round % 2)) --state st in.txt > "out.$round" 2> "err.$round" 3>&- &
     pid=$!
-    # 20 to 150 ms: some kills land in a proof, some between the files' appends.
-    sleep "0.$(printf '%03d' $((20 + RANDOM % 130)))"
+    # Once 1 to 8 more records are journaled, and 1 to 9 ms later: the kill
+    # lands while the run works (in a proof, an append, a sync).
+    while kill -0 "$pid" 2> /dev/null && [ "$journaled" -lt "$target" ]; do
+      read -r -t 0.001 -u "$never" || true
+      count_journal
+    done
+    read -r -t "0.00$((1 + RANDOM % 9))" -u "$never" || true
     signal=KILL
     [ $((round % 4)) -eq 0 ] && signal=TERM
     kill -"$signal" "$pid" 2> /dev/null && kills=$((kills + 1))
     status=0
     wait "$pid" || status=$?
-    # Killed (137, 143) or finished before the signal (0); nothing else.
+    # Killed (137, 143), or finished before the signal (0); nothing else.
     [[ " 0 137 143 " == *" $status "* ]] || { echo "round $round: exit $status"; cat "err.$round"; false; }
   done
-  echo "kills: $kills"
+  count_journal
+  echo "kills: $kills, records journaled before the last run: $journaled of 400"
   [ "$kills" -ge 15 ]
   # The run to the end.
   run --separate-stderr timeout 120 riesel --state st in.txt
