@@ -21,10 +21,10 @@ constexpr std::array<std::string_view, 8> kOwnedFields = {"verdict", "test", "P"
 
 std::string checksum_text(std::string_view bytes) { return fmt::format("{:016x}", fnv1a(bytes)); }
 
-/// Decimal digits only (no sign, no blanks), within 64 bits.
+/// Decimal digits as riesel writes them (no sign, blanks or leading zeros), within 64 bits.
 std::optional<std::uint64_t> parse_count(std::string_view text) {
   std::uint64_t value = 0;
-  if (text.empty() || text.size() > 20 || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
+  if (text.empty() || text.size() > 20 || (text.size() > 1 && text[0] == '0') || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return std::nullopt;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;

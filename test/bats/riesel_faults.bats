@@ -156,60 +156,59 @@ print("ok")'
   [ "$(cat gp.txt)" = "10111" ]
 }
 
-# checkpoint FILE MEMBER ITERATION RESIDUE: a checkpoint with a valid checksum.
-checkpoint() {
-  python3 - "$@" <<'PY'
-import sys
+# crafted_checkpoints DIR CASES: for each line of the file CASES "NUMBER ITERATION RESIDUE
+# [MEMBER]", a checkpoint with a valid checksum where riesel keeps NUMBER's
+# (its --start llr), naming MEMBER (default NUMBER); RESIDUE is hex, or N or
+# N+5 for the number itself.
+crafted_checkpoints() {
+  python3 - "$1" "$2" <<'PY'
+import re, sys
 def fnv1a(data):
     h = 0xcbf29ce484222325
     for b in data:
         h = ((h ^ b) * 0x100000001b3) % 2**64
     return h
-path, member, iteration, residue = sys.argv[1:]
-body = "riesel-checkpoint 1\n%s\n%s\n%s\n" % (member, iteration, residue)
-open(path, "w").write(body + "%016x\n" % fnv1a(body.encode()))
+for line in open(sys.argv[2]):
+    number, iteration, residue, *other = line.split()
+    k, n, c = map(int, re.fullmatch(r"(\d+)\*2\^(\d+)([+-]1)", number).groups())
+    N = k * 2**n + c
+    residue = {"N": "%x" % N, "N+5": "%x" % (N + 5)}.get(residue, residue)
+    member = (other[0] if other else number) + " start=llr"
+    body = "riesel-checkpoint 1\n%s\n%s\n%s\n" % (member, iteration, residue)
+    path = "%s/checkpoint-%016x" % (sys.argv[1], fnv1a((number + " start=llr").encode()))
+    open(path, "w").write(body + "%016x\n" % fnv1a(body.encode()))
 PY
 }
 
-# checkpoint_file DIR MEMBER: where riesel keeps MEMBER's checkpoint.
-checkpoint_file() {
-  python3 -c '
-import sys
-h = 0xcbf29ce484222325
-for b in sys.argv[2].encode():
-    h = ((h ^ b) * 0x100000001b3) % 2**64
-print("%s/checkpoint-%016x" % (sys.argv[1], h))' "$1" "$2"
-}
-
 @test "crafted checkpoints with valid checksums (iteration outside the proof, residue not below N, another number's) restart the proof with a warning" {
-  printf 'print(isprime(3*2^391-1), isprime(3*2^353+1))\n' | gp -q > gp.txt
-  [ "$(cat gp.txt)" = "11" ]
-  llr_n=$(python3 -c 'print("%x" % (3 * 2**391 - 1))')
-  proth_n=$(python3 -c 'print("%x" % (3 * 2**353 + 1))')
-  plus5=$(python3 -c 'print("%x" % (3 * 2**391 - 1 + 5))')
-  # NUMBER ITERATION RESIDUE [MEMBER THE FILE NAMES]: 389 and 352 squarings in all.
-  cases=(
-    "3*2^391-1 99999999 5"
-    "3*2^391-1 -5 5"
-    "3*2^391-1 389 5"
-    "3*2^391-1 0 5"
-    "3*2^391-1 100 $llr_n"
-    "3*2^391-1 100 $plus5"
-    "3*2^391-1 100 -5"
-    "3*2^391-1 100 5 3*2^393-1"
-    "3*2^353+1 99999999 5"
-    "3*2^353+1 100 $proth_n"
-  )
-  for spec in "${cases[@]}"; do
-    read -r number iteration residue other <<< "$spec"
-    rm -rf st && mkdir st
-    checkpoint "$(checkpoint_file st "$number start=llr")" "${other:-$number} start=llr" "$iteration" "$residue"
-    run --separate-stderr riesel --state st <<< "$number"
-    assert_success
-    [ "$(json-field verdict <<< "$output")" = prime ] || { echo "$spec: $output"; false; }
-    [[ "$stderr" == *"checkpoint "*": proving $number from the start"* ]] || { echo "$spec: stderr '$stderr'"; false; }
+  # One prime each (A002235, A002253): 3*2^n-1 squares n-2 times, 3*2^n+1 n-1 times.
+  cat > cases.txt <<'CASES'
+3*2^94-1 99999999 5
+3*2^76-1 -5 5
+3*2^64-1 62 5
+3*2^55-1 0 5
+3*2^43-1 10 N
+3*2^38-1 10 N+5
+3*2^34-1 10 -5
+3*2^103-1 10 5 3*2^105-1
+3*2^66+1 99999999 5
+3*2^41+1 10 N
+CASES
+  mkdir st
+  crafted_checkpoints st cases.txt
+  cut -d' ' -f1 cases.txt > in.txt
+  sed -E 's/.*/print(isprime(&))/' in.txt | gp -q > gp.txt
+  [ "$(sort -u gp.txt)" = 1 ]
+  run --separate-stderr riesel --state st in.txt
+  assert_success
+  [ "$(json-field verdict <<< "$output" | sort | uniq -c | awk '{ print $1, $2 }')" = "10 prime" ]
+  while read -r number; do
+    [[ "$stderr" == *"checkpoint "*": proving $number from the start"* ]] || { echo "$number: stderr '$stderr'"; false; }
     grep -qF "$number is prime! " st/lresults.txt
-  done
+  done < in.txt
+  [[ "$stderr" == *"checkpoint iteration 99999999 is outside this proof (92 squarings)"* ]]
+  [[ "$stderr" == *"checkpoint residue is not below N"* ]]
+  [[ "$stderr" == *"checkpoint belongs to 3*2^105-1 start=llr"* ]]
 }
 
 # One bit flipped in a journal line: in the verdict ("prime" to "psime"),

@@ -118,7 +118,7 @@ TEST(ProofJournal, CheckpointFieldsMustBeWrittenAsRieselWritesThem) {
   };
   EXPECT_NO_THROW(parse_checkpoint(crafted("99999999", "5"), member));  // a syntax the proof itself refuses
   for (const auto& [iteration, residue] : std::vector<std::pair<std::string, std::string>>{
-           {"-5", "5"}, {" 5", "5"}, {"5x", "5"}, {"", "5"}, {"18446744073709551616", "5"},
+           {"-5", "5"}, {" 5", "5"}, {"00000000", "5"}, {"05", "5"}, {"5x", "5"}, {"", "5"}, {"18446744073709551616", "5"},
            {"5", "-5"}, {"5", "AB"}, {"5", "05"}, {"5", " 5"}, {"5", ""}})
     EXPECT_THROW(parse_checkpoint(crafted(iteration, residue), member), tk::Error) << iteration << " / " << residue;
 }
