@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
       app.add_option("--checkpoint-every", checkpoint_seconds, "seconds between checkpoints of a running proof (with --state)")
           ->check(tk::cli::number_check(tk::cli::NumberDomain::positive))
           ->capture_default_str()
-      ->type_name("S");
+          ->type_name("S");
   app.add_option("--shard", shard, "prove only candidates K, K+N, K+2N, ... (K/N)")->capture_default_str()->type_name("K/N");
   app.add_flag("--require-proof", require_proof,
                "a number with no LLR or Proth proof (k >= 2^n, n too small, another shape) is an error, not BPSW");
