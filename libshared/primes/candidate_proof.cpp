@@ -82,6 +82,15 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
     proof.test = "trial";
     return proof;
   }
+  // Nothing below 2 is prime, and trial division would name a false factor
+  // (3 divides 0): say what mrtest says.
+  if (number.value < 2) {
+    const TestOutcome outcome = test_number(number, TestPlan{});
+    proof.verdict = outcome.verdict;
+    proof.test = "bpsw";
+    proof.witness = outcome.witness;
+    return proof;
+  }
   // A small factor settles it at once (and keeps LLR's choice of P valid: P = 4 needs 3 not dividing N).
   if (const std::uint64_t p = trial_factor(number, 1000)) {
     proof.verdict = Verdict::composite;

@@ -3,6 +3,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -21,33 +22,58 @@ namespace tk::primes {
 
 namespace {
 
-constexpr std::string_view kCheckpointMagic = "riesel-checkpoint 1";
-
-std::uint64_t fnv1a(std::string_view bytes) {
-  std::uint64_t hash = 0xcbf29ce484222325ull;
-  for (unsigned char byte : bytes) hash = (hash ^ byte) * 0x100000001b3ull;
-  return hash;
-}
-
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
   throw Error(fmt::format("cannot {}: {}", what, std::strerror(errno)), Location{path, 0});
 }
 
-std::FILE* open_append(const std::string& path) {
-  std::FILE* file = std::fopen(path.c_str(), "a");
-  if (!file) fail(path, "open for appending");
-  return file;
+int open_append(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) fail(path, "open for appending");
+  return fd;
 }
 
-void append_synced(std::FILE* file, const std::string& path, const std::string& line) {
-  if (std::fputs(line.c_str(), file) < 0 || std::fputc('\n', file) < 0 || std::fflush(file) != 0 ||
-      ::fsync(fileno(file)) != 0)
-    fail(path, "write");
+/// One write (a kill cannot split it), then a sync.
+void append_synced(int fd, const std::string& path, std::string_view bytes) {
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (wrote < 0 && errno == EINTR) continue;
+    if (wrote <= 0) fail(path, "write");
+    done += static_cast<std::size_t>(wrote);
+  }
+  if (::fsync(fd) != 0) fail(path, "write");
+}
+
+std::uint64_t file_size(int fd, const std::string& path) {
+  struct stat status {};
+  if (::fstat(fd, &status) != 0) fail(path, "read the size of");
+  return static_cast<std::uint64_t>(status.st_size);
+}
+
+/// `length` bytes of the file from `offset` (fewer at its end).
+std::string read_at(int fd, const std::string& path, std::uint64_t offset, std::size_t length) {
+  std::string bytes(length, '\0');
+  std::size_t done = 0;
+  while (done < length) {
+    const ssize_t got = ::pread(fd, bytes.data() + done, length - done, static_cast<off_t>(offset + done));
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) fail(path, "read");
+    if (got == 0) break;
+    done += static_cast<std::size_t>(got);
+  }
+  bytes.resize(done);
+  return bytes;
+}
+
+std::string read_whole(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 }  // namespace
 
-ProofJournal::ProofJournal(std::string directory) : directory_(std::move(directory)) {
+ProofJournal::ProofJournal(std::string directory, const Warn& warn) : directory_(std::move(directory)) {
   std::error_code error;
   std::filesystem::create_directories(directory_, error);
   if (error) throw Error("cannot create the state directory: " + error.message(), Location{directory_, 0});
@@ -59,33 +85,57 @@ ProofJournal::ProofJournal(std::string directory) : directory_(std::move(directo
     lock_fd_ = -1;
     throw Error("another run holds this state directory's lock", Location{directory_, 0});
   }
-  // Finished records; a torn last line (killed mid-write) has no newline:
-  // it is cut off so that the next record starts on a line of its own.
-  const std::string journal = directory_ + "/journal.tsv";
-  std::uint64_t whole_lines = 0;
-  {
-    std::ifstream in(journal, std::ios::binary);
-    std::string line;
-    while (std::getline(in, line)) {
-      if (in.eof()) break;  // no newline: torn
-      whole_lines += line.size() + 1;
-      const auto tab = line.find('\t');
-      if (tab == std::string::npos) continue;
-      if (Record::accept(line.substr(tab + 1)))  // a damaged line is not a finished record
-        finished_[line.substr(0, tab)] = line.substr(tab + 1);
+  load_journal(warn);
+}
+
+void ProofJournal::load_journal(const Warn& warn) {
+  const std::string path = directory_ + "/journal.tsv";
+  const std::string text = read_whole(path);
+  const JournalText journal = read_journal(text);
+  for (const JournalEntry& entry : journal.entries) finished_[entry.key] = entry.output;
+  if (!journal.refused.empty()) {
+    // Kept aside, not deleted: a refused line is still evidence of what ran.
+    const std::string rejected_path = directory_ + "/journal.rejected";
+    std::string rejected, kept;
+    for (const auto& refused : journal.refused) rejected += refused.text + "\n";
+    for (const JournalEntry& entry : journal.entries) kept += journal_line(entry) + "\n";
+    const int rejected_fd = open_append(rejected_path);
+    append_synced(rejected_fd, rejected_path, rejected);
+    ::close(rejected_fd);
+    io::write_file_atomically(path, kept, path + ".tmp");
+    const auto& first = journal.refused.front();
+    if (warn)
+      warn(fmt::format("{}:{}: journal line {}{}; moved to {}, its record is proved again", path, first.line, first.why,
+                       journal.refused.size() > 1 ? fmt::format(" (and {} more lines)", journal.refused.size() - 1) : "",
+                       rejected_path));
+  } else if (journal.whole_bytes < text.size()) {
+    // A torn last line (killed mid-append): cut off, so the next starts on a line of its own.
+    std::error_code size_error;
+    std::filesystem::resize_file(path, journal.whole_bytes, size_error);
+    if (size_error) throw Error("cannot cut its torn last line: " + size_error.message(), Location{path, 0});
+  }
+  journal_fd_ = open_append(path);
+  log_fd_ = open_append(directory_ + "/lresults.txt");
+  complete_log(journal.entries.empty() ? std::nullopt : std::optional<JournalEntry>(journal.entries.back()));
+}
+
+void ProofJournal::complete_log(const std::optional<JournalEntry>& last) {
+  const std::string path = directory_ + "/lresults.txt";
+  const std::uint64_t size = file_size(log_fd_, path);
+  // Only the last record can have been cut short: records are journaled, then logged, one at a time.
+  if (last && last->log_offset <= size) {
+    const std::string expected = log_text(*last);
+    if (size - last->log_offset < expected.size()) {
+      const std::string written = read_at(log_fd_, path, last->log_offset, size - last->log_offset);
+      if (const auto rest = log_completion(written, *last)) return append_synced(log_fd_, path, *rest);
     }
   }
-  std::error_code size_error;
-  if (std::filesystem::exists(journal) && std::filesystem::file_size(journal, size_error) > whole_lines && !size_error)
-    std::filesystem::resize_file(journal, whole_lines, size_error);
-  journal_ = open_append(journal);
-  log_ = open_append(directory_ + "/lresults.txt");
+  if (size > 0 && read_at(log_fd_, path, size - 1, 1) != "\n") append_synced(log_fd_, path, "\n");
 }
 
 ProofJournal::~ProofJournal() {
-  if (journal_) std::fclose(journal_);
-  if (log_) std::fclose(log_);
-  if (lock_fd_ >= 0) ::close(lock_fd_);
+  for (const int fd : {journal_fd_, log_fd_, lock_fd_})
+    if (fd >= 0) ::close(fd);
 }
 
 std::optional<std::string> ProofJournal::finished(const std::string& key) const {
@@ -94,52 +144,36 @@ std::optional<std::string> ProofJournal::finished(const std::string& key) const 
   return found->second;
 }
 
-void ProofJournal::record_finished(const std::string& key, const std::string& output_line) {
-  append_synced(journal_, directory_ + "/journal.tsv", key + "\t" + output_line);
+void ProofJournal::record_finished(const std::string& key, const std::string& output_line,
+                                   const std::vector<std::string>& log_lines) {
+  const std::string log_path = directory_ + "/lresults.txt";
+  const JournalEntry entry{key, output_line, file_size(log_fd_, log_path), log_lines};
+  // The journal first: a kill before lresults.txt is written is repaired from it on the next start.
+  append_synced(journal_fd_, directory_ + "/journal.tsv", journal_line(entry) + "\n");
   finished_[key] = output_line;
+  append_synced(log_fd_, log_path, log_text(entry));
 }
-
-void ProofJournal::log_result(const std::string& line) { append_synced(log_, directory_ + "/lresults.txt", line); }
 
 std::string ProofJournal::checkpoint_path(const std::string& member) const {
   return fmt::format("{}/checkpoint-{:016x}", directory_, fnv1a(member));
 }
 
-std::optional<ProofState> ProofJournal::load_checkpoint(const std::string& member,
-                                                      const std::function<void(const std::string&)>& warn) const {
+std::optional<ProofState> ProofJournal::load_checkpoint(const std::string& member, const Warn& warn) const {
   const std::string path = checkpoint_path(member);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  auto damaged = [&](const std::string& why) -> std::optional<ProofState> {
-    if (warn) warn(fmt::format("{}: checkpoint {}", path, why));
-    return std::nullopt;
-  };
-  std::string magic, name, iteration, value, checksum;
-  if (!std::getline(in, magic) || !std::getline(in, name) || !std::getline(in, iteration) || !std::getline(in, value) ||
-      !std::getline(in, checksum))
-    return damaged("is truncated");
-  const std::string body = magic + "\n" + name + "\n" + iteration + "\n" + value + "\n";
-  if (magic != kCheckpointMagic) return damaged("is not a riesel checkpoint");
-  if (checksum != fmt::format("{:016x}", fnv1a(body))) return damaged("fails its checksum");
-  if (name != member) return damaged("belongs to " + name);
-  ProofState state;
+  if (!std::filesystem::exists(path)) return std::nullopt;
   try {
-    state.iteration = std::stoull(iteration);
-    if (state.value.set_str(value, 16) != 0 || state.value < 0) return damaged("holds no valid residue");
-  } catch (const std::exception&) {
-    return damaged("holds no valid iteration");
+    return parse_checkpoint(read_whole(path), member);
+  } catch (const Error& e) {
+    if (warn) warn(fmt::format("{}: checkpoint {}", path, e.what()));
+    return std::nullopt;
   }
-  return state;
 }
 
 void ProofJournal::save_checkpoint(const std::string& member, const ProofState& state) const {
-  const std::string body =
-      fmt::format("{}\n{}\n{}\n{}\n", kCheckpointMagic, member, state.iteration, state.value.get_str(16));
-  const std::string text = body + fmt::format("{:016x}\n", fnv1a(body));
   // One temporary name per thread: two proofs of one number may save at once.
   const std::string path = checkpoint_path(member),
                     temporary = fmt::format("{}.tmp{}", path, std::hash<std::thread::id>{}(std::this_thread::get_id()));
-  io::write_file_atomically(path, text, temporary);
+  io::write_file_atomically(path, checkpoint_text(member, state), temporary);
 }
 
 void ProofJournal::remove_checkpoint(const std::string& member) const { std::remove(checkpoint_path(member).c_str()); }

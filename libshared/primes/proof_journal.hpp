@@ -5,55 +5,65 @@
 /// LLR-style results log, and checkpoints of unfinished proofs.
 ///
 /// Every file is written so that a kill at any moment leaves it usable:
-/// journal and log lines are appended and synced one by one (a torn last
-/// line is ignored on reading), checkpoints go to a temporary file that is
+/// a finished record goes to the journal first (its line holds the record's
+/// lresults.txt lines too), then to lresults.txt, each appended and synced;
+/// a run killed between the two completes lresults.txt from the journal
+/// when it starts again, so each record is logged once. A torn last
+/// journal line is cut off; a journal line that fails its checksum or its
+/// field checks (proof_journal_format.hpp) is moved to journal.rejected and
+/// its record proved again. Checkpoints go to a temporary file that is
 /// synced and renamed, and carry a checksum; a damaged checkpoint is
 /// ignored (that proof restarts), never trusted.
 #pragma once
 
-#include <cstdio>
 #include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "io/record.hpp"
+#include "primes/proof_journal_format.hpp"
 #include "primes/riesel_proof.hpp"
 
 namespace tk::primes {
 
 class ProofJournal {
  public:
-  /// Creates `directory` if needed and takes its lock; Error if another run holds it.
-  explicit ProofJournal(std::string directory);
+  using Warn = std::function<void(const std::string&)>;
+
+  /// Creates `directory` if needed and takes its lock; Error if another run
+  /// holds it. Refused journal lines are reported to `warn`.
+  explicit ProofJournal(std::string directory, const Warn& warn = {});
   ~ProofJournal();
   ProofJournal(const ProofJournal&) = delete;
   ProofJournal& operator=(const ProofJournal&) = delete;
 
   /// The output line of a finished record with this key, if any.
   std::optional<std::string> finished(const std::string& key) const;
-  /// Appends a finished record (key and output line) and syncs.
-  void record_finished(const std::string& key, const std::string& output_line);
-  /// Appends a line to lresults.txt and syncs.
-  void log_result(const std::string& line);
+  /// Appends a finished record (key, output line, its lresults.txt lines)
+  /// to the journal, then its lines to lresults.txt, syncing each.
+  void record_finished(const std::string& key, const std::string& output_line,
+                       const std::vector<std::string>& log_lines);
 
   /// The saved state of a proof of `member`; nothing when there is none,
   /// or when the file is damaged or not this member's (then `warn` hears
   /// "FILE: checkpoint <why>", and the proof starts over: a bad checkpoint
   /// never gives a verdict).
-  std::optional<ProofState> load_checkpoint(const std::string& member,
-                                            const std::function<void(const std::string&)>& warn = {}) const;
+  std::optional<ProofState> load_checkpoint(const std::string& member, const Warn& warn = {}) const;
   void save_checkpoint(const std::string& member, const ProofState& state) const;
   void remove_checkpoint(const std::string& member) const;
 
+  std::string checkpoint_path(const std::string& member) const;
   const std::string& directory() const { return directory_; }
 
  private:
-  std::string checkpoint_path(const std::string& member) const;
+  void load_journal(const Warn& warn);
+  void complete_log(const std::optional<JournalEntry>& last);
   std::string directory_;
   int lock_fd_ = -1;
-  std::FILE* journal_ = nullptr;
-  std::FILE* log_ = nullptr;
+  int journal_fd_ = -1;
+  int log_fd_ = -1;
   std::unordered_map<std::string, std::string> finished_;
 };
 

@@ -1,6 +1,8 @@
 /// @file riesel_proof.cpp
 #include "primes/riesel_proof.hpp"
 
+#include <fmt/format.h>
+
 #include "io/error.hpp"
 #include "primes/fft_squaring.hpp"
 #include "primes/modulus.hpp"
@@ -87,6 +89,21 @@ std::uint64_t low_64_bits(const mpz_class& value) {
   return low;
 }
 
+/// The saved state to resume from, when it fits a proof of N that squares
+/// up to iteration `last`: never one that would skip every squaring.
+std::optional<ProofState> usable_resume(const ProofOptions& options, const mpz_class& N, std::uint64_t last) {
+  if (!options.resume_from) return std::nullopt;
+  const ProofState& state = *options.resume_from;
+  std::string why;
+  if (state.iteration == 0 || state.iteration >= last)
+    why = fmt::format("iteration {} is outside this proof ({} squarings)", state.iteration, last);
+  else if (state.value < 0 || state.value >= N)
+    why = "residue is not below N";
+  if (why.empty()) return state;
+  if (options.resume_rejected) options.resume_rejected(why);
+  return std::nullopt;
+}
+
 void check_form(std::uint64_t k, std::uint64_t n, std::uint64_t min_n) {
   if (k % 2 == 0 || k == 0) throw Error("k must be odd and positive");
   if (n < min_n) throw Error("n must be at least " + std::to_string(min_n));
@@ -120,8 +137,8 @@ ProofResult llr_prove(std::uint64_t k, std::uint64_t n, LlrStart start, const Pr
   }
   result.parameter = *parameter;
   ProofState state;
-  if (options.resume_from) {
-    state = *options.resume_from;
+  if (const auto resume = usable_resume(options, value, n - 2)) {
+    state = *resume;
   } else {
     // u_0 = V_k(P): the ladder keeps (V_m, V_m+1), doubling m bit by bit.
     mpz_class low = 2, high = *parameter, product;
@@ -165,8 +182,8 @@ ProofResult proth_prove(std::uint64_t k, std::uint64_t n, const ProofOptions& op
   }
   result.parameter = *base;
   ProofState state;
-  if (options.resume_from) {
-    state = *options.resume_from;
+  if (const auto resume = usable_resume(options, value, n - 1)) {
+    state = *resume;
   } else {
     mpz_class power;
     const mpz_class a = *base, exponent = k;

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include "primes/primality.hpp"
 
@@ -44,7 +45,12 @@ struct ProofOptions {
   std::function<bool(const ProofState&)> progress;
   std::uint64_t report_every = 10000;
   const std::atomic<bool>* cancel = nullptr;
+  /// A saved state to go on from. It is used only when it can be one of
+  /// this proof's states (an iteration with squarings left to do, a residue
+  /// below N); otherwise `resume_rejected` hears why and the proof starts
+  /// from the beginning.
   std::optional<ProofState> resume_from;
+  std::function<void(const std::string& why)> resume_rejected;
   Arithmetic arithmetic = Arithmetic::automatic;
 };
 

@@ -380,6 +380,19 @@ prime llr"
   assert_line --index 2 '[{"n": 1, "c": 1, "verdict": "prime", "test": "proth", "a": 5}]'
 }
 
+@test "numbers below 2 are composite with mrtest's witness 'n < 2', not a factor that does not divide them" {
+  run --separate-stderr bash -c "printf '0\n-7\n1\n-1\n' | riesel --state st"
+  assert_success
+  run python3 -c '
+import json, sys
+rows = [json.loads(line) for line in sys.argv[1].splitlines()]
+assert [(r["verdict"], r["witness"]) for r in rows] == [("composite", "n < 2")] * 4, rows
+print("ok")' "$output"
+  assert_output ok
+  run grep -c ' is not prime\.  n < 2  Time' st/lresults.txt
+  assert_output 4
+}
+
 @test "3 = 2^2-1 = 1*2^2-1 is prime (LLR with n = 2)" {
   run bash -c "echo '2^2-1' | riesel | json-field verdict"
   assert_output "prime"
@@ -790,15 +803,25 @@ sys.stdout.buffer.write(bytes(random.randrange(256) for _ in range(4096)))" > ra
   assert_success
 }
 
-@test "bad --shard and --checkpoint-every values are errors with exit 1" {
+@test "bad --shard values are errors with exit 1" {
   for shard in 0/2 3/2 1/0 x 2/x; do
     run riesel --shard "$shard" <<< "97"
     assert_failure 1
     assert_output --partial -- "--shard"
   done
-  run riesel --checkpoint-every 0 <<< "97"
-  assert_failure 1
-  assert_output --partial -- "--checkpoint-every"
+}
+
+@test "--checkpoint-every: a value that is not positive, or no --state to keep checkpoints in, is a usage error" {
+  for seconds in 0 -1 x nan; do
+    run riesel --state st --checkpoint-every "$seconds" <<< "97"
+    assert_failure 2
+    assert_output --partial -- "--checkpoint-every"
+  done
+  run riesel --checkpoint-every 5 <<< "97"
+  assert_failure 2
+  assert_line --index 0 "riesel: --checkpoint-every needs --state"
+  run riesel --state st --checkpoint-every 0.5 <<< "97"
+  assert_success
 }
 
 @test "a malformed line stops with file:line after the records before it; --skip-bad goes on" {

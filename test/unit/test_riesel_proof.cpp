@@ -112,3 +112,38 @@ TEST(RieselProof, BadFormsAreErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+/// The proof of k*2^n+-1 resumed from `state`: its verdict, and why the state was refused (empty if used).
+std::pair<Verdict, std::string> resumed_from(std::uint64_t k, std::uint64_t n, int c, const ProofState& state) {
+  ProofOptions options;
+  options.resume_from = state;
+  std::string why;
+  options.resume_rejected = [&](const std::string& reason) { why = reason; };
+  const ProofResult result = c < 0 ? llr_prove(k, n, LlrStart::llr, options) : proth_prove(k, n, options);
+  return {result.verdict, why};
+}
+
+TEST(RieselProof, AStateOutsideTheProofIsRefusedAndTheProofStartsOver) {
+  // 3*2^391-1 and 3*2^353+1 are prime (A002235, A002253): 389 and 352 squarings.
+  const mpz_class llr_N = mpz_class(3) * (mpz_class(1) << 391) - 1, proth_N = mpz_class(3) * (mpz_class(1) << 353) + 1;
+  const std::vector<std::pair<std::uint64_t, mpz_class>> bad_llr = {
+      {99999999, 5}, {389, 5}, {0, 5}, {100, llr_N}, {100, llr_N + 5}, {100, -5}, {~std::uint64_t(0) - 4, 5}};
+  for (const auto& [iteration, value] : bad_llr) {
+    const auto [verdict, why] = resumed_from(3, 391, -1, ProofState{iteration, value});
+    EXPECT_EQ(verdict, Verdict::prime) << iteration << " " << value;
+    EXPECT_FALSE(why.empty()) << iteration << " " << value;
+  }
+  for (const auto& [iteration, value] : std::vector<std::pair<std::uint64_t, mpz_class>>{{352, 5}, {7, proth_N}}) {
+    const auto [verdict, why] = resumed_from(3, 353, +1, ProofState{iteration, value});
+    EXPECT_EQ(verdict, Verdict::prime) << iteration;
+    EXPECT_FALSE(why.empty()) << iteration;
+  }
+  EXPECT_EQ(resumed_from(3, 391, -1, ProofState{99999999, 5}).second, "iteration 99999999 is outside this proof (389 squarings)");
+  EXPECT_EQ(resumed_from(3, 391, -1, ProofState{100, llr_N}).second, "residue is not below N");
+  // A state inside the proof is used (here a wrong one: the verdict follows it).
+  EXPECT_EQ(resumed_from(3, 391, -1, ProofState{100, 5}), (std::pair<Verdict, std::string>{Verdict::composite, ""}));
+}
+
+}  // namespace

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "cli/number_option.hpp"
+#include "cli/option_checks.hpp"
 #include "cli/progress.hpp"
 #include "cli/tool_app.hpp"
 #include "concurrency/ordered_pool.hpp"
@@ -93,9 +94,11 @@ int main(int argc, char** argv) {
       ->type_name("NAME");
   app.add_option("--state", state_dir, "keep a lock, a journal, lresults.txt and checkpoints in DIR; a re-run resumes")
       ->type_name("DIR");
-  app.add_option("--checkpoint-every", checkpoint_seconds, "seconds between checkpoints of a running proof")
-      ->capture_default_str()
-      ->type_name("S");
+  CLI::Option* checkpoint_every =
+      app.add_option("--checkpoint-every", checkpoint_seconds, "seconds between checkpoints of a running proof (with --state)")
+          ->check(tk::cli::number_check(tk::cli::NumberDomain::positive))
+          ->capture_default_str()
+          ->type_name("S");
   app.add_option("--shard", shard, "prove only candidates K, K+N, K+2N, ... (K/N)")->capture_default_str()->type_name("K/N");
   app.add_flag("--require-proof", require_proof,
                "a number with no LLR or Proth proof (k >= 2^n, n too small, another shape) is an error, not BPSW");
@@ -106,10 +109,12 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&] {
     const auto [shard_slot, shard_count] = tk::cli::parse_shard(shard, "--shard");
-    if (!(checkpoint_seconds > 0)) throw tk::Error("--checkpoint-every must be a positive number of seconds");
+    // Checkpoints live in the state directory: without one the option would do nothing.
+    if (checkpoint_every->count() && state_dir.empty()) throw tk::UsageError("--checkpoint-every needs --state");
 
     std::unique_ptr<tk::primes::ProofJournal> journal;
-    if (!state_dir.empty()) journal = std::make_unique<tk::primes::ProofJournal>(state_dir);
+    if (!state_dir.empty())
+      journal = std::make_unique<tk::primes::ProofJournal>(state_dir, [&](const std::string& problem) { tool.warn(problem); });
     struct sigaction action {};
     action.sa_handler = on_stop_signal;
     sigemptyset(&action.sa_mask);
@@ -130,6 +135,9 @@ int main(int argc, char** argv) {
       const std::string name = member + " start=" + start;
       options.resume_from = journal->load_checkpoint(
           name, [&](const std::string& problem) { tool.warn(problem + ": proving " + member + " from the start"); });
+      options.resume_rejected = [&, name, member](const std::string& why) {
+        tool.warn(journal->checkpoint_path(name) + ": checkpoint " + why + ": proving " + member + " from the start");
+      };
       auto last = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
       options.progress = [&, name, last](const tk::primes::ProofState& state) {
         const auto now = std::chrono::steady_clock::now();
@@ -172,7 +180,9 @@ int main(int argc, char** argv) {
           if (journal && proof.verdict != Verdict::unknown) journal->remove_checkpoint(proof.text + " start=" + start);
           member_started = now;
         });
-        out.stopped = verdict == Verdict::unknown && g_cancel.load();
+        if (verdict == Verdict::unknown && !g_cancel.load())  // never write a verdict that was not computed
+          throw tk::Error("the proof stopped without a verdict");
+        out.stopped = verdict == Verdict::unknown;
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         Record members;
         if (job.record.contains("members")) {
@@ -197,10 +207,9 @@ int main(int argc, char** argv) {
         return;
       }
       if (out.stopped) return;  // a signal cut it short: the checkpoint has it
-      if (journal && !out.replayed) {
-        for (const std::string& line : out.log_lines) journal->log_result(line);
-        journal->record_finished(out.key, out.record.dump(-1, ' ', false, tk::Record::error_handler_t::replace));
-      }
+      if (journal && !out.replayed)
+        journal->record_finished(out.key, out.record.dump(-1, ' ', false, tk::Record::error_handler_t::replace),
+                                 out.log_lines);
       writer.write(out.record);
     };
 
