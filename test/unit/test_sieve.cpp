@@ -340,7 +340,7 @@ TEST_F(SieveFiles, CheckpointRoundTripAndDamage) {
   EXPECT_EQ(loaded->factors_bytes, 1234u);
 
   GeneralizedSieve resumed(spec);
-  resumed.restore(loaded->bitmap, loaded->next_block);
+  resumed.restore(loaded->bitmap, loaded->next_segment, loaded->next_block);
   GeneralizedSieve straight(spec);
   EXPECT_EQ(survivors_of(resumed), survivors_of(straight));
 
