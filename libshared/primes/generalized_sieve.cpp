@@ -131,6 +131,7 @@ void GeneralizedSieve::sieve_small_primes(const SieveControl& control) {
 
 std::optional<std::vector<SieveFactor>> GeneralizedSieve::sieve_block(std::uint64_t block,
                                                                      const std::function<bool()>& stop) {
+  if (stop && stop()) return std::nullopt;  // queued before the stop: not worth starting
   thread_local std::vector<std::uint64_t> primes, roots;
   primes.clear();
   primesieve::generate_primes(block_low(block), block_high(block), &primes);
@@ -140,8 +141,9 @@ std::optional<std::vector<SieveFactor>> GeneralizedSieve::sieve_block(std::uint6
   std::vector<SieveFactor> factors;
   std::uint64_t* words = bits_.data();
   // With a huge bitmap one block is minutes of work: look for a stop every
-  // 2^24 or so steps through the bitmap.
-  constexpr std::uint64_t kStepsBetweenChecks = std::uint64_t(1) << 24;
+  // 2^20 or so steps through the bitmap (at most a few tenths of a second of
+  // cache misses on a bitmap of gigabytes).
+  constexpr std::uint64_t kStepsBetweenChecks = std::uint64_t(1) << 20;
   std::uint64_t steps = 0;
   for (std::size_t i = 0; i < primes.size(); ++i) {
     const std::uint64_t p = primes[i];

@@ -314,9 +314,10 @@ class SieveFiles : public ::testing::Test {
     std::ifstream in(file, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
-  std::string write(GeneralizedSieve& sieve, SieveOutputFormat format, const std::string& name) const {
+  std::string write(GeneralizedSieve& sieve, SieveOutputFormat format, const std::string& name, unsigned shard_index = 0,
+                    unsigned shard_count = 1) const {
     std::FILE* out = std::fopen(path(name).c_str(), "wb");
-    write_survivors(sieve, format, sieve.spec().p_max, out);
+    write_survivors(sieve, format, sieve.spec().p_max, out, shard_index, shard_count);
     std::fclose(out);
     return path(name);
   }
@@ -390,27 +391,57 @@ TEST_F(SieveFiles, MergeOfShardsEqualsOneRun) {
       control.shard_index = k;
       control.shard_count = 3;
       part.sieve_large_primes(control);
-      shards.push_back(write(part, format, "shard" + std::to_string(k)));
+      shards.push_back(write(part, format, "shard" + std::to_string(k), k, 3));
     }
     std::FILE* out = std::fopen(path("merged").c_str(), "wb");
     merge_sieve_outputs(shards, out);
     std::fclose(out);
     EXPECT_EQ(slurp(path("merged")), expected) << static_cast<int>(format);
+
+    // A shard cut short anywhere (a sieve killed while writing it) is refused;
+    // only the final newline may go.
+    const std::string whole_shard = slurp(shards[1]);
+    std::vector<std::size_t> cuts;  // every byte of the header and of the last lines, and some between
+    for (std::size_t size = 0; size + 1 < whole_shard.size(); ++size)
+      if (size < 100 || size + 200 > whole_shard.size() || size % 97 == 0) cuts.push_back(size);
+    for (std::size_t size : cuts) {
+      std::ofstream(shards[1], std::ios::binary | std::ios::trunc) << whole_shard.substr(0, size);
+      std::FILE* sink = std::fopen(path("merged").c_str(), "wb");
+      EXPECT_THROW(merge_sieve_outputs(shards, sink), tk::Error) << static_cast<int>(format) << " cut at " << size;
+      std::fclose(sink);
+    }
+    std::ofstream(shards[1], std::ios::binary | std::ios::trunc) << whole_shard;
+    // Each shard once, none missing.
+    for (const auto& files : {std::vector<std::string>{shards[0], shards[1]},
+                              std::vector<std::string>{shards[0], shards[1], shards[2], shards[2]},
+                              std::vector<std::string>{shards[0], shards[0], shards[1], shards[2]}}) {
+      std::FILE* sink = std::fopen(path("merged").c_str(), "wb");
+      EXPECT_THROW(merge_sieve_outputs(files, sink), tk::Error) << files.size();
+      std::fclose(sink);
+    }
   }
-  // A shard without survivors writes an empty file in JSON Lines and ABCD.
-  std::ofstream(path("empty")).flush();
-  std::ofstream(path("abcd")) << "ABCD $a*2^5+1 & $a*2^5-1 [6] // Sieved to 1000\n30\n";
-  for (const auto& files : {std::vector<std::string>{path("empty"), path("abcd")}, {path("abcd"), path("empty")}}) {
-    std::FILE* merged = std::fopen(path("merged").c_str(), "wb");
-    merge_sieve_outputs(files, merged);
-    std::fclose(merged);
-    EXPECT_EQ(slurp(path("merged")), "");
-  }
+  // One run's output (no trailer) and garbage are not shard outputs.
   std::ofstream(path("other")) << "1000:M:1:2:2\n3 5\n";
-  std::ofstream(path("mine")) << "1000:T:0:2:3\n3 5\n";
+  std::ofstream(path("hello")) << "hello\n";
   std::FILE* out = std::fopen(path("merged").c_str(), "wb");
-  EXPECT_THROW(merge_sieve_outputs({path("mine"), path("other")}, out), tk::Error);
+  EXPECT_THROW(merge_sieve_outputs({path("other")}, out), tk::Error);
+  EXPECT_THROW(merge_sieve_outputs({path("hello")}, out), tk::Error);
   std::fclose(out);
+}
+
+TEST(SieveShardTrailer, RoundTripAndCutShort) {
+  const ShardTrailer trailer{2, 5, 1225, "form=twin length=1 n=1000 k=1:3000"};
+  const std::string line = format_shard_trailer(trailer);
+  EXPECT_EQ(line, "// sieve shard 3/5 of form=twin length=1 n=1000 k=1:3000: 1225 candidates, complete");
+  const auto parsed = parse_shard_trailer(line);
+  ASSERT_TRUE(parsed);
+  EXPECT_EQ(parsed->index, 2u);
+  EXPECT_EQ(parsed->count, 5u);
+  EXPECT_EQ(parsed->candidates, 1225u);
+  EXPECT_EQ(parsed->run, trailer.run);
+  for (std::size_t size = 0; size < line.size(); ++size) EXPECT_FALSE(parse_shard_trailer(line.substr(0, size))) << size;
+  EXPECT_FALSE(parse_shard_trailer("// sieve shard 6/5 of x: 1 candidates, complete"));
+  EXPECT_FALSE(parse_shard_trailer("// sieve shard 1/1 of x: 1 candidates, complete"));
 }
 
 }  // namespace

@@ -95,7 +95,7 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
                         : o.abc   ? Format::abc
                         : o.abcd  ? Format::abcd
                         : tool.output_format() == tk::io::OutputFormat::csv ? Format::csv : Format::json_lines;
-  tk::primes::write_survivors(sieve, format, outcome.depth, stdout);
+  tk::primes::write_survivors(sieve, format, outcome.depth, stdout, run.shard_index, run.shard_count);
 }
 
 void run_primes(tk::cli::ToolApp& tool, const std::string& from_text, const std::string& to_text, bool count, bool json) {
