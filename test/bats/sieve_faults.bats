@@ -80,7 +80,7 @@ complete_or_refused() {
   sieve twin --n 1000 --k 1:2e4 --pmax 1e11 --checkpoint ck --checkpoint-every 0.05 > /dev/null 2> first.err 3>&- &
   pid=$!
   wait_for ck
-  run sieve twin --n 1000 --k 1:2e4 --pmax 1e11 --checkpoint ck --resume
+  run timeout 60 sieve twin --n 1000 --k 1:2e4 --pmax 1e11 --checkpoint ck --resume  # (a hang guard)
   assert_failure 1
   assert_output --regexp "^sieve: ck: another run holds this checkpoint's lock"
   kill -9 "$pid"
@@ -94,8 +94,10 @@ complete_or_refused() {
 }
 
 @test "SIGTERM while the small primes sieve saves their segments; --resume gives the uninterrupted output" {
-  # 3*10^7 candidates are 15 segments of 2^21; pmax 1.1*10^6 adds one small block of larger primes.
-  args="twin --n 1000 --k 1:3e7 --pmax 1.1e6 --newpgen"
+  # 6*10^7 candidates are 29 segments of 2^21 (a second or more at -j 1); the
+  # first checkpoint comes after the first segment. pmax 1.1*10^6 adds one
+  # small block of larger primes.
+  args="twin --n 1000 --k 1:6e7 --pmax 1.1e6 --newpgen"
   # (No --factors: nearly every candidate would write a line, 650 MB. The
   # unit test SieveFiles.CheckpointInTheSmallPrimePhase checks them.)
   sieve $args > want.npg
@@ -107,7 +109,7 @@ complete_or_refused() {
   wait "$pid" || status=$?
   [ "$status" -eq 143 ]
   run cat err.txt
-  assert_output --regexp "^sieve: stopped by signal 15 (while the primes up to 2\^20 sieved, after [0-9]+ of 15 segments|after p = [0-9]+); checkpoint saved"
+  assert_output --regexp "^sieve: stopped by signal 15 while the primes up to 2\^20 sieved, after [0-9]+ of 29 segments; checkpoint saved"
   [ ! -s out.npg ]
   sieve $args -j 2 --checkpoint ck --resume > got.npg
   run cmp got.npg want.npg
