@@ -22,8 +22,6 @@ namespace tk::primes {
 
 namespace {
 
-constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
-
 enum class TextKind { json_lines, csv, newpgen, abc, abcd };
 
 struct ShardFile {
@@ -59,7 +57,6 @@ ShardFile read_shard(const std::string& path) {
   std::optional<std::uint64_t> previous_k;
   std::optional<ShardTrailer> trailer;
   while (input.next(line)) {
-    if (input.line_number() == 1 && line.starts_with(kByteOrderMark)) line.remove_prefix(kByteOrderMark.size());
     if (line.empty()) continue;
     const Location where = input.where();
     if (trailer) throw Error("text after the '// sieve shard' line, which a shard output ends with", where);
