@@ -60,7 +60,8 @@ struct SieveControl {
   /// Called on the calling thread, in a fixed order, for every removal.
   std::function<void(const SieveFactor&)> on_factor;
   /// Checked before each segment or block is started, and often while a
-  /// block of large primes is sieved; true stops the run cleanly (a block
+  /// block of large primes is sieved (on the worker threads too, so it must
+  /// be safe to call from any thread); true stops the run cleanly (a block
   /// cut short is dropped and sieved again on resume).
   std::function<bool()> should_stop;
   /// Called on the calling thread after each block's removals are applied.
