@@ -44,7 +44,7 @@ for k in $(seq 1 "$shards"); do shard_files+=("$work/shard$k.npg"); done
 sieve merge "${shard_files[@]}" > "$work/twin.npg"
 echo "$shards shards of twin k*2^$n+-1, k in $kmin..$kmax, primes to $pmax:"
 for file in "${shard_files[@]}"; do
-  echo "  $(basename "$file"): $(( $(wc -l < "$file") - 1 )) candidates left"
+  echo "  $(basename "$file"): $(( $(wc -l < "$file") - 2 )) candidates left"  # header and shard line
 done
 echo "merged: $(( $(wc -l < "$work/twin.npg") - 1 )) candidates, header $(head -1 "$work/twin.npg")"
 

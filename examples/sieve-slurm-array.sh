@@ -51,7 +51,7 @@ run_task() {
     -j "${SLURM_CPUS_PER_TASK:-1}" --checkpoint "$dir/shard$k.ckpt" --resume \
     --checkpoint-every 300 > "$out.tmp"
   mv "$out.tmp" "$out"
-  echo "shard $k/$count: $(( $(wc -l < "$out") - 1 )) candidates left"
+  echo "shard $k/$count: $(( $(wc -l < "$out") - 2 )) candidates left"  # header and shard line
 }
 
 # The merge job: every shard's output into one NewPGen file.

@@ -22,8 +22,10 @@
 /// Oracles (switch off by name with TK_FUZZ_SKIP=a,b while a finding is open):
 ///   identity   a loaded checkpoint carries the identity asked for
 ///   bitmap     its bitmap has (count+63)/64 words, no bit at or above count
-///   roundtrip  the checkpoint re-encoded as save_checkpoint writes it loads
-///              back to the same fields and bitmap
+///   bitmap     ... and no bit in a segment the small primes have not sieved
+///              (next_segment, version 2), and blocks only after every segment
+///   roundtrip  the checkpoint re-encoded as save_checkpoint writes it (version
+///              2) loads back to the same fields and bitmap
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -44,7 +46,9 @@ namespace {
 
 using tk::fuzz::MemoryFile;
 
-constexpr std::string_view kMagic = "toolkit-sieve-checkpoint 1\n";
+constexpr std::string_view kMagic = "toolkit-sieve-checkpoint 2\n";
+constexpr std::string_view kMagicVersion1 = "toolkit-sieve-checkpoint 1\n";  // still read: all segments done
+constexpr std::uint64_t kSegmentBits = std::uint64_t(1) << 21;
 /// `sed -n 2p` of the seeds made by `sieve twin --n 1000 --k 1:5000 --pmax 1e4 --checkpoint F`.
 const std::string kIdentity = "form=twin length=1 n=1000 k=1:5000 pmax=10000 shard=1/1";
 constexpr std::uint64_t kCandidates = 5000;
@@ -82,6 +86,7 @@ std::string encode(const tk::primes::SieveCheckpoint& checkpoint) {
   bytes += checkpoint.identity + "\n";
   put_u64(bytes, checkpoint.next_block);
   put_u64(bytes, checkpoint.factors_bytes);
+  put_u64(bytes, checkpoint.next_segment);
   std::uint64_t survivors = 0;
   for (std::uint64_t word : checkpoint.bitmap) survivors += static_cast<std::uint64_t>(std::popcount(word));
   put_u64(bytes, survivors);
@@ -116,13 +121,21 @@ void check(const tk::primes::SieveCheckpoint& checkpoint, const std::string& ide
                                                std::to_string(count) + " candidates");
     if (count % 64 && (checkpoint.bitmap.back() >> (count % 64)) != 0)
       tk::fuzz::invariant_failed("bitmap", "a survivor at or above the candidate count " + std::to_string(count));
+    const std::uint64_t segments = (count + kSegmentBits - 1) / kSegmentBits;
+    if (checkpoint.next_segment > segments || (checkpoint.next_segment < segments && checkpoint.next_block != 0))
+      tk::fuzz::invariant_failed("bitmap", "segment " + std::to_string(checkpoint.next_segment) + " of " +
+                                               std::to_string(segments) + " with block " +
+                                               std::to_string(checkpoint.next_block));
+    for (std::size_t w = checkpoint.next_segment * kSegmentBits / 64; w < checkpoint.bitmap.size(); ++w)
+      if (checkpoint.bitmap[w] != 0) tk::fuzz::invariant_failed("bitmap", "a survivor in a segment not yet sieved");
   }
   if (tk::fuzz::oracle_enabled("roundtrip")) {
     const auto again = load(file, encode(checkpoint), identity, count);
     if (!again)
       tk::fuzz::invariant_failed("roundtrip", "the re-encoded checkpoint does not load");
     if (again->identity != checkpoint.identity || again->next_block != checkpoint.next_block ||
-        again->factors_bytes != checkpoint.factors_bytes || again->bitmap != checkpoint.bitmap)
+        again->next_segment != checkpoint.next_segment || again->factors_bytes != checkpoint.factors_bytes ||
+        again->bitmap != checkpoint.bitmap)
       tk::fuzz::invariant_failed("roundtrip", "the re-encoded checkpoint loads to another state");
   }
 }
@@ -140,7 +153,9 @@ void run(std::string_view bytes) {
   if (auto checkpoint = load(file, repaired, kIdentity, kCandidates)) check(*checkpoint, kIdentity, kCandidates, file);
 
   // The identity the input carries, so the body is reached whatever its line 2 says.
-  if (repaired.size() > kMagic.size() && repaired.compare(0, kMagic.size(), kMagic) == 0) {
+  const bool magic = repaired.compare(0, kMagic.size(), kMagic) == 0 ||
+                     repaired.compare(0, kMagicVersion1.size(), kMagicVersion1) == 0;
+  if (repaired.size() > kMagic.size() && magic) {
     const std::size_t end = repaired.find('\n', kMagic.size());
     if (end != std::string::npos) {
       const std::string own = repaired.substr(kMagic.size(), end - kMagic.size());

@@ -1,6 +1,6 @@
 /// @file fuzz_sieve_merge.cpp
 /// @brief libFuzzer target: bytes as 1-3 shard outputs of `sieve`, merged
-/// with tk::primes::merge_sieve_outputs as `sieve merge` does.
+/// with tk::primes::merge_sieve_outputs as `sieve merge` does (sieve_merge.cpp).
 ///
 /// The input is split at its first two 0x1E bytes (ASCII record separator)
 /// into up to three files (a third file keeps any further 0x1E bytes), each
@@ -12,12 +12,16 @@
 /// any other exception, crash, sanitizer report, hang or huge allocation is
 /// a bug.
 ///
+/// A merge takes only finished shard outputs: each file ends with the line
+/// "// sieve shard K/N of RUN: S candidates, complete" after S candidates,
+/// and the files are shards 1..N of one RUN, each once. The seeds named
+/// shards*_trailer are such sets. When a merge succeeds:
+///
 /// Oracles (switch off by name with TK_FUZZ_SKIP=a,b while a finding is open):
-///   empty_shard  JSON Lines and ABCD are the formats in which a shard with
-///                no survivors is an empty file. So when a merge whose first
-///                file with content starts with '{' or "ABCD " succeeds, it
-///                must also succeed with an empty file before and after the
-///                others, and write nothing (the intersection is empty).
+///   cut        it fails once any one file is cut short (by more than its
+///              final newline): a shard killed while writing never merges
+///   missing    with two or more files it fails without the last one
+///   duplicate  it fails with the first file given twice
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -25,8 +29,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,56 +44,33 @@ using tk::fuzz::null_output;
 
 constexpr std::size_t kMaxShards = 3;
 
-/// The first line InputFile would not skip: split at LF, one trailing CR dropped.
-std::string_view first_line(std::string_view bytes) {
-  while (!bytes.empty()) {
-    const std::size_t newline = bytes.find('\n');
-    std::string_view line = bytes.substr(0, newline);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (!line.empty()) return line;
-    if (newline == std::string_view::npos) break;
-    bytes.remove_prefix(newline + 1);
-  }
-  return {};
-}
-
-/// merge_sieve_outputs into memory; the error message when it throws.
-std::optional<std::string> merge_to_text(const std::vector<std::string>& paths, std::string& text) {
-  char* data = nullptr;
-  std::size_t size = 0;
-  std::FILE* out = open_memstream(&data, &size);
-  if (!out) std::abort();
-  std::optional<std::string> error;
+/// merge_sieve_outputs to /dev/null; true when it succeeds.
+bool merges(const std::vector<std::string>& paths) {
   try {
-    tk::primes::merge_sieve_outputs(paths, out);
-  } catch (const tk::Error& e) {
-    error = e.located_message();
+    tk::primes::merge_sieve_outputs(paths, null_output());
+  } catch (const tk::Error&) {
+    return false;
   }
-  std::fclose(out);
-  text.assign(data, size);
-  std::free(data);
-  return error;
+  return true;
 }
 
-void check_empty_shard(const std::vector<std::string>& paths, const std::vector<std::string_view>& parts) {
-  static MemoryFile empty("fuzz-shard-empty");
-  std::string_view model;
-  for (std::string_view part : parts)
-    if (!(model = first_line(part)).empty()) break;
-  if (!model.empty() && model.front() != '{' && !model.starts_with("ABCD ")) return;
-  empty.assign({});
-  std::vector<std::string> before{empty.path()}, after(paths);
-  before.insert(before.end(), paths.begin(), paths.end());
-  after.push_back(empty.path());
-  for (const auto* files : {&before, &after}) {
-    std::string text;
-    if (const auto error = merge_to_text(*files, text))
-      tk::fuzz::invariant_failed("empty_shard", std::string("with an empty shard ") +
-                                                    (files == &before ? "first" : "last") + ": " + *error);
-    if (!text.empty())
-      tk::fuzz::invariant_failed("empty_shard", std::string("with an empty shard ") +
-                                                    (files == &before ? "first" : "last") + " the merge wrote " +
-                                                    std::to_string(text.size()) + " bytes");
+/// Each file cut before the last byte of its last line (where the trailer
+/// ends), and halfway to it, must be refused.
+void check_cut(std::vector<std::string> paths, const std::vector<std::string_view>& parts) {
+  static MemoryFile cut("fuzz-shard-cut");
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const std::string_view whole = parts[i];
+    const std::size_t last = whole.find_last_not_of("\r\n");
+    if (last == std::string_view::npos) continue;
+    for (std::size_t size : {last / 2, last}) {
+      cut.assign(whole.substr(0, size));
+      const std::string original = paths[i];
+      paths[i] = cut.path();
+      if (merges(paths))
+        tk::fuzz::invariant_failed("cut", "file " + std::to_string(i + 1) + " cut to " + std::to_string(size) + " of " +
+                                              std::to_string(whole.size()) + " bytes still merges");
+      paths[i] = original;
+    }
   }
 }
 
@@ -108,12 +87,16 @@ void run(std::string_view bytes) {
     if (split == std::string_view::npos) break;
     bytes.remove_prefix(split + 1);
   }
-  try {
-    tk::primes::merge_sieve_outputs(paths, null_output());
-  } catch (const tk::Error&) {
-    return;
+  if (!merges(paths)) return;
+  if (tk::fuzz::oracle_enabled("cut")) check_cut(paths, parts);
+  if (paths.size() >= 2 && tk::fuzz::oracle_enabled("missing") &&
+      merges(std::vector<std::string>(paths.begin(), paths.end() - 1)))
+    tk::fuzz::invariant_failed("missing", "the merge succeeds without its last file");
+  if (tk::fuzz::oracle_enabled("duplicate")) {
+    std::vector<std::string> twice(paths);
+    twice.push_back(paths.front());
+    if (merges(twice)) tk::fuzz::invariant_failed("duplicate", "the merge succeeds with its first file given twice");
   }
-  if (tk::fuzz::oracle_enabled("empty_shard")) check_empty_shard(paths, parts);
 }
 
 }  // namespace

@@ -25,8 +25,10 @@ GeneralizedSieve::GeneralizedSieve(const SieveSpec& spec)
     : spec_(spec), roots_(spec), members_(spec.members()), count_(spec.count()),
       small_bound_(std::min(spec.p_max, kSmallPrimeBound)),
       block_count_(spec.p_max > small_bound_ ? (spec.p_max - small_bound_ + kBlockWidth - 1) / kBlockWidth : 0),
-      small_exponents_(spec.n < 64), bits_((count_ + 63) / 64, ~std::uint64_t(0)), survivors_(count_) {
-  if (count_ % 64) bits_.back() = (std::uint64_t(1) << (count_ % 64)) - 1;
+      small_exponents_(spec.n < 64), bits_((count_ + 63) / 64), survivors_(count_) {}
+
+std::uint64_t GeneralizedSieve::settled_count() const {
+  return small_done_ ? count_ : std::min(count_, next_segment_ * kSegmentBits);
 }
 
 std::uint64_t GeneralizedSieve::block_high(std::uint64_t block) const {
@@ -38,18 +40,21 @@ std::uint64_t GeneralizedSieve::sieved_to() const {
   return next_block_ == 0 ? small_bound_ : block_high(next_block_ - 1);
 }
 
-void GeneralizedSieve::restore(std::vector<std::uint64_t> bitmap, std::uint64_t next_block) {
-  if (next_block > block_count_ || bitmap.size() != bits_.size())
-    throw Error("checkpoint does not fit this run (its block of primes or its candidate count is out of range)");
+void GeneralizedSieve::restore(SieveBitmap bitmap, std::uint64_t next_segment, std::uint64_t next_block) {
+  const std::uint64_t segments = segment_count();
+  if (next_block > block_count_ || next_segment > segments || (next_segment < segments && next_block > 0) ||
+      bitmap.size() != bits_.size())
+    throw Error("checkpoint does not fit this run (its segment or block of primes or its candidate count is out of range)");
   bits_ = std::move(bitmap);
+  next_segment_ = next_segment;
   next_block_ = next_block;
-  small_done_ = true;
-  survivors_ = count_survivors();
+  small_done_ = next_segment == segments;
+  survivors_ = count_survivors() + (count_ - settled_count());
 }
 
 std::uint64_t GeneralizedSieve::count_survivors() const {
   std::uint64_t total = 0;
-  for (std::uint64_t word : bits_) total += static_cast<std::uint64_t>(std::popcount(word));
+  for_each_survivor([&](std::uint64_t) { ++total; });
   return total;
 }
 
@@ -62,12 +67,17 @@ bool GeneralizedSieve::candidate_is(std::uint64_t offset, std::uint32_t member, 
   return (without_c >> e) == k && (without_c & ((std::uint64_t(1) << e) - 1)) == 0;
 }
 
-std::vector<SieveFactor> GeneralizedSieve::sieve_segment(std::uint64_t segment, const std::vector<std::uint32_t>& primes,
-                                                         const std::vector<std::uint64_t>& roots, bool record) {
-  std::vector<SieveFactor> factors;
+GeneralizedSieve::SegmentResult GeneralizedSieve::sieve_segment(std::uint64_t segment,
+                                                                const std::vector<std::uint32_t>& primes,
+                                                                const std::vector<std::uint64_t>& roots, bool record) {
+  SegmentResult result;
+  std::vector<SieveFactor>& factors = result.factors;
   const std::uint64_t start = segment * kSegmentBits;
   const std::uint64_t length = std::min(kSegmentBits, count_ - start);
   std::uint64_t* words = bits_.data() + start / 64;  // this segment's words belong to this job alone
+  const std::size_t word_count = static_cast<std::size_t>((length + 63) / 64);
+  std::fill(words, words + word_count, ~std::uint64_t(0));
+  if (length % 64) words[word_count - 1] = (std::uint64_t(1) << (length % 64)) - 1;
   const std::size_t width = members_.size();
   for (std::size_t i = 0; i < primes.size(); ++i) {
     const std::uint64_t p = primes[i];
@@ -85,7 +95,8 @@ std::vector<SieveFactor> GeneralizedSieve::sieve_segment(std::uint64_t segment, 
       }
     }
   }
-  return factors;
+  for (std::size_t w = 0; w < word_count; ++w) result.survivors += static_cast<std::uint64_t>(std::popcount(words[w]));
+  return result;
 }
 
 void GeneralizedSieve::sieve_small_primes(const SieveControl& control) {
@@ -97,26 +108,30 @@ void GeneralizedSieve::sieve_small_primes(const SieveControl& control) {
   const std::vector<std::uint32_t> primes(wide_primes.begin(), wide_primes.end());  // below 2^20: halves the cache use
 
   const bool record = static_cast<bool>(control.on_factor);
-  const std::uint64_t segments = (count_ + kSegmentBits - 1) / kSegmentBits;
-  std::uint64_t job = 0, done = 0;
-  OrderedPool<std::uint64_t, std::vector<SieveFactor>> pool(
+  const std::uint64_t segments = segment_count();
+  // Segments are settled in order, so the settled ones are always a prefix
+  // that a checkpoint can hold.
+  OrderedPool<std::uint64_t, SegmentResult> pool(
       control.threads, [&](std::uint64_t& segment) { return sieve_segment(segment, primes, roots, record); },
-      [&](std::vector<SieveFactor>& factors) {
-        for (const SieveFactor& factor : factors) control.on_factor(factor);
-        if (control.after_segment) control.after_segment(++done, segments);
+      [&](SegmentResult& result) {
+        for (const SieveFactor& factor : result.factors) control.on_factor(factor);
+        const std::uint64_t length = std::min(kSegmentBits, count_ - next_segment_ * kSegmentBits);
+        survivors_ -= length - result.survivors;
+        ++next_segment_;
+        if (control.after_segment) control.after_segment(next_segment_, segments);
       },
       2 * static_cast<std::size_t>(control.threads));
-  for (; job < segments; ++job) {
-    if (control.should_stop && control.should_stop()) break;  // nothing to save: the bitmap is half done
+  for (std::uint64_t job = next_segment_; job < segments; ++job) {
+    if (control.should_stop && control.should_stop()) break;
     pool.submit(job);
   }
   pool.finish();
-  if (job < segments) return;
-  survivors_ = count_survivors();
-  small_done_ = true;
+  small_done_ = next_segment_ == segments;
 }
 
-std::vector<SieveFactor> GeneralizedSieve::sieve_block(std::uint64_t block) {
+std::optional<std::vector<SieveFactor>> GeneralizedSieve::sieve_block(std::uint64_t block,
+                                                                     const std::function<bool()>& stop) {
+  if (stop && stop()) return std::nullopt;  // queued before the stop: not worth starting
   thread_local std::vector<std::uint64_t> primes, roots;
   primes.clear();
   primesieve::generate_primes(block_low(block), block_high(block), &primes);
@@ -125,8 +140,18 @@ std::vector<SieveFactor> GeneralizedSieve::sieve_block(std::uint64_t block) {
   roots_.find(primes.data(), primes.size(), roots.data());
   std::vector<SieveFactor> factors;
   std::uint64_t* words = bits_.data();
+  // With a huge bitmap one block is minutes of work: look for a stop every
+  // 2^20 or so steps through the bitmap (at most a few tenths of a second of
+  // cache misses on a bitmap of gigabytes).
+  constexpr std::uint64_t kStepsBetweenChecks = std::uint64_t(1) << 20;
+  std::uint64_t steps = 0;
   for (std::size_t i = 0; i < primes.size(); ++i) {
     const std::uint64_t p = primes[i];
+    steps += width * (count_ / p + 1);
+    if (steps >= kStepsBetweenChecks) {
+      steps = 0;
+      if (stop && stop()) return std::nullopt;
+    }
     for (std::size_t m = 0; m < width; ++m) {
       const std::uint64_t root = roots[i * width + m];
       if (root == SieveRootFinder::kNoRoot) continue;
@@ -145,13 +170,18 @@ bool GeneralizedSieve::sieve_large_primes(const SieveControl& control) {
   if (!small_done_) return false;
   struct BlockResult {
     std::uint64_t block;
-    std::vector<SieveFactor> factors;
+    std::optional<std::vector<SieveFactor>> factors;  ///< none: cut short by a stop
   };
   std::uint64_t* words = bits_.data();
+  bool cut_short = false;  // a block was dropped: no later block may count as done
   OrderedPool<std::uint64_t, BlockResult> pool(
-      control.threads, [&](std::uint64_t& block) { return BlockResult{block, sieve_block(block)}; },
+      control.threads, [&](std::uint64_t& block) { return BlockResult{block, sieve_block(block, control.should_stop)}; },
       [&](BlockResult& result) {
-        for (const SieveFactor& factor : result.factors) {
+        if (cut_short || !result.factors) {
+          cut_short = true;
+          return;
+        }
+        for (const SieveFactor& factor : *result.factors) {
           std::atomic_ref<std::uint64_t> word(words[factor.offset >> 6]);
           const std::uint64_t mask = std::uint64_t(1) << (factor.offset & 63);
           const std::uint64_t value = word.load(std::memory_order_relaxed);
@@ -173,6 +203,7 @@ bool GeneralizedSieve::sieve_large_primes(const SieveControl& control) {
     pool.submit(block);
   }
   pool.finish();
+  stopped = stopped || cut_short;
   if (!stopped) next_block_ = block_count_;
   return !stopped;
 }

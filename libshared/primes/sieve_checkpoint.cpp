@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -15,7 +16,8 @@ namespace tk::primes {
 
 namespace {
 
-constexpr std::string_view kMagic = "toolkit-sieve-checkpoint 1\n";
+constexpr std::string_view kMagic = "toolkit-sieve-checkpoint 2\n";
+constexpr std::string_view kMagicVersion1 = "toolkit-sieve-checkpoint 1\n";  // no segment count: all done
 
 std::uint64_t fnv1a(const std::string& bytes) {
   std::uint64_t hash = 0xcbf29ce484222325ull;
@@ -90,16 +92,24 @@ void save_checkpoint(const std::string& path, const GeneralizedSieve& sieve, con
   bytes += identity + "\n";
   put_u64(bytes, sieve.next_block());
   put_u64(bytes, factors_bytes);
-  put_u64(bytes, sieve.survivors());
-  std::uint64_t previous = 0;
+  put_u64(bytes, sieve.next_segment());
+  const std::size_t survivors_at = bytes.size();
+  put_u64(bytes, 0);  // the count of settled survivors, filled in below
+  std::uint64_t previous = 0, survivors = 0;
   sieve.for_each_survivor([&](std::uint64_t offset) {
     put_varint(bytes, offset - previous);
     previous = offset;
+    ++survivors;
   });
+  std::string count;
+  put_u64(count, survivors);
+  bytes.replace(survivors_at, count.size(), count);
   put_u64(bytes, fnv1a(bytes));
 
-  io::write_file_atomically(path, bytes, path + ".tmp");
+  io::write_file_atomically(path, bytes, checkpoint_temporary(path));
 }
+
+std::string checkpoint_temporary(const std::string& path) { return path + ".tmp"; }
 
 std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const std::string& identity,
                                                std::uint64_t candidate_count) {
@@ -116,7 +126,8 @@ std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const st
   if (read_error) fail(path, "read");
 
   Reader whole(bytes, bytes.size(), path);
-  if (bytes.size() < kMagic.size() + 8 || bytes.compare(0, kMagic.size(), kMagic) != 0) throw whole.damaged();
+  const bool version1 = bytes.compare(0, kMagicVersion1.size(), kMagicVersion1) == 0;
+  if (bytes.size() < kMagic.size() + 8 || (!version1 && bytes.compare(0, kMagic.size(), kMagic) != 0)) throw whole.damaged();
   std::uint64_t stored = 0;
   for (std::size_t i = 0; i < 8; ++i)
     stored |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[bytes.size() - 8 + i])) << (8 * i);
@@ -131,13 +142,18 @@ std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const st
                 Location{path, 0});
   checkpoint.next_block = in.u64();
   checkpoint.factors_bytes = in.u64();
+  const std::uint64_t segments = (candidate_count + GeneralizedSieve::kSegmentBits - 1) / GeneralizedSieve::kSegmentBits;
+  checkpoint.next_segment = version1 ? segments : in.u64();
+  if (checkpoint.next_segment > segments || (checkpoint.next_segment < segments && checkpoint.next_block > 0))
+    throw in.damaged();
+  const std::uint64_t settled = std::min(candidate_count, checkpoint.next_segment * GeneralizedSieve::kSegmentBits);
   const std::uint64_t survivors = in.u64();
-  if (survivors > candidate_count) throw in.damaged();
+  if (survivors > settled) throw in.damaged();
   checkpoint.bitmap.assign((candidate_count + 63) / 64, 0);
   std::uint64_t offset = 0;
   for (std::uint64_t i = 0; i < survivors; ++i) {
     const std::uint64_t gap = in.varint();
-    if (gap > candidate_count || (i > 0 && gap == 0) || (offset += gap) >= candidate_count) throw in.damaged();
+    if (gap > settled || (i > 0 && gap == 0) || (offset += gap) >= settled) throw in.damaged();
     checkpoint.bitmap[offset / 64] |= std::uint64_t(1) << (offset % 64);
   }
   if (!in.at_end()) throw in.damaged();

@@ -15,6 +15,7 @@
 
 #include "cli/progress.hpp"
 #include "io/error.hpp"
+#include "io/file_lock.hpp"
 #include "primes/sieve_checkpoint.hpp"
 #include "primes/sieve_output.hpp"
 
@@ -76,13 +77,23 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
                           const std::function<void(const std::string&)>& warn) {
   const SieveSpec& spec = sieve.spec();
   const std::string identity = checkpoint_identity(spec, options.shard_index, options.shard_count);
+  if (options.resume && options.checkpoint_path.empty()) throw UsageError("--resume needs --checkpoint FILE");
+  std::unique_ptr<io::FileLock> lock;
+  if (!options.checkpoint_path.empty()) {  // find out now, not after hours of sieving
+    const std::string directory = std::filesystem::path(options.checkpoint_path).parent_path().string();
+    if (::access(directory.empty() ? "." : directory.c_str(), W_OK) != 0)
+      throw Error(fmt::format("cannot write a checkpoint there: {}", std::strerror(errno)), Location{options.checkpoint_path, 0});
+    // Two runs on one checkpoint would overwrite each other's state.
+    lock = std::make_unique<io::FileLock>(options.checkpoint_path + ".lock", options.checkpoint_path, "this checkpoint");
+    std::error_code ignored;  // a temporary left by a killed run is only ever half a checkpoint
+    std::filesystem::remove(checkpoint_temporary(options.checkpoint_path), ignored);
+  }
   std::uint64_t factors_bytes = 0;
   bool resumed = false;
   if (options.resume) {
-    if (options.checkpoint_path.empty()) throw UsageError("--resume needs --checkpoint FILE");
     if (auto checkpoint = load_checkpoint(options.checkpoint_path, identity, spec.count())) {
       try {
-        sieve.restore(std::move(checkpoint->bitmap), checkpoint->next_block);
+        sieve.restore(std::move(checkpoint->bitmap), checkpoint->next_segment, checkpoint->next_block);
       } catch (const Error& e) {
         throw Error(e.what(), Location{options.checkpoint_path, 0});
       }
@@ -92,15 +103,10 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
       warn("no checkpoint at " + options.checkpoint_path + ": starting from the beginning");
     }
   }
-  if (!options.checkpoint_path.empty()) {  // find out now, not after hours of sieving
-    const std::string directory = std::filesystem::path(options.checkpoint_path).parent_path().string();
-    if (::access(directory.empty() ? "." : directory.c_str(), W_OK) != 0)
-      throw Error(fmt::format("cannot write a checkpoint there: {}", std::strerror(errno)), Location{options.checkpoint_path, 0});
-  }
   FactorsFile factors(options.factors_path, factors_bytes, resumed);
 
   auto save = [&] {
-    if (!options.checkpoint_path.empty() && sieve.small_primes_done()) save_checkpoint(options.checkpoint_path, sieve, identity, factors.sync());
+    if (!options.checkpoint_path.empty()) save_checkpoint(options.checkpoint_path, sieve, identity, factors.sync());
   };
   SieveControl control;
   control.threads = options.threads;
@@ -109,6 +115,8 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
   if (factors) control.on_factor = [&](const SieveFactor& factor) { factors.write(factor_line(spec, factor)); };
 
   SieveRunOutcome outcome;
+  // Workers ask should_stop in the middle of a block, while the calling thread sets this.
+  std::atomic<bool> rate_stopped{false};
   cli::Progress progress("sieve", options.progress);
   const auto started = Clock::now();
   auto last_save = started, window_start = started, shown_start = started;
@@ -117,21 +125,24 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
   const double done_at_start = prime_count_estimate(sieve.sieved_to()) / prime_count_estimate(spec.p_max);
   const double total = prime_count_estimate(spec.p_max);
   control.should_stop = [&] {
-    return outcome.rate_stopped || (options.stop_signal && options.stop_signal->load() != 0);
+    return rate_stopped.load() || (options.stop_signal && options.stop_signal->load() != 0);
+  };
+  auto save_when_due = [&](Clock::time_point now) {
+    if (!options.checkpoint_path.empty() && std::chrono::duration<double>(now - last_save).count() >= options.checkpoint_seconds) {
+      save();
+      last_save = now;
+    }
   };
   control.after_block = [&] {
     const auto now = Clock::now();
     const double window = std::chrono::duration<double>(now - window_start).count();
     const double rate = window > 0 ? static_cast<double>(window_survivors - sieve.survivors()) / window : 0.0;
     if (options.min_rate > 0 && window >= options.rate_window_seconds) {
-      if (rate < options.min_rate) outcome.rate_stopped = true;
+      if (rate < options.min_rate) rate_stopped = true;
       window_start = now;
       window_survivors = sieve.survivors();
     }
-    if (!options.checkpoint_path.empty() && std::chrono::duration<double>(now - last_save).count() >= options.checkpoint_seconds) {
-      save();
-      last_save = now;
-    }
+    save_when_due(now);
     if (options.progress) {
       // The rate shown is over the last ten seconds or so, not since the start.
       const double shown = std::chrono::duration<double>(now - shown_start).count();
@@ -149,12 +160,14 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
                       fmt::format("p = {}, {} left, {:.0f} removed/s", sieve.sieved_to(), sieve.survivors(), shown_rate));
     }
   };
-  if (options.progress)
-    control.after_segment = [&](std::uint64_t done, std::uint64_t segments) {
+  control.after_segment = [&](std::uint64_t done, std::uint64_t segments) {
+    save_when_due(Clock::now());
+    if (options.progress)
       progress.update(done, static_cast<double>(done) / static_cast<double>(segments), fmt::format("primes up to {}: segment {} of {}", sieve.small_prime_bound(), done, segments));
-    };
+  };
   if (!sieve.small_primes_done()) sieve.sieve_small_primes(control);
   outcome.finished = sieve.sieve_large_primes(control);
+  outcome.rate_stopped = rate_stopped.load();
   progress.finish();
   save();
   outcome.depth = outcome.finished ? spec.p_max : sieve.sieved_to();

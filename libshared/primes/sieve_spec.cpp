@@ -58,11 +58,12 @@ std::vector<SieveMember> SieveSpec::members() const {
   return {};
 }
 
-std::string SieveSpec::identity() const {
+std::string SieveSpec::candidates_identity() const {
   std::string text = fmt::format("form={} length={} n={} ", form_name(), length, n);
-  text += parametrised ? fmt::format("h0={} c={} x={}:{}", h0, c, x_min, x_max) : fmt::format("k={}:{}", x_min, x_max);
-  return text + fmt::format(" pmax={}", p_max);
+  return text + (parametrised ? fmt::format("h0={} c={} x={}:{}", h0, c, x_min, x_max) : fmt::format("k={}:{}", x_min, x_max));
 }
+
+std::string SieveSpec::identity() const { return candidates_identity() + fmt::format(" pmax={}", p_max); }
 
 void SieveSpec::validate() const {
   if (n == 0) throw Error("the exponent n must be at least 1");

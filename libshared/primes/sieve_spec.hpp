@@ -37,6 +37,9 @@ struct SieveSpec {
   /// One line that names every parameter that decides the survivors; a
   /// checkpoint or shard must match it to be combined with this run.
   std::string identity() const;
+  /// identity() without pmax: the candidates, which shards sieved to
+  /// different depths still share.
+  std::string candidates_identity() const;
 
   /// Throws UsageError for impossible parameters and Error for values that
   /// make every candidate composite (so the run would be pointless).

@@ -314,9 +314,10 @@ class SieveFiles : public ::testing::Test {
     std::ifstream in(file, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
-  std::string write(GeneralizedSieve& sieve, SieveOutputFormat format, const std::string& name) const {
+  std::string write(GeneralizedSieve& sieve, SieveOutputFormat format, const std::string& name, unsigned shard_index = 0,
+                    unsigned shard_count = 1) const {
     std::FILE* out = std::fopen(path(name).c_str(), "wb");
-    write_survivors(sieve, format, sieve.spec().p_max, out);
+    write_survivors(sieve, format, sieve.spec().p_max, out, shard_index, shard_count);
     std::fclose(out);
     return path(name);
   }
@@ -340,7 +341,7 @@ TEST_F(SieveFiles, CheckpointRoundTripAndDamage) {
   EXPECT_EQ(loaded->factors_bytes, 1234u);
 
   GeneralizedSieve resumed(spec);
-  resumed.restore(loaded->bitmap, loaded->next_block);
+  resumed.restore(loaded->bitmap, loaded->next_segment, loaded->next_block);
   GeneralizedSieve straight(spec);
   EXPECT_EQ(survivors_of(resumed), survivors_of(straight));
 
@@ -355,6 +356,46 @@ TEST_F(SieveFiles, CheckpointRoundTripAndDamage) {
   }
   std::ofstream(path("short"), std::ios::binary) << bytes.substr(0, bytes.size() / 3);
   EXPECT_THROW(load_checkpoint(path("short"), identity, spec.count()), tk::Error);
+}
+
+TEST_F(SieveFiles, CheckpointInTheSmallPrimePhase) {
+  // Two segments of 2^21 (the second short); stopped after the first, saved, loaded and
+  // resumed, the run removes the same candidates in the same order.
+  const SieveSpec spec = plain(SieveForm::twin, 1000, 1, GeneralizedSieve::kSegmentBits + 1000, 1100000);
+  auto digest = [](std::uint64_t& hash, const SieveFactor& factor) {
+    hash = (hash ^ factor.offset) * 0x100000001b3ull;
+    hash = (hash ^ factor.p) * 0x100000001b3ull;
+  };
+  std::uint64_t straight_hash = 0;
+  GeneralizedSieve straight(spec);
+  SieveControl all;
+  all.on_factor = [&](const SieveFactor& factor) { digest(straight_hash, factor); };
+  ASSERT_TRUE(straight.sieve_large_primes(all));
+
+  std::uint64_t hash = 0;
+  GeneralizedSieve first(spec);
+  SieveControl control;
+  control.on_factor = [&](const SieveFactor& factor) { digest(hash, factor); };
+  control.should_stop = [&] { return first.next_segment() >= 1; };
+  EXPECT_FALSE(first.sieve_large_primes(control));
+  EXPECT_EQ(first.next_segment(), 1u);
+  EXPECT_FALSE(first.small_primes_done());
+  const std::string identity = checkpoint_identity(spec, 0, 1);
+  save_checkpoint(path("state"), first, identity, 0);
+  auto loaded = load_checkpoint(path("state"), identity, spec.count());
+  ASSERT_TRUE(loaded);
+  EXPECT_EQ(loaded->next_segment, 1u);
+  EXPECT_EQ(loaded->next_block, 0u);
+
+  GeneralizedSieve resumed(spec);
+  resumed.restore(std::move(loaded->bitmap), loaded->next_segment, loaded->next_block);
+  EXPECT_EQ(resumed.survivors(), first.survivors());
+  SieveControl rest;
+  rest.on_factor = control.on_factor;
+  ASSERT_TRUE(resumed.sieve_large_primes(rest));
+  EXPECT_EQ(hash, straight_hash);
+  EXPECT_EQ(survivors_of(resumed), survivors_of(straight));
+  EXPECT_EQ(resumed.survivors(), straight.survivors());
 }
 
 TEST_F(SieveFiles, OutputFormats) {
@@ -390,27 +431,57 @@ TEST_F(SieveFiles, MergeOfShardsEqualsOneRun) {
       control.shard_index = k;
       control.shard_count = 3;
       part.sieve_large_primes(control);
-      shards.push_back(write(part, format, "shard" + std::to_string(k)));
+      shards.push_back(write(part, format, "shard" + std::to_string(k), k, 3));
     }
     std::FILE* out = std::fopen(path("merged").c_str(), "wb");
     merge_sieve_outputs(shards, out);
     std::fclose(out);
     EXPECT_EQ(slurp(path("merged")), expected) << static_cast<int>(format);
+
+    // A shard cut short anywhere (a sieve killed while writing it) is refused;
+    // only the final newline may go.
+    const std::string whole_shard = slurp(shards[1]);
+    std::vector<std::size_t> cuts;  // every byte of the header and of the last lines, and some between
+    for (std::size_t size = 0; size + 1 < whole_shard.size(); ++size)
+      if (size < 60 || size + 100 > whole_shard.size() || size % 211 == 0) cuts.push_back(size);
+    for (std::size_t size : cuts) {
+      std::ofstream(shards[1], std::ios::binary | std::ios::trunc) << whole_shard.substr(0, size);
+      std::FILE* sink = std::fopen(path("merged").c_str(), "wb");
+      EXPECT_THROW(merge_sieve_outputs(shards, sink), tk::Error) << static_cast<int>(format) << " cut at " << size;
+      std::fclose(sink);
+    }
+    std::ofstream(shards[1], std::ios::binary | std::ios::trunc) << whole_shard;
+    // Each shard once, none missing.
+    for (const auto& files : {std::vector<std::string>{shards[0], shards[1]},
+                              std::vector<std::string>{shards[0], shards[1], shards[2], shards[2]},
+                              std::vector<std::string>{shards[0], shards[0], shards[1], shards[2]}}) {
+      std::FILE* sink = std::fopen(path("merged").c_str(), "wb");
+      EXPECT_THROW(merge_sieve_outputs(files, sink), tk::Error) << files.size();
+      std::fclose(sink);
+    }
   }
-  // A shard without survivors writes an empty file in JSON Lines and ABCD.
-  std::ofstream(path("empty")).flush();
-  std::ofstream(path("abcd")) << "ABCD $a*2^5+1 & $a*2^5-1 [6] // Sieved to 1000\n30\n";
-  for (const auto& files : {std::vector<std::string>{path("empty"), path("abcd")}, {path("abcd"), path("empty")}}) {
-    std::FILE* merged = std::fopen(path("merged").c_str(), "wb");
-    merge_sieve_outputs(files, merged);
-    std::fclose(merged);
-    EXPECT_EQ(slurp(path("merged")), "");
-  }
+  // One run's output (no trailer) and garbage are not shard outputs.
   std::ofstream(path("other")) << "1000:M:1:2:2\n3 5\n";
-  std::ofstream(path("mine")) << "1000:T:0:2:3\n3 5\n";
+  std::ofstream(path("hello")) << "hello\n";
   std::FILE* out = std::fopen(path("merged").c_str(), "wb");
-  EXPECT_THROW(merge_sieve_outputs({path("mine"), path("other")}, out), tk::Error);
+  EXPECT_THROW(merge_sieve_outputs({path("other")}, out), tk::Error);
+  EXPECT_THROW(merge_sieve_outputs({path("hello")}, out), tk::Error);
   std::fclose(out);
+}
+
+TEST(SieveShardTrailer, RoundTripAndCutShort) {
+  const ShardTrailer trailer{2, 5, 1225, "form=twin length=1 n=1000 k=1:3000"};
+  const std::string line = format_shard_trailer(trailer);
+  EXPECT_EQ(line, "// sieve shard 3/5 of form=twin length=1 n=1000 k=1:3000: 1225 candidates, complete");
+  const auto parsed = parse_shard_trailer(line);
+  ASSERT_TRUE(parsed);
+  EXPECT_EQ(parsed->index, 2u);
+  EXPECT_EQ(parsed->count, 5u);
+  EXPECT_EQ(parsed->candidates, 1225u);
+  EXPECT_EQ(parsed->run, trailer.run);
+  for (std::size_t size = 0; size < line.size(); ++size) EXPECT_FALSE(parse_shard_trailer(line.substr(0, size))) << size;
+  EXPECT_FALSE(parse_shard_trailer("// sieve shard 6/5 of x: 1 candidates, complete"));
+  EXPECT_FALSE(parse_shard_trailer("// sieve shard 1/1 of x: 1 candidates, complete"));
 }
 
 }  // namespace

@@ -78,12 +78,14 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
   tk::primes::GeneralizedSieve sieve(spec);
   const auto outcome = tk::primes::run_sieve(sieve, run, [&](const std::string& text) { tool.warn(text); });
   if (const int signal = g_stop_signal.load()) {
+    const char* saved = o.checkpoint.empty() ? "; no --checkpoint, so the work is lost" : "; checkpoint saved, continue with --resume";
     if (!sieve.small_primes_done())
-      std::fprintf(stderr, "sieve: stopped by signal %d while the primes up to 2^20 sieved; nothing to save\n", signal);
+      std::fprintf(stderr, "sieve: stopped by signal %d while the primes up to 2^20 sieved, after %llu of %llu segments%s\n",
+                   signal, static_cast<unsigned long long>(sieve.next_segment()),
+                   static_cast<unsigned long long>((sieve.spec().count() + sieve.kSegmentBits - 1) / sieve.kSegmentBits), saved);
     else
       std::fprintf(stderr, "sieve: stopped by signal %d after p = %llu%s\n", signal,
-                   static_cast<unsigned long long>(sieve.sieved_to()),
-                   o.checkpoint.empty() ? "; no --checkpoint, so the work is lost" : "; checkpoint saved, continue with --resume");
+                   static_cast<unsigned long long>(sieve.sieved_to()), saved);
     std::signal(signal, SIG_DFL);
     std::raise(signal);
   }
@@ -93,7 +95,7 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
                         : o.abc   ? Format::abc
                         : o.abcd  ? Format::abcd
                         : tool.output_format() == tk::io::OutputFormat::csv ? Format::csv : Format::json_lines;
-  tk::primes::write_survivors(sieve, format, outcome.depth, stdout);
+  tk::primes::write_survivors(sieve, format, outcome.depth, stdout, run.shard_index, run.shard_count);
 }
 
 void run_primes(tk::cli::ToolApp& tool, const std::string& from_text, const std::string& to_text, bool count, bool json) {
