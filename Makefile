@@ -27,7 +27,10 @@ demo: build
 # Every test in the release build, then again under AddressSanitizer +
 # UndefinedBehaviorSanitizer, except the *_oracle suites: they repeat the
 # main suites' code paths at volume against PARI/GP and Python (minutes
-# under the sanitizers), and the release pass already holds them.
+# under the sanitizers), and the release pass already holds them; and the
+# kill loops (*_faults, toolkit_fault_injection): they test what a killed
+# process leaves on disk, timed by the clock, while the code they read back
+# runs under the sanitizers in the unit tests and the main suites.
 test: test-fast test-sanitize
 
 test-fast: build
@@ -37,7 +40,7 @@ test-sanitize: deps test-deps
 	$(CMAKE) -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOOLKIT_SANITIZE=ON $(CMAKE_FLAGS)
 	$(CMAKE) --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && TOOLKIT_SANITIZED=1 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  $(CTEST) --output-on-failure -j $(JOBS) -E '_oracle$$'
+	  $(CTEST) --output-on-failure -j $(JOBS) -E '_oracle$$|_faults$$|fault_injection$$'
 
 # Slow tests outside the default suite: the seed's record primes (minutes).
 test-slow: build
