@@ -5,6 +5,9 @@
 #include <fstream>
 #include <iterator>
 
+#include <fmt/format.h>
+
+#include "cli/option_checks.hpp"
 #include "io/error.hpp"
 #include "io/record.hpp"
 
@@ -17,13 +20,15 @@ void take(std::optional<T>& mine, const std::optional<T>& theirs) {
   if (theirs) mine = theirs;
 }
 
-void check_positive(double value, const char* name) {
-  if (!(value > 0) || !std::isfinite(value)) throw Error(std::string(name) + " must be a positive number");
+/// "NAME: must be a number from L to H, not V": gcode-pulse names the
+/// option from NAME, a machine file's error names the file.
+void check_range(double value, SettingRange range, const char* name) {
+  const std::string problem = cli::out_of_range(value, range.low, range.high);
+  if (!problem.empty()) throw Error(fmt::format("{}: {}, not {:g}", name, problem, value));
 }
 
-void check_positive(const std::array<double, 3>& values, const char* name) {
-  for (double value : values)
-    if (!(value > 0) || !std::isfinite(value)) throw Error(std::string(name) + " must be three positive numbers");
+void check_range(const std::array<double, 3>& values, SettingRange range, const char* name) {
+  for (double value : values) check_range(value, range, name);
 }
 
 std::array<double, 3> triple(const Record& value, const std::string& key) {
@@ -58,44 +63,44 @@ void MachineSettings::override_with(const MachineSettings& over) {
 void MachineSettings::apply_to(PulseOptions& options) const {
   MachineLimits& limits = options.limits;
   if (steps_per_mm) {
-    check_positive(*steps_per_mm, "steps_per_mm");
+    check_range(*steps_per_mm, kStepsPerMmRange, "steps_per_mm");
     options.steps_per_mm = *steps_per_mm;
   }
   if (accel) {
-    check_positive(*accel, "accel");
+    check_range(*accel, kAccelRange, "accel");
     limits.acceleration = *accel;
   }
   if (rapid) {
-    check_positive(*rapid, "rapid");
+    check_range(*rapid, kFeedRange, "rapid");
     limits.rapid_speed = *rapid / 60;
   }
   // The feed cap defaults to the rapid speed.
   limits.max_speed = limits.rapid_speed;
   if (max_feed) {
-    check_positive(*max_feed, "max_feed");
+    check_range(*max_feed, kFeedRange, "max_feed");
     limits.max_speed = *max_feed / 60;
   }
   if (axis_max_feed) {
-    check_positive(*axis_max_feed, "axis_max_feed");
+    check_range(*axis_max_feed, kFeedRange, "axis_max_feed");
     for (int axis = 0; axis < 3; ++axis) limits.axis_speed[axis] = (*axis_max_feed)[axis] / 60;
   }
   if (axis_accel) {
-    check_positive(*axis_accel, "axis_accel");
+    check_range(*axis_accel, kAccelRange, "axis_accel");
     limits.axis_acceleration = *axis_accel;
   }
   if (junction_deviation) {
-    if (!(*junction_deviation >= 0) || !std::isfinite(*junction_deviation))
-      throw Error("junction_deviation must not be negative");
+    check_range(*junction_deviation, kJunctionDeviationRange, "junction_deviation");
     limits.junction_deviation = *junction_deviation;
   }
   if (lookahead) {
-    if (*lookahead == 0) throw Error("lookahead must be at least 1");
+    check_range(static_cast<double>(*lookahead), kLookaheadRange, "lookahead");
     limits.lookahead = *lookahead;
   }
   if (start) {
     for (int axis = 0; axis < 3; ++axis)
       if (!(std::fabs((*start)[axis]) <= options.interpreter.max_coordinate_mm))
-        throw Error("start must be three numbers within the coordinate range");
+        throw Error(fmt::format("start: must be three numbers from {0:g} to {1:g}, the coordinate range", -options.interpreter.max_coordinate_mm,
+                                options.interpreter.max_coordinate_mm));
     options.interpreter.start = Vec3{(*start)[0], (*start)[1], (*start)[2]};
   }
 }

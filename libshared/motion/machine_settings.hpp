@@ -26,6 +26,22 @@
 
 namespace tk::motion {
 
+/// The range a setting takes (gcode-pulse(1), OPTIONS), the same from the
+/// command line and from a machine file.
+struct SettingRange {
+  double low, high;
+};
+/// A step per mm to a step per nanometre.
+inline constexpr SettingRange kStepsPerMmRange{1, 1e6};
+/// Feeds and speeds, mm/min; 1e12 stands for no limit (ideal timing).
+inline constexpr SettingRange kFeedRange{0.01, 1e12};
+/// Accelerations, mm/s^2; 1e12 stands for instant.
+inline constexpr SettingRange kAccelRange{0.01, 1e12};
+/// Corner rounding, mm: up to the coordinate range (none at all).
+inline constexpr SettingRange kJunctionDeviationRange{0, 1e6};
+/// Blocks planned together: the planner holds that many.
+inline constexpr SettingRange kLookaheadRange{1, 1e5};
+
 struct MachineSettings {
   std::optional<std::array<double, 3>> steps_per_mm, axis_max_feed, axis_accel, start;
   std::optional<double> rapid, max_feed, accel, junction_deviation;

@@ -16,7 +16,11 @@
 namespace tk::motion {
 
 SvgWindow parse_svg_window(const std::string& text) {
-  const auto refuse = [] { return UsageError("--window needs X0,Y0,X1,Y1 in mm with X0 < X1 and Y0 < Y1"); };
+  // The interpreter's coordinate range bounds the window too.
+  const auto refuse = [] {
+    return UsageError(fmt::format("--window needs X0,Y0,X1,Y1 in mm from {0:g} to {1:g} with X0 < X1 and Y0 < Y1", -InterpreterOptions{}.max_coordinate_mm,
+                                  InterpreterOptions{}.max_coordinate_mm));
+  };
   std::vector<double> v;
   try {
     v = cli::parse_numbers(text, "--window", 4);
@@ -25,6 +29,8 @@ SvgWindow parse_svg_window(const std::string& text) {
   }
   const SvgWindow w{v[0], v[1], v[2], v[3]};
   if (!(w.x0 < w.x1) || !(w.y0 < w.y1)) throw refuse();
+  for (const double corner : {w.x0, w.y0, w.x1, w.y1})
+    if (!(std::abs(corner) <= InterpreterOptions{}.max_coordinate_mm)) throw refuse();
   return w;
 }
 

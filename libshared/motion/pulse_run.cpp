@@ -9,6 +9,7 @@
 #include "io/error.hpp"
 #include "io/input_file.hpp"
 #include "motion/arc_geometry.hpp"
+#include "motion/pulse_estimate.hpp"
 
 namespace tk::motion {
 
@@ -63,6 +64,7 @@ void PulseRun::run_lines(const std::string& path) {
       for (const Motion& motion : motions_) {
         check_counter_range(motion);
         check_synchronised_speed(motion);
+        check_implied_pulses(motion);
       }
     } catch (const Error& e) {
       throw Error(e.what(), input.where());
@@ -99,6 +101,15 @@ void PulseRun::check_synchronised_speed(const Motion& motion) const {
     throw Error(fmt::format("G33 needs {:.6g} mm/min along its line (K times S), more than the machine allows there "
                             "({:.6g} mm/min)",
                             motion.feed * 60, cap * 60));
+}
+
+// Before the block is planned: a move of a kilometre at fine steps implies
+// 10^11 pulses, hours of stepping and terabytes of records.
+void PulseRun::check_implied_pulses(const Motion& motion) {
+  implied_pulses_ += implied_pulses(motion, options_.steps_per_mm);
+  if (implied_pulses_ > options_.max_pulses)
+    throw Error(fmt::format("the program implies {:.4g} step pulses up to this block, more than --max-pulses {:g} allows",
+                            implied_pulses_, options_.max_pulses));
 }
 
 void PulseRun::finish() { planner_.finish(ready_); }

@@ -24,6 +24,10 @@ struct PulseOptions {
   std::array<double, 3> steps_per_mm{200, 200, 400};
   MachineLimits limits;
   InterpreterOptions interpreter;
+  /// The most pulses a run may imply (gcode-pulse --max-pulses): the block
+  /// whose motions would take the total past it is an error at its line.
+  double max_pulses = kDefaultMaxPulses;
+  static constexpr double kDefaultMaxPulses = 1e9;
 };
 
 /// What a run did, for --summary.
@@ -71,6 +75,7 @@ class PulseRun {
   void run_lines(const std::string& path);
   void check_counter_range(const Motion& motion) const;
   void check_synchronised_speed(const Motion& motion) const;
+  void check_implied_pulses(const Motion& motion);
   void on_block(const PlannedBlock& block);
 
   PulseOptions options_;
@@ -88,6 +93,7 @@ class PulseRun {
   PathSvg* svg_ = nullptr;
   std::array<std::int64_t, 3> lattice_{};  ///< followed only when drawing
   std::vector<Motion> motions_;
+  double implied_pulses_ = 0;  ///< by the blocks read so far (pulse_estimate.hpp)
 };
 
 }  // namespace tk::motion

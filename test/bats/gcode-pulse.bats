@@ -20,7 +20,7 @@ setup() {
 METHODS="nearest direct bresenham dda"
 # Acceleration, junction limits and the feed cap made to vanish, so that the
 # duration is the oracle's: feed moves at their feed, rapids at --rapid.
-NO_ACCEL="--accel 1e12 --junction-deviation 1e9 --max-feed 1e12 --rapid 5000"
+NO_ACCEL="--accel 1e12 --junction-deviation 1e6 --max-feed 1e12 --rapid 5000"
 
 # oracle FILE...: the oracle's records, one per file.
 oracle() {
@@ -214,7 +214,7 @@ assert_cnc_error() {
 @test "--machine FILE: its settings apply, options given on the command line win" {
   cat > router.json <<'JSON'
 {"name": "router", "# note": "a comment", "steps_per_mm": [100, 100, 50], "start": [5, 0, 0],
- "rapid": 6000, "accel": 1e12, "junction_deviation": 1e9, "max_feed": 1e12, "lookahead": 16}
+ "rapid": 6000, "accel": 1e12, "junction_deviation": 1e6, "max_feed": 1e12, "lookahead": 16}
 JSON
   printf 'G0 X15\n' > x.ngc
   run --separate-stderr gcode-pulse --summary --machine router.json x.ngc
@@ -574,12 +574,13 @@ for name, d, b in zip(names, map(json.loads, open(sys.argv[1])), map(json.loads,
   assert_cnc_error 3 '.*(1000001|1\.000001e\+0?6)'
 }
 
-@test "a coordinate beyond the step counters (fine --steps-per-mm) is reported at FILE:LINE" {
-  # 1e12 steps/mm: X10000 is 1e16 steps, beyond the 9e15 the counters take.
+@test "--steps-per-mm finer than a step per nanometre is a usage error, before any pulse" {
+  # 1e12 steps/mm once put X10000 beyond the step counters' 9e15 at its
+  # line; the range (1 to 1e6) keeps 1e6 mm within 1e12 steps.
   printf 'G1 X0.000001 F100\nG0 X10000\n' > bad.ngc
   run --separate-stderr gcode-pulse --steps-per-mm 1e12,1e12,1e12 --summary bad.ngc
-  assert_failure 1
-  [[ "$stderr" =~ ^gcode-pulse:\ bad\.ngc:2:\  ]]
+  assert_failure 2
+  [[ "$stderr" == "gcode-pulse: --steps-per-mm: must be a number from 1 to 1e+06, not 1e+12"* ]]
 }
 
 @test "empty input: success and no pulses (file, stdin, CSV, comments only)" {

@@ -138,8 +138,10 @@ for name, scale in (("big", 8e5), ("small", 2e-100)):
 }
 
 @test "(c) --simulate ARLs of the default charts: within 4 se of the Markov chains and of the published values" {
+  # --arl-cap 40000 keeps 20,000 runs within the 3e9 parts a run may
+  # imply; with ARL0s of 370 to 465 no run comes near it.
   for pol in shewhart ewma cusum; do
-    subtune --simulate --policy "$pol" --arl-runs 20000 --seed 7
+    subtune --simulate --policy "$pol" --arl-runs 20000 --arl-cap 40000 --seed 7
   done > arl.jsonl
   run /usr/bin/python3 "$ORACLE/spc_arl.py" compare --published < arl.jsonl
   [ "$status" -ne 77 ] || skip "$output"
@@ -151,7 +153,7 @@ for name, scale in (("big", 8e5), ("small", 2e-100)):
 @test "(c) --simulate ARLs with other chart settings, a 0.5 sigma step and a 0.05 sigma/part drift" {
   local opts=(--shewhart-l 2.5 --ewma-lambda 0.1 --ewma-l 2.7 --cusum-k 0.25 --cusum-h 8 --shift 0.5 --drift 0.05)
   for pol in shewhart ewma cusum; do
-    subtune --simulate --policy "$pol" --arl-runs 20000 --seed 3 "${opts[@]}"
+    subtune --simulate --policy "$pol" --arl-runs 20000 --arl-cap 40000 --seed 3 "${opts[@]}"
   done > arl.jsonl
   run /usr/bin/python3 "$ORACLE/spc_arl.py" compare "${opts[@]}" < arl.jsonl
   [ "$status" -ne 77 ] || skip "$output"
@@ -337,7 +339,7 @@ print("ok")'
   # The procedure from its definition: from N = 4 on, the least-squares line
   # over the run, S_N^2 = SSE/(N - 1), t = N|b|/S_N sqrt(N/2) against the
   # two-sided 5 % point at 2(N - 1) df; the run length is the first N where t exceeds it.
-  subtune --simulate --policy subtune --statistic paper --parts 10 --arl-runs 20000 > sub.jsonl
+  subtune --simulate --policy subtune --statistic paper --parts 10 --arl-runs 20000 --arl-cap 40000 > sub.jsonl
   run py '
 import json, math
 import numpy as np

@@ -171,7 +171,7 @@ assert lh["hand"] == "left" and lh["thread"] == "M20x1.5-6H-LH" and lh["kind"] =
   run -2 threadcalc --decimals 12 M10
   run -2 threadcalc --decimals 2 M10  # tolerances are whole micrometres
   run -2 threadcalc --gcode g76 --length 20000 M10
-  assert_output --partial "thread length 20000 mm is outside (0, 10000]"
+  assert_output --partial "--length: must be a number from 0.1 to 10000, not 20000"
   run -2 threadcalc --gcode passes --length 20 --rpm 1e9 M10
   run -2 threadcalc --gcode passes --length 20 --accel nan M10
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
 #include "io/record_writer.hpp"
@@ -39,6 +40,9 @@ int main(int argc, char** argv) {
   bool summary_only = false, lenient = false, binary = false;
   double accel = 500, rapid = 5000, max_feed = 0, junction_deviation = 0.01;
   std::size_t lookahead = 256;
+  std::uint64_t max_pulses = static_cast<std::uint64_t>(tk::motion::PulseOptions::kDefaultMaxPulses);
+  using tk::cli::range_check, tk::cli::count_check, tk::cli::ZeroAllowed;
+  const auto in = [](tk::motion::SettingRange r) { return range_check(r.low, r.high); };
   CLI::App& app = tool.app();
   app.add_option("--steps-per-mm", steps, "steps per mm of X, Y and Z")->capture_default_str()->type_name("X,Y,Z");
   app.add_option("--method", method,
@@ -60,19 +64,27 @@ int main(int argc, char** argv) {
   app.add_option("--window", window_text, "the part of the XY plane to draw, mm")->type_name("X0,Y0,X1,Y1");
   app.add_option("--machine", machine_file, "machine description (JSON, keys as these options; options given here win)")
       ->type_name("FILE");
-  app.add_option("--accel", accel, "acceleration along the path, mm/s^2")->capture_default_str()->type_name("A");
+  app.add_option("--accel", accel, "acceleration along the path, mm/s^2")->check(in(tk::motion::kAccelRange))->capture_default_str()->type_name("A");
   app.add_option("--axis-accel", axis_accel, "acceleration limit of each axis, mm/s^2 (default: none)")
       ->type_name("X,Y,Z");
-  app.add_option("--rapid", rapid, "G0 speed, mm/min")->capture_default_str()->type_name("F");
-  app.add_option("--max-feed", max_feed, "cap on programmed feeds, mm/min (default: --rapid)")->type_name("F");
+  app.add_option("--rapid", rapid, "G0 speed, mm/min")->check(in(tk::motion::kFeedRange))->capture_default_str()->type_name("F");
+  app.add_option("--max-feed", max_feed, "cap on programmed feeds, mm/min (default: --rapid)")->check(in(tk::motion::kFeedRange))->type_name("F");
   app.add_option("--axis-max-feed", axis_max_feed, "speed limit of each axis, G0 included, mm/min (default: none)")
       ->type_name("X,Y,Z");
   app.add_option("--junction-deviation", junction_deviation, "corner rounding allowed for junction speeds, mm")
+      ->check(in(tk::motion::kJunctionDeviationRange))
       ->capture_default_str()
       ->type_name("MM");
-  app.add_option("--lookahead", lookahead, "blocks planned together")->capture_default_str()->type_name("N");
+  app.add_option("--lookahead", lookahead, "blocks planned together")
+      ->check(count_check(static_cast<std::uint64_t>(tk::motion::kLookaheadRange.low), static_cast<std::uint64_t>(tk::motion::kLookaheadRange.high)))
+      ->capture_default_str()->type_name("N");
   app.add_option("--start", start, "where the machine stands when the program starts, mm (default: 0,0,0)")
       ->type_name("X,Y,Z");
+  app.add_option("--max-pulses", max_pulses,
+                 "refuse (exit 1, at its line) the block that takes the step pulses the program implies past N")
+      ->check(count_check(1, 1000000000000))
+      ->capture_default_str()
+      ->type_name("N");
   tool.add_input_files("G-code files, run one after another; standard input when none or '-'");
 
   return tool.run(argc, argv, [&] {
@@ -114,6 +126,7 @@ int main(int argc, char** argv) {
     settings.apply_to(options);
     options.method = tk::motion::step_method_named(method);
     options.interpreter.lenient = lenient;
+    options.max_pulses = static_cast<double>(max_pulses);
 
     if (binary && summary_only) throw tk::UsageError("--binary and --summary exclude each other");
     if (binary && tool.common().csv) throw tk::UsageError("--binary and --csv exclude each other");

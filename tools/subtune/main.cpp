@@ -5,6 +5,7 @@
 /// and a simulated batch comparing sub-tuning with the SPC charts.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -31,6 +32,12 @@ using tk::machining::ForceErrorModel;
 /// double range (squares of differences below ~1e-154 would underflow to 0
 /// and make the spread vanish).
 constexpr double kMaxLengthMm = 1e6, kMinLengthMm = 1e-100;
+
+/// The force-error model's coefficients given as --coefficients, in magnitude.
+constexpr double kMaxCoefficient = 1e6;
+
+/// Seeds: any whole number of up to 19 digits.
+constexpr std::uint64_t kMaxSeed = 9'999'999'999'999'999'999ULL;
 
 double length_field(const tk::Record& record, const std::string& key, const tk::Location& where) {
   const double v = tk::io::number_field(record, key, where);
@@ -226,7 +233,12 @@ ForceErrorModel load_model(const std::string& path, const std::string& coefficie
     } catch (const tk::Error& e) {
       throw tk::UsageError(e.what());
     }
-    for (std::size_t k = 0; k < 6; ++k) *coefficients(m)[k] = values[k];
+    for (std::size_t k = 0; k < 6; ++k) {
+      // Millimetres per unit of a, f and their products: ±1e6 keeps y finite
+      // for every allowance and feed the tool takes.
+      tk::cli::require_range(values[k], -kMaxCoefficient, kMaxCoefficient, "--coefficients");
+      *coefficients(m)[k] = values[k];
+    }
     return m;
   }
   tk::io::RecordReader reader({path});
@@ -284,6 +296,13 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
 
 // ---- the simulated batch ---------------------------------------------------
 
+/// The most parts a --simulate run may imply, every ARL run counted to
+/// --arl-cap (subtune(1), OPTIONS): the defaults imply 2.4e9, about three
+/// minutes at 10-18 M parts/s when no policy alarms.
+constexpr double kMaxSimulatedParts = 3e9;
+/// The most records --trace may write (about 170 bytes each: 350 MB).
+constexpr double kMaxTraceRecords = 2e6;
+
 struct SimulationOptions {
   std::string policy;  ///< empty: all
   std::uint64_t arl_runs = 2000, arl_cap = 100000;
@@ -305,8 +324,17 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
     kinds = {parse_policy(o.policy)};
   if (!o.svg_path.empty() && kinds.size() != 1) throw tk::UsageError("--svg draws one policy's batch: give --policy too");
 
+  // Each policy makes the batch twice (as given and stable) and, but
+  // 'none', three ARL estimates of --arl-runs runs of up to --arl-cap parts.
+  const double policies = static_cast<double>(kinds.size()), parts = static_cast<double>(lathe.parts);
+  const double charted = policies - static_cast<double>(std::ranges::count(kinds, PolicyKind::none));
+  tk::cli::require_run_size(policies * 2 * parts + charted * 3 * static_cast<double>(o.arl_runs) * static_cast<double>(o.arl_cap),
+                            kMaxSimulatedParts, "simulated parts at most (every ARL run to its cap)",
+                            "--parts, --arl-runs, --arl-cap and --policy");
   std::optional<tk::io::RecordFile> trace;
   if (!o.trace_path.empty()) {
+    tk::cli::require_run_size(policies * parts, kMaxTraceRecords, "trace records (one a part and policy)",
+                              "--trace with --parts and --policy");
     trace.emplace(o.trace_path, tool.output_format());
     trace->declare_fields({"policy", "part", "allowance", "size", "measured", "alarm", "correction", "offset"});
   }
@@ -381,9 +409,11 @@ int main(int argc, char** argv) {
   std::string alternative = "two-sided", statistic = "slope", correct_to = "start", field = "size", svg_path;
   std::optional<double> lower, upper;
   bool simulate_flag = false;
-  using tk::cli::NumberDomain, tk::cli::number_check, tk::cli::count_check;
-  const CLI::Validator finite = number_check(NumberDomain::finite), non_negative = number_check(NumberDomain::non_negative),
-                       positive = number_check(NumberDomain::positive);
+  using tk::cli::count_check, tk::cli::range_check;
+  // The ranges of subtune(1), OPTIONS: sizes within the ±1 km lengths the
+  // records may hold, spreads and drifts of a lathe, feeds of a lathe
+  // (fuzzyfeed's), chart constants past the published tables.
+  const CLI::Validator size_range = range_check(-kMaxLengthMm, kMaxLengthMm), feed_range = range_check(0.001, 5);
   const CLI::Validator alpha_check(
       [](std::string& text) {
         double v = 0;
@@ -401,15 +431,15 @@ int main(int argc, char** argv) {
                  "paper: eq. (6) as printed, 2(N-1) df (alarms on noise about half the time at alpha 0.05)")
       ->check(CLI::IsMember({"slope", "paper"}))->capture_default_str()->group(test);
   app.add_option("--min-parts", tuning.min_parts, "no decision before a run has this many parts")->check(count_check(3, 1000000))->capture_default_str()->type_name("N")->group(test);
-  app.add_option("--resolution", tuning.resolution, "gauge resolution, mm: s (or S_N) is at least its rounding noise r/sqrt(12)")->check(non_negative)->capture_default_str()->type_name("MM")->group(test);
+  app.add_option("--resolution", tuning.resolution, "gauge resolution, mm: s (or S_N) is at least its rounding noise r/sqrt(12)")->check(range_check(0, 10))->capture_default_str()->type_name("MM")->group(test);
   app.add_option("--correct-to", correct_to, "start: by the paper's dA = a - A_T(N), back to the run's starting level; nominal: to --nominal")
       ->check(CLI::IsMember({"start", "nominal"}))->capture_default_str()->group(test);
   app.add_option("--field", field, "the field holding the size")->capture_default_str()->group(out);
-  app.add_option("--lower", lower, "lower tolerance limit, mm (a record's 'lower' field overrides it)")->check(finite)->type_name("MM")->group(out);
-  app.add_option("--upper", upper, "upper tolerance limit, mm (a record's 'upper' field overrides it)")->check(finite)->type_name("MM")->group(out);
+  app.add_option("--lower", lower, "lower tolerance limit, mm (a record's 'lower' field overrides it)")->check(size_range)->type_name("MM")->group(out);
+  app.add_option("--upper", upper, "upper tolerance limit, mm (a record's 'upper' field overrides it)")->check(size_range)->type_name("MM")->group(out);
   app.add_option("--svg", svg_path, "plot sizes, the regression and the offset against part number to FILE")->type_name("FILE")->group(out);
 
-  CLI::Option* nominal_option = app.add_option("--nominal", lathe.nominal_mm, "nominal size, mm (the simulated part's; --correct-to nominal's)")->check(finite)->capture_default_str()->type_name("MM")->group(out);
+  CLI::Option* nominal_option = app.add_option("--nominal", lathe.nominal_mm, "nominal size, mm (the simulated part's; --correct-to nominal's)")->check(size_range)->capture_default_str()->type_name("MM")->group(out);
   app.add_flag("--simulate", simulate_flag, "simulate a batch and write one summary record per policy")->group(lathe_group);
   app.add_option("--policy", sim.policy,
                  "the filter: subtune (default), or a chart (shewhart, ewma, cusum; needs --nominal and --sigma); "
@@ -417,31 +447,31 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"all", "none", "subtune", "shewhart", "ewma", "cusum"}))->group(test);
   std::vector<CLI::Option*> sim_options{
       app.add_option("--parts", lathe.parts, "parts in the batch")->check(count_check(1, 100000000))->capture_default_str()->type_name("N"),
-      app.add_option("--wear", lathe.wear_mm_per_part, "tool wear: size drift per part, mm")->check(finite)->capture_default_str()->type_name("MM"),
-      app.add_option("--thermal", lathe.thermal_mm, "thermal drift's final amplitude, mm")->check(finite)->capture_default_str()->type_name("MM"),
-      app.add_option("--thermal-parts", lathe.thermal_parts, "thermal drift's time constant, parts")->check(positive)->capture_default_str()->type_name("N"),
-      app.add_option("--allowance", lathe.allowance_mm, "mean allowance (depth of cut), mm")->check(positive)->capture_default_str()->type_name("MM"),
-      app.add_option("--allowance-sd", lathe.allowance_sd_mm, "its standard deviation, mm")->check(non_negative)->capture_default_str()->type_name("MM"),
-      app.add_option("--feed", lathe.feed_mm_rev, "feed, mm/rev")->check(positive)->capture_default_str()->type_name("F"),
-      app.add_option("--process-sd", lathe.process_sd_mm, "random size variation, mm")->check(non_negative)->capture_default_str()->type_name("MM"),
-      app.add_option("--gauge-sd", lathe.gauge_sd_mm, "measurement noise, mm")->check(non_negative)->capture_default_str()->type_name("MM"),
+      app.add_option("--wear", lathe.wear_mm_per_part, "tool wear: size drift per part, mm")->check(range_check(-1, 1))->capture_default_str()->type_name("MM"),
+      app.add_option("--thermal", lathe.thermal_mm, "thermal drift's final amplitude, mm")->check(range_check(-10, 10))->capture_default_str()->type_name("MM"),
+      app.add_option("--thermal-parts", lathe.thermal_parts, "thermal drift's time constant, parts")->check(range_check(0.01, 1e8))->capture_default_str()->type_name("N"),
+      app.add_option("--allowance", lathe.allowance_mm, "mean allowance (depth of cut), mm")->check(range_check(0.001, 100))->capture_default_str()->type_name("MM"),
+      app.add_option("--allowance-sd", lathe.allowance_sd_mm, "its standard deviation, mm")->check(range_check(0, 100))->capture_default_str()->type_name("MM"),
+      app.add_option("--feed", lathe.feed_mm_rev, "feed, mm/rev")->check(feed_range)->capture_default_str()->type_name("F"),
+      app.add_option("--process-sd", lathe.process_sd_mm, "random size variation, mm")->check(range_check(0, 1))->capture_default_str()->type_name("MM"),
+      app.add_option("--gauge-sd", lathe.gauge_sd_mm, "measurement noise, mm")->check(range_check(0, 1))->capture_default_str()->type_name("MM"),
       app.add_flag("--compensate", lathe.compensate_force, "adaptive control: correct each part's set-up for its allowance through the model"),
-      app.add_option("--seed", lathe.seed, "of the random draws")->capture_default_str()->type_name("N"),
+      app.add_option("--seed", lathe.seed, "of the random draws")->check(count_check(0, kMaxSeed))->capture_default_str()->type_name("N"),
       app.add_option("--arl-runs", sim.arl_runs, "simulated runs per ARL")->check(count_check(2, 10000000))->capture_default_str()->type_name("N"),
       app.add_option("--arl-cap", sim.arl_cap, "an ARL run stops here without an alarm")->check(count_check(1, 100000000))->capture_default_str()->type_name("N"),
-      app.add_option("--shift", sim.shift_sigma, "arl_shift: a step of this many sigma from the first part")->check(finite)->capture_default_str()->type_name("SIGMA"),
-      app.add_option("--drift", sim.drift_sigma, "arl_drift: a drift of this many sigma per part")->check(finite)->capture_default_str()->type_name("SIGMA"),
+      app.add_option("--shift", sim.shift_sigma, "arl_shift: a step of this many sigma from the first part")->check(range_check(-100, 100))->capture_default_str()->type_name("SIGMA"),
+      app.add_option("--drift", sim.drift_sigma, "arl_drift: a drift of this many sigma per part")->check(range_check(-10, 10))->capture_default_str()->type_name("SIGMA"),
       app.add_option("--trace", sim.trace_path, "write one record per simulated part to FILE")->type_name("FILE")};
   for (CLI::Option* o : sim_options) o->group(lathe_group);
   std::string sim_model_path;
   sim_options.push_back(app.add_option("--sim-model", sim_model_path, "the lathe's force-error model from FILE (default: y = 0.01 a)")->type_name("FILE")->group(lathe_group));
   std::vector<CLI::Option*> chart_options{
-      app.add_option("--sigma", sim.sigma, "the charts' sigma, mm (--simulate's default: the stable process's exact one)")->check(positive)->type_name("MM"),
-      app.add_option("--shewhart-l", charts.shewhart_l, "Shewhart limits at ± L sigma")->check(positive)->capture_default_str()->type_name("L"),
-      app.add_option("--ewma-lambda", charts.ewma_lambda, "EWMA weight λ")->check(CLI::Range(1e-6, 1.0))->capture_default_str()->type_name("λ"),
-      app.add_option("--ewma-l", charts.ewma_l, "EWMA limits at ± L sigma_z")->check(positive)->capture_default_str()->type_name("L"),
-      app.add_option("--cusum-k", charts.cusum_k, "CUSUM reference value, sigma")->check(non_negative)->capture_default_str()->type_name("K"),
-      app.add_option("--cusum-h", charts.cusum_h, "CUSUM decision interval, sigma")->check(positive)->capture_default_str()->type_name("H")};
+      app.add_option("--sigma", sim.sigma, "the charts' sigma, mm (--simulate's default: the stable process's exact one)")->check(range_check(1e-9, 10))->type_name("MM"),
+      app.add_option("--shewhart-l", charts.shewhart_l, "Shewhart limits at ± L sigma")->check(range_check(0.5, 10))->capture_default_str()->type_name("L"),
+      app.add_option("--ewma-lambda", charts.ewma_lambda, "EWMA weight λ")->check(range_check(1e-6, 1))->capture_default_str()->type_name("λ"),
+      app.add_option("--ewma-l", charts.ewma_l, "EWMA limits at ± L sigma_z")->check(range_check(0.5, 10))->capture_default_str()->type_name("L"),
+      app.add_option("--cusum-k", charts.cusum_k, "CUSUM reference value, sigma")->check(range_check(0, 10))->capture_default_str()->type_name("K"),
+      app.add_option("--cusum-h", charts.cusum_h, "CUSUM decision interval, sigma")->check(range_check(0.1, 100))->capture_default_str()->type_name("H")};
   for (CLI::Option* o : chart_options) o->group(chart_group);
 
   std::vector<std::string> sub_inputs;
@@ -459,10 +489,10 @@ int main(int argc, char** argv) {
     cmd->add_option("--model", model_path, "the model record written by 'subtune model'")->type_name("FILE");
     cmd->add_option("--coefficients", coefficient_text, "the model as b0,b1,b2,b12,b11,b22 instead")->type_name("B0,...");
   }
-  feed_cmd->add_option("--target", range.target, "the error y to hold, mm")->check(finite)->capture_default_str()->type_name("MM");
-  feed_cmd->add_option("--feed-min", range.f_min, "mm/rev")->check(positive)->capture_default_str()->type_name("F");
-  feed_cmd->add_option("--feed-max", range.f_max, "mm/rev")->check(positive)->capture_default_str()->type_name("F");
-  correct_cmd->add_option("--feed", fixed_feed, "the fixed feed, mm/rev (a record's f overrides it)")->check(positive)->type_name("F");
+  feed_cmd->add_option("--target", range.target, "the error y to hold, mm")->check(range_check(-100, 100))->capture_default_str()->type_name("MM");
+  feed_cmd->add_option("--feed-min", range.f_min, "mm/rev")->check(feed_range)->capture_default_str()->type_name("F");
+  feed_cmd->add_option("--feed-max", range.f_max, "mm/rev")->check(feed_range)->capture_default_str()->type_name("F");
+  correct_cmd->add_option("--feed", fixed_feed, "the fixed feed, mm/rev (a record's f overrides it)")->check(feed_range)->type_name("F");
   for (CLI::App* cmd : {model_cmd, feed_cmd, correct_cmd}) cmd->fallthrough();
 
   return tool.run(argc, argv, [&] {

@@ -77,6 +77,9 @@ void write_records(const std::vector<std::string>& designations, const std::vect
   writer.flush();
 }
 
+/// The program's ranges (threadcalc(1), PROGRAMS), as validate() checks them.
+constexpr double kMaxLengthMm = 10000, kMinRpm = 1, kMaxRpm = 100000, kMaxRunInMm = 1000;
+
 struct ProgramOptions {
   std::string style;
   double length = 0;
@@ -107,9 +110,18 @@ void write_program(const std::vector<std::string>& designations, Options o, cons
   settings.pitch_mm = result.profile.pitch;
   settings.length_mm = p.length;
   settings.rpm = p.rpm > 0 ? p.rpm : spindle_speed(p.cutting_speed, result.profile.major, p.max_rpm);
+  if (settings.rpm < kMinRpm)
+    throw tk::UsageError(fmt::format("--vc {:g} m/min gives {:.3g} rpm at the {:g} mm diameter, below {:g} rpm: give a higher --vc or --rpm",
+                                     p.cutting_speed, settings.rpm, result.profile.major, kMinRpm));
   settings.clearance_mm = p.clearance;
   settings.run_in_mm = p.run_in;
   settings.acceleration_mm_s2 = p.acceleration;
+  // The default run-in is the Z axis's way up to P·S: a slow axis at a fast
+  // spindle would start the program metres ahead of the face.
+  if (p.run_in == 0)
+    tk::cli::require_run_size(synchronisation_distance(settings), kMaxRunInMm,
+                              "mm of run-in (the Z axis's way up to P times S; give --run-in, or lower the speed)",
+                              "--accel with the spindle speed and the pitch");
   try {
     validate(settings);
   } catch (const tk::Error& e) {
@@ -130,7 +142,7 @@ int main(int argc, char** argv) {
                         "(LinuxCNC G76 or plain G33 passes). Designations come as arguments or as records with a "
                         "'designation' field (JSON Lines, CSV, or one per line).",
                         "See threadcalc(1).");
-  using tk::cli::NumberDomain, tk::cli::number_check;
+  using tk::cli::range_check;
   std::vector<std::string> designations, inputs;
   Options o;
   ProgramOptions program;
@@ -150,14 +162,13 @@ int main(int argc, char** argv) {
   const std::string turning_group = "Thread turning (full-profile insert)";
   CLI::Option* flank_angle =
       app.add_option("--flank-angle", o.turning.flank_angle_deg, "flank infeed's angle from the radial, degrees")
-          ->check(number_check(NumberDomain::non_negative))
-          ->check(CLI::Range(0.0, 30.0))
+          ->check(range_check(0, 30))
           ->capture_default_str();
   std::vector<CLI::Option*> turning_options{
       app.add_option("--passes", o.turning.passes, "passes (default: the pitch's lower end in Widia's table)")
           ->check(tk::cli::count_check(2, 100)),
       app.add_option("--min-last-pass", o.turning.min_last_pass_mm, "the default passes keep the last one at least this deep, mm")
-          ->check(number_check(NumberDomain::non_negative))->capture_default_str(),
+          ->check(range_check(0, 1))->capture_default_str(),
       app.add_option("--spring-passes", o.turning.spring_passes, "passes repeated at full depth")
           ->check(tk::cli::count_check(0, 10))->capture_default_str(),
       app.add_option("--infeed", infeed, "radial, or flank (modified flank infeed)")
@@ -165,30 +176,30 @@ int main(int argc, char** argv) {
       flank_angle,
       app.add_option("--stock", o.turning.topping_stock_mm,
                      "diametral stock the insert tops off the crest, mm (default 0.15, 0.15 P below P 1)")
-          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 5.0)),
+          ->check(range_check(0, 5)),
       app.add_option("--chamfer-margin", o.turning.chamfer_margin_mm,
                      "the chamfer's reach below the root, mm (default 0.25, P/2 below P 0.5)")
-          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 10.0)),
+          ->check(range_check(0, 10)),
       app.add_option("--run-out", o.turning.run_out_mm,
                      "axial length of the pull-out at the thread's end, for retract_angle, mm (default 1.25 P)")
-          ->check(number_check(NumberDomain::non_negative))->check(CLI::Range(0.0, 100.0))};
+          ->check(range_check(0, 100))};
   for (CLI::Option* option : turning_options) option->group(turning_group);
   const std::string program_group = "Threading program";
   std::vector<CLI::Option*> program_options{
       app.add_option("--length", program.length, "thread length from the face (Z0) towards -Z, mm")
-          ->check(number_check(NumberDomain::positive)),
+          ->check(range_check(0.1, kMaxLengthMm)),
       app.add_option("--rpm", program.rpm, "spindle speed (default: from --vc at the nominal diameter)")
-          ->check(number_check(NumberDomain::positive)),
+          ->check(range_check(kMinRpm, kMaxRpm)),
       app.add_option("--vc", program.cutting_speed, "cutting speed, m/min")
-          ->check(number_check(NumberDomain::positive))->capture_default_str(),
+          ->check(range_check(1, 5000))->capture_default_str(),
       app.add_option("--max-rpm", program.max_rpm, "the highest spindle speed --vc may give")
-          ->check(number_check(NumberDomain::positive))->capture_default_str(),
+          ->check(range_check(kMinRpm, kMaxRpm))->capture_default_str(),
       app.add_option("--clearance", program.clearance, "radial gap of the drive line from the blank (inside: at most a tenth of the bore), mm")
-          ->check(number_check(NumberDomain::positive))->capture_default_str(),
+          ->check(range_check(0.01, 100))->capture_default_str(),
       app.add_option("--accel", program.acceleration, "the Z axis's acceleration, mm/s^2 (sets the default run-in)")
-          ->check(number_check(NumberDomain::positive))->capture_default_str(),
+          ->check(range_check(1, 1e6))->capture_default_str(),
       app.add_option("--run-in", program.run_in, "start this far ahead of the face (left hand: beyond the thread's end), mm (default: 3 P, or what --accel needs)")
-          ->check(number_check(NumberDomain::non_negative))};
+          ->check(range_check(0, kMaxRunInMm))};
   CLI::Option* gcode = app.add_option("--gcode", program.style, "write the threading program instead of records: g76 or passes")
                            ->check(CLI::IsMember({"g76", "passes"}));
   program_options.push_back(gcode);
