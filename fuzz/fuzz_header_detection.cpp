@@ -56,12 +56,14 @@ void read_as(const std::string& path, tk::io::NativeFormatProbe probe, const tk:
   std::size_t errors = 0, records = 0;
   for (;;) {
     tk::Record record;
+    bool produced = false;
     try {
       if (!reader.next(record)) break;
+      produced = true;
     } catch (const tk::Error&) {
       ++errors;
     }
-    if (record.is_object()) {
+    if (produced) {
       ++records;
       std::vector<std::string> names;
       for (const auto& item : record.items()) names.push_back(item.key());
