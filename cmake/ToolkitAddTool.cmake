@@ -23,11 +23,17 @@ function(toolkit_add_tool name)
   file(GLOB bats_files ${PROJECT_SOURCE_DIR}/test/bats/${name}.bats ${PROJECT_SOURCE_DIR}/test/bats/${name}_*.bats)
   if(TOOLKIT_TESTS)
     foreach(bats_file IN LISTS bats_files)
-      get_filename_component(suite ${bats_file} NAME_WE)
-      add_test(NAME bats_${suite} COMMAND bats --tap ${bats_file})
-      set_tests_properties(bats_${suite} PROPERTIES
-        ENVIRONMENT "TOOLKIT_BIN=$<TARGET_FILE_DIR:${name}>;TOOLKIT_ROOT=${PROJECT_SOURCE_DIR};TOOLKIT_BUILD=${PROJECT_BINARY_DIR}"
-        TIMEOUT 1800)
+      toolkit_add_bats_suite(${bats_file} $<TARGET_FILE_DIR:${name}>)
     endforeach()
   endif()
+endfunction()
+
+# toolkit_add_bats_suite(FILE BIN_DIR): one bats file as one ctest test,
+# with the tools found in BIN_DIR.
+function(toolkit_add_bats_suite bats_file bin_dir)
+  get_filename_component(suite ${bats_file} NAME_WE)
+  add_test(NAME bats_${suite} COMMAND bats --tap ${bats_file})
+  set_tests_properties(bats_${suite} PROPERTIES
+    ENVIRONMENT "TOOLKIT_BIN=${bin_dir};TOOLKIT_ROOT=${PROJECT_SOURCE_DIR};TOOLKIT_BUILD=${PROJECT_BINARY_DIR}"
+    TIMEOUT 1800)
 endfunction()
