@@ -27,6 +27,7 @@
 #include <fmt/format.h>
 
 #include "fuzz_common.hpp"
+#include "io/checksum.hpp"
 #include "io/record.hpp"
 #include "primes/proof_journal_format.hpp"
 
@@ -46,7 +47,7 @@ std::string with_checksums(std::string_view bytes) {
     if (tab == std::string_view::npos)
       out += line;
     else
-      out += fmt::format("{}\t{:016x}", line.substr(0, tab), tk::primes::fnv1a(line.substr(0, tab)));
+      out += fmt::format("{}\t{:016x}", line.substr(0, tab), tk::io::fnv1a(line.substr(0, tab)));
     if (whole) out += '\n';
     start = end + 1;
   }

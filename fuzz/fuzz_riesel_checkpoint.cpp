@@ -29,6 +29,7 @@
 #include <fmt/format.h>
 
 #include "fuzz_common.hpp"
+#include "io/checksum.hpp"
 #include "io/error.hpp"
 #include "primes/proof_journal_format.hpp"
 #include "primes/riesel_proof.hpp"
@@ -49,7 +50,7 @@ std::string with_checksum(std::string_view bytes) {
     end = newline + 1;
   }
   const std::string body(bytes.substr(0, end));
-  return body + fmt::format("{:016x}\n", tk::primes::fnv1a(body));
+  return body + fmt::format("{:016x}\n", tk::io::fnv1a(body));
 }
 
 /// The proof resumed from `state`, when `member` is "k*2^n-1 start=..." or "k*2^n+1 start=..." with a small n.

@@ -123,6 +123,16 @@ void AtomicFile::commit() {
   sync_directory_of(target_);
 }
 
+void write_all_synced(int fd, const std::string& path, std::string_view bytes) {
+  for (std::size_t done = 0; done < bytes.size();) {
+    const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (wrote < 0 && errno == EINTR) continue;
+    if (wrote <= 0) fail(path, "write", errno);
+    done += static_cast<std::size_t>(wrote);
+  }
+  if (::fsync(fd) != 0) fail(path, "sync", errno);
+}
+
 void write_file_atomically(const std::string& path, std::string_view bytes) {
   AtomicFile file(path);
   if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), file.stream()) != bytes.size())
@@ -133,20 +143,11 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
 void write_file_atomically(const std::string& path, std::string_view bytes, const std::string& temporary) {
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) fail(temporary, "create");
-  for (std::size_t done = 0; done < bytes.size();) {
-    const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (wrote < 0 && errno == EINTR) continue;
-    if (wrote <= 0) {
-      const int error = errno;
-      ::close(fd);
-      fail(temporary, "write", error);
-    }
-    done += static_cast<std::size_t>(wrote);
-  }
-  if (::fsync(fd) != 0) {
-    const int error = errno;
+  try {
+    write_all_synced(fd, temporary, bytes);
+  } catch (const Error&) {
     ::close(fd);
-    fail(temporary, "sync", error);
+    throw;
   }
   if (::close(fd) != 0) fail(temporary, "close");
   if (std::rename(temporary.c_str(), path.c_str()) != 0) fail(path, "rename into place");

@@ -47,6 +47,10 @@ void remove_stale_temporaries(const std::string& path);
 /// `bytes` as the whole new content of `path`, through an AtomicFile. Throws Error.
 void write_file_atomically(const std::string& path, std::string_view bytes);
 
+/// Writes all of `bytes` to `fd` (a journal appends each line with one such
+/// call, so a kill cannot split it), then fsyncs it. Error names `path`.
+void write_all_synced(int fd, const std::string& path, std::string_view bytes);
+
 /// The same with a temporary chosen by the caller: it must be in the same
 /// directory as `path` and unique to the writer. Throws Error.
 void write_file_atomically(const std::string& path, std::string_view bytes, const std::string& temporary);

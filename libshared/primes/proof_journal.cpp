@@ -2,7 +2,6 @@
 #include "primes/proof_journal.hpp"
 
 #include <fcntl.h>
-#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -16,6 +15,8 @@
 #include <thread>
 
 #include "io/atomic_file.hpp"
+#include "io/checksum.hpp"
+#include "io/file_lock.hpp"
 #include "io/error.hpp"
 
 namespace tk::primes {
@@ -32,16 +33,6 @@ int open_append(const std::string& path) {
   return fd;
 }
 
-/// One write (a kill cannot split it), then a sync.
-void append_synced(int fd, const std::string& path, std::string_view bytes) {
-  for (std::size_t done = 0; done < bytes.size();) {
-    const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (wrote < 0 && errno == EINTR) continue;
-    if (wrote <= 0) fail(path, "write");
-    done += static_cast<std::size_t>(wrote);
-  }
-  if (::fsync(fd) != 0) fail(path, "write");
-}
 
 std::uint64_t file_size(int fd, const std::string& path) {
   struct stat status {};
@@ -77,14 +68,7 @@ ProofJournal::ProofJournal(std::string directory, const Warn& warn) : directory_
   std::error_code error;
   std::filesystem::create_directories(directory_, error);
   if (error) throw Error("cannot create the state directory: " + error.message(), Location{directory_, 0});
-  const std::string lock = directory_ + "/lock";
-  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0) fail(lock, "open the lock");
-  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-    ::close(lock_fd_);
-    lock_fd_ = -1;
-    throw Error("another run holds this state directory's lock", Location{directory_, 0});
-  }
+  lock_ = std::make_unique<io::FileLock>(directory_ + "/lock", directory_, "this state directory");
   load_journal(warn);
 }
 
@@ -100,7 +84,7 @@ void ProofJournal::load_journal(const Warn& warn) {
     for (const auto& refused : journal.refused) rejected += refused.text + "\n";
     for (const JournalEntry& entry : journal.entries) kept += journal_line(entry) + "\n";
     const int rejected_fd = open_append(rejected_path);
-    append_synced(rejected_fd, rejected_path, rejected);
+    io::write_all_synced(rejected_fd, rejected_path, rejected);
     ::close(rejected_fd);
     io::write_file_atomically(path, kept, path + ".tmp");
     const auto& first = journal.refused.front();
@@ -127,14 +111,14 @@ void ProofJournal::complete_log(const std::optional<JournalEntry>& last) {
     const std::string expected = log_text(*last);
     if (size - last->log_offset < expected.size()) {
       const std::string written = read_at(log_fd_, path, last->log_offset, size - last->log_offset);
-      if (const auto rest = log_completion(written, *last)) return append_synced(log_fd_, path, *rest);
+      if (const auto rest = log_completion(written, *last)) return io::write_all_synced(log_fd_, path, *rest);
     }
   }
-  if (size > 0 && read_at(log_fd_, path, size - 1, 1) != "\n") append_synced(log_fd_, path, "\n");
+  if (size > 0 && read_at(log_fd_, path, size - 1, 1) != "\n") io::write_all_synced(log_fd_, path, "\n");
 }
 
 ProofJournal::~ProofJournal() {
-  for (const int fd : {journal_fd_, log_fd_, lock_fd_})
+  for (const int fd : {journal_fd_, log_fd_})
     if (fd >= 0) ::close(fd);
 }
 
@@ -149,13 +133,13 @@ void ProofJournal::record_finished(const std::string& key, const std::string& ou
   const std::string log_path = directory_ + "/lresults.txt";
   const JournalEntry entry{key, output_line, file_size(log_fd_, log_path), log_lines};
   // The journal first: a kill before lresults.txt is written is repaired from it on the next start.
-  append_synced(journal_fd_, directory_ + "/journal.tsv", journal_line(entry) + "\n");
+  io::write_all_synced(journal_fd_, directory_ + "/journal.tsv", journal_line(entry) + "\n");
   finished_[key] = output_line;
-  append_synced(log_fd_, log_path, log_text(entry));
+  io::write_all_synced(log_fd_, log_path, log_text(entry));
 }
 
 std::string ProofJournal::checkpoint_path(const std::string& member) const {
-  return fmt::format("{}/checkpoint-{:016x}", directory_, fnv1a(member));
+  return fmt::format("{}/checkpoint-{:016x}", directory_, io::fnv1a(member));
 }
 
 std::optional<ProofState> ProofJournal::load_checkpoint(const std::string& member, const Warn& warn) const {

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -25,6 +26,10 @@
 #include "io/record.hpp"
 #include "primes/proof_journal_format.hpp"
 #include "primes/riesel_proof.hpp"
+
+namespace tk::io {
+class FileLock;
+}
 
 namespace tk::primes {
 
@@ -61,7 +66,7 @@ class ProofJournal {
   void load_journal(const Warn& warn);
   void complete_log(const std::optional<JournalEntry>& last);
   std::string directory_;
-  int lock_fd_ = -1;
+  std::unique_ptr<io::FileLock> lock_;  // held for the journal's life
   int journal_fd_ = -1;
   int log_fd_ = -1;
   std::unordered_map<std::string, std::string> finished_;

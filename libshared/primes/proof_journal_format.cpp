@@ -7,6 +7,7 @@
 #include <array>
 #include <charconv>
 
+#include "io/checksum.hpp"
 #include "io/error.hpp"
 #include "io/record.hpp"
 
@@ -19,7 +20,7 @@ constexpr std::string_view kCheckpointMagic = "riesel-checkpoint 1";
 constexpr std::array<std::string_view, 8> kOwnedFields = {"verdict", "test", "P",       "a",
                                                           "res64",   "witness", "seconds", "members"};
 
-std::string checksum_text(std::string_view bytes) { return fmt::format("{:016x}", fnv1a(bytes)); }
+std::string checksum_text(std::string_view bytes) { return fmt::format("{:016x}", io::fnv1a(bytes)); }
 
 /// Decimal digits as riesel writes them (no sign, blanks or leading zeros), within 64 bits.
 std::optional<std::uint64_t> parse_count(std::string_view text) {
@@ -59,12 +60,6 @@ bool one_of(const Record& record, const char* field, std::initializer_list<std::
 [[noreturn]] void refuse(const std::string& why) { throw Error(why); }
 
 }  // namespace
-
-std::uint64_t fnv1a(std::string_view bytes) {
-  std::uint64_t hash = 0xcbf29ce484222325ull;
-  for (unsigned char byte : bytes) hash = (hash ^ byte) * 0x100000001b3ull;
-  return hash;
-}
 
 std::string journal_line(const JournalEntry& entry) {
   const Record lines(entry.log_lines);

@@ -17,11 +17,6 @@
 
 namespace tk::primes {
 
-/// FNV-1a 64 of the bytes: the checksums, and checkpoints' file names.
-/// Changing any one byte always changes it (each step is a bijection of
-/// the running hash).
-std::uint64_t fnv1a(std::string_view bytes);
-
 /// One finished record: its key ("start=NAME " and the input record), the
 /// output record (compact JSON), and its lresults.txt lines with the size
 /// lresults.txt had before them, so a run killed between the journal and

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "io/atomic_file.hpp"
+#include "io/checksum.hpp"
 #include "io/error.hpp"
 
 namespace tk::primes {
@@ -18,12 +19,6 @@ namespace {
 
 constexpr std::string_view kMagic = "toolkit-sieve-checkpoint 2\n";
 constexpr std::string_view kMagicVersion1 = "toolkit-sieve-checkpoint 1\n";  // no segment count: all done
-
-std::uint64_t fnv1a(const std::string& bytes) {
-  std::uint64_t hash = 0xcbf29ce484222325ull;
-  for (unsigned char byte : bytes) hash = (hash ^ byte) * 0x100000001b3ull;
-  return hash;
-}
 
 void put_varint(std::string& out, std::uint64_t value) {
   while (value >= 0x80) {
@@ -104,7 +99,7 @@ void save_checkpoint(const std::string& path, const GeneralizedSieve& sieve, con
   std::string count;
   put_u64(count, survivors);
   bytes.replace(survivors_at, count.size(), count);
-  put_u64(bytes, fnv1a(bytes));
+  put_u64(bytes, io::fnv1a(bytes));
 
   io::write_file_atomically(path, bytes, checkpoint_temporary(path));
 }
@@ -131,7 +126,7 @@ std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const st
   std::uint64_t stored = 0;
   for (std::size_t i = 0; i < 8; ++i)
     stored |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[bytes.size() - 8 + i])) << (8 * i);
-  if (stored != fnv1a(bytes.substr(0, bytes.size() - 8))) throw whole.damaged();
+  if (stored != io::fnv1a(bytes.substr(0, bytes.size() - 8))) throw whole.damaged();
 
   Reader in(bytes, bytes.size() - 8, path);
   in.line();  // magic

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/checksum.hpp"
 #include "io/error.hpp"
 #include "primes/proof_journal_format.hpp"
 
@@ -114,7 +115,7 @@ TEST(ProofJournal, CheckpointFieldsMustBeWrittenAsRieselWritesThem) {
   // Valid checksums, fields no riesel writes: a sign, blanks, upper case, leading zeros, overflow.
   const auto crafted = [&](const std::string& iteration, const std::string& residue) {
     const std::string text = "riesel-checkpoint 1\n" + member + "\n" + iteration + "\n" + residue + "\n";
-    return text + fmt::format("{:016x}\n", fnv1a(text));
+    return text + fmt::format("{:016x}\n", tk::io::fnv1a(text));
   };
   EXPECT_NO_THROW(parse_checkpoint(crafted("99999999", "5"), member));  // a syntax the proof itself refuses
   for (const auto& [iteration, residue] : std::vector<std::pair<std::string, std::string>>{
