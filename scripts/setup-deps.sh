@@ -9,7 +9,9 @@ build_pkgs=(g++ cmake make pkg-config libcli11-dev libgmp-dev libeigen3-dev
             libfmt-dev nlohmann-json3-dev libprimesieve-dev libfftw3-dev libpolyclipping-dev
             libboost-math-dev scdoc)
 # Tests: unit tests, CLI tests, the PARI/GP and ezdxf oracles, sanitizer runtime.
-test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp python3 python3-ezdxf python3-scipy parallel fuzzylite)
+# linuxcnc-uspace ships rs274, LinuxCNC's own interpreter: the oracle for every G-code program.
+test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp python3 python3-ezdxf python3-scipy parallel fuzzylite
+           linuxcnc-uspace)
 # Benchmarks: peers timed in the same run (never runtime dependencies).
 bench_pkgs=(libflint-dev primesieve libfuzzylite-dev libgsl-dev)
 
