@@ -5,6 +5,10 @@
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
+
+#include "io/error.hpp"
+
 namespace tk::motion {
 
 namespace {
@@ -53,5 +57,17 @@ Vec3 ArcGeometry::tangent(double phi) const {
 }
 
 double arc_sweep(const Motion& arc) { return arc_geometry(arc).sweep; }
+
+void check_arc_radii(double start_radius, double end_radius, bool inches) {
+  constexpr double kMmPerInch = 25.4;
+  const double tolerance = inches ? 0.0005 * kMmPerInch : 0.005;
+  if (std::min(start_radius, end_radius) < tolerance)
+    throw Error(fmt::format("zero-radius arc (radius {:g} mm at the start, {:g} mm at the end)", start_radius, end_radius));
+  const double difference = std::abs(end_radius - start_radius);
+  const double limit = inches ? 0.05 * kMmPerInch : 0.5;
+  if (difference > limit || (difference > tolerance && difference > 0.001 * std::max(start_radius, end_radius)))
+    throw Error(fmt::format("radius to end of arc differs from radius to start: {:.4f} mm and {:.4f} mm", end_radius,
+                            start_radius));
+}
 
 }  // namespace tk::motion

@@ -30,4 +30,9 @@ struct ArcGeometry {
 /// Start and end equal in the plane make a full circle (plus `turns`).
 ArcGeometry arc_geometry(const Motion& arc);
 
+/// LinuxCNC's check of an arc's two radii (mm): throws tk::Error for a zero
+/// radius, or when they differ by more than 0.5 mm, or by more than
+/// 0.005 mm and 0.1% (programs in inches: 0.05 in, 0.0005 in).
+void check_arc_radii(double start_radius, double end_radius, bool inches);
+
 }  // namespace tk::motion

@@ -2,8 +2,9 @@
 /// @brief RS274/NGC (LinuxCNC/grbl dialect) subset: one source line is
 /// lexed into words, and the interpreter keeps the modal state as LinuxCNC
 /// does and turns each block into motions in millimetres, absolute
-/// machine coordinates (no work offsets are applied: G54.. are reported,
-/// not executed).
+/// machine coordinates: the tool length offset (G43, G43.1) applies as in
+/// LinuxCNC, work offsets do not (G54.. are reported, not executed: their
+/// offsets would come from LinuxCNC's parameter file, zero here).
 #pragma once
 
 #include <array>
@@ -90,6 +91,10 @@ struct InterpreterOptions {
   /// Largest |coordinate| in mm accepted (beyond it the step counters could overflow).
   double max_coordinate_mm = 1e6;
   Vec3 start;  ///< where the machine is when the program starts (mm)
+  /// Tool offsets for G43, mm (gcode-pulse --tool-table, tool_table.hpp).
+  /// Without a table G43 of any tool but 0 is refused: its length is unknown.
+  std::map<int, Vec3> tool_table;
+  bool has_tool_table = false;
 };
 
 struct GcodeBlock;  // one line's words sorted out (gcode_block.hpp)
@@ -143,11 +148,13 @@ class GcodeInterpreter {
   /// from the start radius by more than 0.5 mm, or by more than 0.005 mm
   /// and 0.1% (LinuxCNC's rule; inches: 0.05 in, 0.0005 in), an R arc
   /// whose chord exceeds 2R, axis words with no motion mode (after G80),
-  /// a coordinate beyond max_coordinate_mm, a negative S, and a G33
+  /// a coordinate beyond max_coordinate_mm, a negative S, G43 of a tool
+  /// other than 0 without a tool table (lenient: skipped) or of a tool
+  /// not in it, G53 in G91 or outside G0/G1, and a G33
   /// without axis words, without K or with K <= 0, with an F word, with the
   /// spindle stopped, at S0 or in G96. Words it cannot honour (G41/G42
   /// cutter compensation, G33.1 rigid tapping, G76 threading, canned cycles
-  /// G73 G81-G89, G38.x probing, G28/G30 homing, G92 offsets, G10, G5
+  /// G73 G81-G89, G38.x probing, G28/G30 homing, G92 offsets, G10, G43.2, G5
   /// splines, G95, A B C U V W axes...) are errors too unless
   /// options.lenient, which skips the word with a warning through `warn`,
   /// and the line's motion with it when the word owns the axis words (a
@@ -161,9 +168,9 @@ class GcodeInterpreter {
   const Vec3& position() const { return position_; }
   /// Words with no effect on the tool path or its timing, with how many
   /// times they came: M codes other than M2/M30 ("M3", "M6", "M62": M03
-  /// counts as "M3"; M3, M4 and M5 only decide whether G33 may run), T, H,
-  /// D, and G40 G43 G49 G53 G54-G59.3 G61 G61.1 G64 G96 G97 G98 G99 (and
-  /// G80 when ignored). Argument words of these (M62 P, G64 P Q) are not
+  /// counts as "M3"; M3, M4 and M5 only decide whether G33 may run; T, M6
+  /// and M61 choose the tool G43 measures), T, D, H other than G43's, and
+  /// G40 G54-G59.3 G61 G61.1 G64 G96 G97 G98 G99 (and G80 when ignored). Argument words of these (M62 P, G64 P Q) are not
   /// counted. Modal codes and values that act (G7, G17, G20, G90..., F, and
   /// S, which times G33) are not here.
   const std::map<std::string, std::uint64_t>& unused_words() const { return unused_; }
@@ -177,6 +184,7 @@ class GcodeInterpreter {
   void record_unused(GcodeBlock& block);
   void set_modes(GcodeBlock& block);
   void set_spindle(GcodeBlock& block);
+  void set_tool_offset(GcodeBlock& block);
   void move(GcodeBlock& block, bool skip_motion, std::size_t line_number, std::vector<Motion>& out);
   double synchronised_speed(GcodeBlock& block) const;
   void arc(GcodeBlock& block, Motion& motion) const;
@@ -200,6 +208,8 @@ class GcodeInterpreter {
   std::map<std::string, std::uint64_t> unused_;
   std::uint64_t blocks_ = 0;
   bool ended_ = false;
+  int selected_tool_ = 0, loaded_tool_ = 0;  ///< T; M6 or M61 Q
+  Vec3 tool_offset_;  ///< added to absolute coordinates (G43, G43.1; G49 clears it)
 };
 
 }  // namespace tk::motion

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "io/error.hpp"
+#include "motion/arc_geometry.hpp"
 #include "motion/gcode.hpp"
 #include "motion/gcode_block.hpp"
 
@@ -36,6 +37,7 @@ void GcodeInterpreter::execute(const GcodeLine& line, std::size_t line_number, s
   ++blocks_;
 
   const bool skip_motion = skip_unsupported(block);
+  set_tool_offset(block);
   record_unused(block);
   // The rest in LinuxCNC's order of execution (feed mode, F, S, spindle,
   // dwell, plane, units, lathe and distance modes, motion, program end),
@@ -114,6 +116,56 @@ void GcodeInterpreter::record_unused(GcodeBlock& block) {
   }
 }
 
+/// T selects, M6 loads the selected tool, M61 Q loads tool Q; then G43
+/// (the table's offsets of tool H, or of the loaded tool), G43.1 (the
+/// line's X Y Z are the offsets) or G49 (none), in LinuxCNC's order. The
+/// machine does not move: later absolute coordinates shift by the offset.
+void GcodeInterpreter::set_tool_offset(GcodeBlock& block) {
+  const auto tool_number = [&](char letter) {
+    const double value = block.value[GcodeBlock::index(letter)];
+    if (value < 0 || value != std::floor(value) || value > 1e9)
+      throw Error(fmt::format("{}{:g}: a tool number is a whole number, 0 or more", letter, value));
+    return static_cast<int>(value);
+  };
+  if (block.has('T')) selected_tool_ = tool_number('T');
+  if (block.has_m(6)) loaded_tool_ = selected_tool_;
+  if (block.has_m(61) && block.has('Q')) loaded_tool_ = tool_number('Q');
+  const GcodeInfo* mode = block.in_group(GcodeGroup::tool_length);
+  if (!mode) return;
+  if (mode->code == 490) {
+    tool_offset_ = {};
+  } else if (mode->code == 431) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const char letter = "XYZ"[axis];
+      if (!block.has(letter)) continue;
+      tool_offset_[axis] = block.take(letter) * unit();
+      block.present.reset(GcodeBlock::index(letter));  // an offset, not a move
+    }
+  } else {
+    int tool = loaded_tool_;
+    if (block.has('H')) {
+      tool = tool_number('H');
+      block.take('H');
+    }
+    if (tool == 0) {
+      tool_offset_ = {};
+      return;
+    }
+    if (!options_.has_tool_table) {
+      const std::string message =
+          fmt::format("G43 (tool length offset) of tool {}: its length is unknown without a tool table "
+                      "(--tool-table FILE)",
+                      tool);
+      if (!options_.lenient) throw Error(message);
+      warn("skipped " + message);
+      return;
+    }
+    const auto found = options_.tool_table.find(tool);
+    if (found == options_.tool_table.end()) throw Error(fmt::format("G43: tool {} is not in the tool table", tool));
+    tool_offset_ = found->second;
+  }
+}
+
 void GcodeInterpreter::set_modes(GcodeBlock& block) {
   if (const GcodeInfo* mode = block.in_group(GcodeGroup::feed_mode)) {
     const bool inverse = mode->code == 930;
@@ -168,6 +220,13 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
   }
   if (motion_mode_ == -1) throw Error("axis words with no motion mode (after G80)");
 
+  // G53: this line's coordinates are the machine's, with no offset.
+  const bool machine_coordinates = block.has_g(530);
+  if (machine_coordinates && incremental_) throw Error("G53 in incremental distance mode (G91)");
+  if (machine_coordinates && motion_mode_ != 0 && motion_mode_ != 1) throw Error("G53 needs G0 or G1 motion");
+  // G43 moves nothing (LinuxCNC's G43: "The next time a compensated axis
+  // is moved, that axis's endpoint is the compensated location"): an axis
+  // without a word stays where the machine is.
   Vec3 target = position_;
   for (int axis = 0; axis < 3; ++axis) {
     const char letter = "XYZ"[axis];
@@ -176,7 +235,7 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
     // G7: the word is a diameter, the machine's X a radius. LinuxCNC halves
     // the number as it reads it, so G91 increments are halved too.
     if (letter == 'X' && diameter_mode_) value /= 2;
-    target[axis] = incremental_ ? position_[axis] + value : value;
+    target[axis] = incremental_ ? position_[axis] + value : value + (machine_coordinates ? 0 : tool_offset_[axis]);
     if (!(std::abs(target[axis]) <= options_.max_coordinate_mm))
       throw Error(fmt::format("coordinate {}{:.10g} beyond ±{:.10g} mm", letter, target[axis], options_.max_coordinate_mm));
   }
@@ -301,18 +360,9 @@ void GcodeInterpreter::arc(GcodeBlock& block, Motion& motion) const {
   } else {
     const double offset0 = block.has(first) ? block.take(first) * unit() : 0;
     const double offset1 = block.has(second) ? block.take(second) * unit() : 0;
-    centre0 = arc_incremental_ ? start0 + offset0 : offset0;
-    centre1 = arc_incremental_ ? start1 + offset1 : offset1;
-    const double start_radius = std::hypot(start0 - centre0, start1 - centre1);
-    const double end_radius = std::hypot(end0 - centre0, end1 - centre1);
-    if (std::min(start_radius, end_radius) < tolerance)
-      throw Error(fmt::format("zero-radius arc (radius {:g} mm at the start, {:g} mm at the end)", start_radius,
-                              end_radius));
-    const double difference = std::abs(end_radius - start_radius);
-    const double limit = inches_ ? 0.05 * kMmPerInch : 0.5;
-    if (difference > limit || (difference > tolerance && difference > 0.001 * std::max(start_radius, end_radius)))
-      throw Error(fmt::format("radius to end of arc differs from radius to start: {:.4f} mm and {:.4f} mm", end_radius,
-                              start_radius));
+    centre0 = arc_incremental_ ? start0 + offset0 : offset0 + tool_offset_[axes[0]];
+    centre1 = arc_incremental_ ? start1 + offset1 : offset1 + tool_offset_[axes[1]];
+    check_arc_radii(std::hypot(start0 - centre0, start1 - centre1), std::hypot(end0 - centre0, end1 - centre1), inches_);
   }
   motion.center = motion.start;
   motion.center[axes[0]] = centre0;

@@ -16,6 +16,9 @@ namespace tk::motion {
 
 namespace {
 
+/// Where our subset stops, LinuxCNC's own interpreter takes over.
+constexpr std::string_view kCanonHint = " (rs274 -g FILE | gcode-pulse --canon runs the whole language)";
+
 /// Longest number accepted: more digits carry no precision and only serve
 /// to build huge values.
 constexpr std::size_t kMaxNumberLength = 64;
@@ -97,7 +100,7 @@ double parse_number(const std::string& digits, const std::string& shown) {
 std::size_t read_word(std::string_view text, std::size_t start, GcodeLine& line) {
   const char written = text[start];
   const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(written)));
-  if (letter == 'O') throw Error("'O' words (subroutines) are not supported");
+  if (letter == 'O') throw Error("'O' words (subroutines) are not supported" + std::string(kCanonHint));
   std::size_t i = start + 1;
   while (i < text.size() && is_blank(static_cast<unsigned char>(text[i]))) ++i;
   const std::string_view rest = text.substr(i);
@@ -129,8 +132,14 @@ std::size_t read_word(std::string_view text, std::size_t start, GcodeLine& line)
 [[noreturn]] void unexpected(unsigned char c) {
   if (is_bad_byte(c, false)) bad_byte(c);
   switch (c) {
-    case '#': throw Error("unexpected character '#': parameters are not supported");
-    case '[': throw Error("unexpected character '[': expressions are not supported");
+    case '#': throw Error("unexpected character '#': parameters are not supported" + std::string(kCanonHint));
+    case '[': throw Error("unexpected character '[': expressions are not supported" + std::string(kCanonHint));
+    case '@':
+    case '^':
+      throw Error(fmt::format("'{}' is LinuxCNC's polar {} word: polar coordinates are not supported{}",
+                              static_cast<char>(c), c == '@' ? "distance" : "angle", kCanonHint));
+    case '$':
+      throw Error("'$' is LinuxCNC's spindle selection word: one spindle only, no '$'" + std::string(kCanonHint));
     case '/': throw Error("unexpected character '/': block delete must start the line");
     default: throw Error(fmt::format("unexpected character '{}'", static_cast<char>(c)));
   }

@@ -21,11 +21,14 @@ PulseRun::PulseRun(const PulseOptions& options, PulseSink on_pulses, std::functi
     : options_(options),
       on_pulses_(std::move(on_pulses)),
       interpreter_(options.interpreter),
+      canon_(options.interpreter),
       planner_(options.limits),
       stepper_(options.method, options.steps_per_mm) {
-  interpreter_.on_warning([this, warn = std::move(warn)](const std::string& message) {
+  auto located = [this, warn = std::move(warn)](const std::string& message) {
     if (warn) warn(Error(message, where_).located_message());
-  });
+  };
+  interpreter_.on_warning(located);
+  canon_.on_warning(located);
   ready_ = [this](const PlannedBlock& block) { on_block(block); };
   stepper_.set_position(stepper_.quantise(options.interpreter.start));
   lattice_ = stepper_.position();
@@ -47,20 +50,12 @@ void PulseRun::run_lines(const std::string& path) {
   io::InputFile input(path);
   std::string_view text;
   bool started = false;  // a block or an opening '%' seen
-  // M2/M30 end the program: the lines after it are not read at all.
-  while (!interpreter_.program_ended() && input.next(text)) {
+  // M2/M30 (PROGRAM_END) end the program: the lines after it are not read at all.
+  while (!program_ended() && input.next(text)) {
     motions_.clear();
     where_ = input.where();
     try {
-      const GcodeLine line = lex_gcode_line(text);
-      // '%' opens a tape; the next '%' (or one after any block) ends it.
-      if (line.percent) {
-        if (started) break;
-        started = true;
-        continue;
-      }
-      if (!line.words.empty()) started = true;
-      interpreter_.execute(line, input.line_number(), motions_);
+      if (!read_motions(input, text, started)) break;
       for (const Motion& motion : motions_) {
         check_counter_range(motion);
         check_synchronised_speed(motion);
@@ -74,6 +69,30 @@ void PulseRun::run_lines(const std::string& path) {
       planner_.add(motion, ready_);
     }
   }
+  // rs274 exits 0 on an error and simply stops printing: a stream without
+  // its PROGRAM_END() is a program LinuxCNC did not finish.
+  if (options_.canon && !canon_.program_ended())
+    throw Error("the canonical commands end without PROGRAM_END(): rs274 stopped early (its standard error says why)",
+                Location{input.where().file, input.line_number()});
+}
+
+/// One line's motions into motions_: canonical commands, or G-code. False
+/// at the '%' that closes a tape: nothing after it is read.
+bool PulseRun::read_motions(const io::InputFile& input, std::string_view text, bool& started) {
+  if (options_.canon) {
+    canon_.execute(text, input.line_number(), motions_);
+    return true;
+  }
+  const GcodeLine line = lex_gcode_line(text);
+  // '%' opens a tape; the next '%' (or one after any block) ends it.
+  if (line.percent) {
+    if (started) return false;
+    started = true;
+    return true;
+  }
+  if (!line.words.empty()) started = true;
+  interpreter_.execute(line, input.line_number(), motions_);
+  return true;
 }
 
 // The stepper's counters hold any point of the path: the end, and for an
@@ -166,8 +185,8 @@ PulseSummary PulseRun::summary() const {
     // counted in coincident_steps instead.
     out.peak_rate[axis] = std::isfinite(shortest_interval_[axis]) && shortest_interval_[axis] > 0 ? 1.0 / shortest_interval_[axis] : 0.0;
   }
-  out.blocks = interpreter_.blocks();
-  out.unused_words = interpreter_.unused_words();
+  out.blocks = options_.canon ? canon_.blocks() : interpreter_.blocks();
+  out.unused_words = options_.canon ? canon_.unused_words() : interpreter_.unused_words();
   return out;
 }
 

@@ -12,6 +12,8 @@
 #include <string>
 
 #include "io/error.hpp"
+#include "io/input_file.hpp"
+#include "motion/canon.hpp"
 #include "motion/gcode.hpp"
 #include "motion/path_svg.hpp"
 #include "motion/planner.hpp"
@@ -24,6 +26,9 @@ struct PulseOptions {
   std::array<double, 3> steps_per_mm{200, 200, 400};
   MachineLimits limits;
   InterpreterOptions interpreter;
+  /// The input is LinuxCNC's canonical commands (`rs274 -g`, canon.hpp),
+  /// not G-code (gcode-pulse --canon).
+  bool canon = false;
   /// The most pulses a run may imply (gcode-pulse --max-pulses): the block
   /// whose motions would take the total past it is an error at its line.
   double max_pulses = kDefaultMaxPulses;
@@ -73,6 +78,8 @@ class PulseRun {
 
  private:
   void run_lines(const std::string& path);
+  bool read_motions(const io::InputFile& input, std::string_view text, bool& started);
+  bool program_ended() const { return options_.canon ? canon_.program_ended() : interpreter_.program_ended(); }
   void check_counter_range(const Motion& motion) const;
   void check_synchronised_speed(const Motion& motion) const;
   void check_implied_pulses(const Motion& motion);
@@ -82,6 +89,7 @@ class PulseRun {
   Location where_;  ///< the line being read, for warnings
   PulseSink on_pulses_;
   GcodeInterpreter interpreter_;
+  CanonInterpreter canon_;
   Planner planner_;
   Stepper stepper_;
   Planner::Sink ready_;

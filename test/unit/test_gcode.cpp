@@ -91,10 +91,14 @@ TEST(GcodeLexer, Errors) {
   EXPECT_EQ(lex_error("x NaN"), "bad number 'xNaN'");
   EXPECT_NE(lex_error("X" + std::string(65, '1')).find("longer than 64 characters"), std::string::npos);
   EXPECT_EQ(lex_error("X" + std::string(64, '1')), "");
-  EXPECT_EQ(lex_error("#1=5"), "unexpected character '#': parameters are not supported");
+  const std::string canon_hint = " (rs274 -g FILE | gcode-pulse --canon runs the whole language)";
+  EXPECT_EQ(lex_error("#1=5"), "unexpected character '#': parameters are not supported" + canon_hint);
   EXPECT_EQ(lex_error("G1 X[1+2]"), "letter 'X' without a number");
-  EXPECT_EQ(lex_error("[1]"), "unexpected character '[': expressions are not supported");
-  EXPECT_EQ(lex_error("O100 sub"), "'O' words (subroutines) are not supported");
+  EXPECT_EQ(lex_error("[1]"), "unexpected character '[': expressions are not supported" + canon_hint);
+  EXPECT_EQ(lex_error("O100 sub"), "'O' words (subroutines) are not supported" + canon_hint);
+  EXPECT_EQ(lex_error("G1 ^45 @10"), "'^' is LinuxCNC's polar angle word: polar coordinates are not supported" + canon_hint);
+  EXPECT_EQ(lex_error("G1 @10"), "'@' is LinuxCNC's polar distance word: polar coordinates are not supported" + canon_hint);
+  EXPECT_EQ(lex_error("M3 $1 S100"), "'$' is LinuxCNC's spindle selection word: one spindle only, no '$'" + canon_hint);
   EXPECT_EQ(lex_error("G1 X1 \x01"), "unexpected byte 0x01");
   EXPECT_EQ(lex_error("G1 \xff"), "unexpected byte 0xff");
   EXPECT_EQ(lex_error("(\x7f)"), "unexpected byte 0x7f");
@@ -361,7 +365,7 @@ TEST(GcodeInterpreter, UnusedWordsAndProgramEnd) {
   GcodeInterpreter interpreter;
   const auto m = run(
       "N10 G17 G21 G90 G94 G40 G49 G54 G64 P0.01 Q0.01 G98\n"
-      "M03 S1000\nM3\nT1 M06\nG43 H1\nM62 P1\nM63 P1\nM7 M8\nM9\nM0\nM1\nG97\nG61\n"
+      "M03 S1000\nM3\nT1 M06\nH1\nM62 P1\nM63 P1\nM7 M8\nM9\nM0\nM1\nG97\nG61\n"
       "/G0 X100\n"  // block delete switch on: skipped
       "G0 X1\nM30\nG0 X5\nM3",
       interpreter);
@@ -369,7 +373,7 @@ TEST(GcodeInterpreter, UnusedWordsAndProgramEnd) {
   expect_point(interpreter.position(), 1, 0, 0);
   EXPECT_TRUE(interpreter.program_ended());
   const std::map<std::string, std::uint64_t> expected = {
-      {"G40", 1}, {"G43", 1}, {"G49", 1}, {"G54", 1}, {"G61", 1}, {"G64", 1}, {"G97", 1}, {"G98", 1},
+      {"G40", 1}, {"G54", 1}, {"G61", 1}, {"G64", 1}, {"G97", 1}, {"G98", 1},
       {"H", 1},   {"M0", 1},  {"M1", 1},  {"M3", 2},  {"M6", 1},  {"M62", 1}, {"M63", 1}, {"M7", 1},
       {"M8", 1},  {"M9", 1},  {"T", 1}};  // S is not here: G33 follows it
   EXPECT_EQ(interpreter.unused_words(), expected);

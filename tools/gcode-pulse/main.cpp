@@ -15,6 +15,7 @@
 #include "motion/machine_settings.hpp"
 #include "motion/pulse_binary.hpp"
 #include "motion/pulse_run.hpp"
+#include "motion/tool_table.hpp"
 
 namespace {
 
@@ -36,8 +37,8 @@ int main(int argc, char** argv) {
                         "per lattice move (t, dx, dy, dz), or a summary of them.",
                         "See gcode-pulse(1).");
   std::string steps = "200,200,400", method = "nearest", svg_path, window_text, machine_file, axis_max_feed, axis_accel,
-              start, verify_path;
-  bool summary_only = false, lenient = false, binary = false;
+              start, verify_path, tool_table;
+  bool summary_only = false, lenient = false, binary = false, canon = false;
   double accel = 500, rapid = 5000, max_feed = 0, junction_deviation = 0.01;
   std::size_t lookahead = 256;
   std::uint64_t max_pulses = static_cast<std::uint64_t>(tk::motion::PulseOptions::kDefaultMaxPulses);
@@ -57,6 +58,13 @@ int main(int argc, char** argv) {
   app.add_flag("--binary", binary, "write the pulses in the compact binary form (see gcode-pulse(1))");
   app.add_option("--verify-binary", verify_path,
                  "check that FILE is a complete --binary stream and write one record of what it holds")
+      ->type_name("FILE");
+  app.add_flag("--canon", canon,
+               "read LinuxCNC's canonical commands (rs274 -g PROGRAM | gcode-pulse --canon) instead of G-code: "
+               "whatever LinuxCNC interprets");
+  app.add_option("--tool-table", tool_table,
+                 "LinuxCNC tool table (T1 P1 Z12.5 ...; offsets in mm) whose offsets G43 applies; without one, "
+                 "G43 of a tool other than 0 is refused")
       ->type_name("FILE");
   app.add_flag("--lenient", lenient, "skip words that change motion but cannot be honoured (G41, canned cycles...) with a warning");
   app.add_option("--svg", svg_path, "draw the ideal and the stepped path in the XY plane (needs --window)")
@@ -126,6 +134,12 @@ int main(int argc, char** argv) {
     settings.apply_to(options);
     options.method = tk::motion::step_method_named(method);
     options.interpreter.lenient = lenient;
+    options.canon = canon;
+    if (!tool_table.empty()) {
+      if (canon) throw tk::UsageError("--tool-table is for G-code: rs274 applies its own table (rs274 -t FILE)");
+      options.interpreter.tool_table = tk::motion::read_tool_table(tool_table);
+      options.interpreter.has_tool_table = true;
+    }
     options.max_pulses = static_cast<double>(max_pulses);
 
     if (binary && summary_only) throw tk::UsageError("--binary and --summary exclude each other");

@@ -1,0 +1,157 @@
+#!/usr/bin/env bats
+# LinuxCNC's own interpreter as the oracle. rs274 (Debian's linuxcnc-uspace)
+# prints the canonical machining commands of a program; test/oracle/
+# rs274_canon.py maps them to machine positions and path lengths on its own
+# (program coordinates + G92, XY rotation, G5x and tool offsets).
+#  - gcode-pulse --canon steps whatever rs274 finishes on three axes and
+#    ends where rs274 puts the machine;
+#  - where our own interpreter runs a program too, both paths agree;
+#  - G43, G43.1, G49 and G53 end where LinuxCNC puts them.
+
+bats_require_minimum_version 1.5.0
+
+NCFILES=/usr/share/linuxcnc/ncfiles
+
+# canon PROGRAM > canonical commands: rs274 run from the program's folder
+# (for its subroutine files), with the test tool table and the block delete
+# switch on (-b), as gcode-pulse reads '/' lines. Its exit status says
+# nothing (0 after most errors, 1 after some): the stream's end does. rs274
+# keeps its tool table in $HOME/.tool.mmap, which runs at the same time
+# overwrite: each test file has its own HOME.
+canon() {
+  (cd "$(dirname "$1")" && HOME="$BATS_FILE_TMPDIR" rs274 -b -t "$TOOLS_INCH" -g "$(basename "$1")" < /dev/null 2> /dev/null) || true
+}
+
+setup_file() {
+  command -v rs274 > /dev/null || return 0
+  TOOLS_INCH="$BATS_TEST_DIRNAME/../fixtures/gcode/linuxcnc/rs274_tools_inch.tbl"
+  # LinuxCNC's examples through rs274 once, for the tests that use them.
+  mkdir -p "$BATS_FILE_TMPDIR/ncfiles"
+  local program
+  for program in "$NCFILES"/*.ngc; do
+    [ -e "$program" ] && canon "$program" > "$BATS_FILE_TMPDIR/ncfiles/$(basename "$program" .ngc).canon"
+  done
+}
+
+setup() {
+  load test_helper
+  command -v rs274 > /dev/null || skip "rs274 (linuxcnc-uspace) is not installed"
+  cd "$BATS_TEST_TMPDIR"
+  ORACLE="$TOOLKIT_ROOT/test/oracle/rs274_canon.py"
+  TOOLS_INCH="$FIXTURES/gcode/linuxcnc/rs274_tools_inch.tbl"
+  TOOLS_MM="$FIXTURES/gcode/linuxcnc/rs274_tools_mm.tbl"
+}
+
+# within_a_step ORACLE_JSON SUMMARY_JSON [path]: final positions within a step
+# (the default 200, 200, 400 steps/mm) plus rs274's 4-decimal printing; with
+# "path", the path lengths within a step too.
+within_a_step() {
+  py '
+import json, sys
+o, s = json.loads(sys.argv[1]), json.loads(sys.argv[2])
+step = {"x": 1/200, "y": 1/200, "z": 1/400}
+bad = [a for a in "xyz" if abs(o["final_" + a] - s["final_" + a]) > step[a] + 0.0001 * 25.4]
+if len(sys.argv) > 3 and abs(o["path_mm"] - s["path_mm"]) > 1/200:
+    bad.append("path %.6f vs %.6f" % (o["path_mm"], s["path_mm"]))
+if bad:
+    sys.exit("differ: %s\n rs274: %s\n ours: %s" % (bad, sys.argv[1], sys.argv[2]))
+' "$@"
+}
+
+@test "every shipped LinuxCNC example rs274 finishes on 3 axes: gcode-pulse --canon ends where rs274 puts the machine" {
+  [ -d "$NCFILES" ] || skip "LinuxCNC's examples are not installed"
+  local stepped=0 refused=0 stream oracle summary
+  for stream in "$BATS_FILE_TMPDIR"/ncfiles/*.canon; do
+    oracle=$(/usr/bin/python3 "$ORACLE" "$stream")
+    case "$oracle" in
+      *'"status": "incomplete"'*) continue ;;  # rs274 itself stopped on an error
+      *'"status": "extra_axes"'*)
+        run -1 --separate-stderr gcode-pulse --canon --summary "$stream"
+        [[ "$stderr" == *"gcode-pulse steps X, Y and Z only"* ]] || { echo "$stream: $stderr"; false; }
+        refused=$((refused + 1)) ;;
+      *'"status": "nurbs"'*)
+        run -1 --separate-stderr gcode-pulse --canon --summary "$stream"
+        [[ "$stderr" == *"NURBS_FEED"* ]] || { echo "$stream: $stderr"; false; }
+        refused=$((refused + 1)) ;;
+      *)
+        summary=$(gcode-pulse --canon --summary "$stream") || { echo "$stream failed"; false; }
+        within_a_step "$oracle" "$summary" path || { echo "$stream"; false; }
+        stepped=$((stepped + 1)) ;;
+    esac
+  done
+  echo "stepped $stepped, refused $refused (rotary axes, splines)"
+  # 48 of the 56 examples of LinuxCNC 2.9 finish in rs274 with this tool
+  # table; 4 of those move A/B or use splines.
+  [ "$stepped" -ge 40 ]
+}
+
+@test "our interpreter and the canonical path agree on the corpus, the fixtures and LinuxCNC's examples" {
+  local compared=0 program stream oracle ours via_canon path
+  local programs=("$FIXTURES"/gcode/*.ngc "$FIXTURES"/gcode/linuxcnc/*.ngc)
+  [ -d "$TOOLKIT_ROOT/../shared/corpus/gcode" ] && programs+=("$TOOLKIT_ROOT"/../shared/corpus/gcode/*)
+  [ -d "$NCFILES" ] && programs+=("$NCFILES"/*.ngc)
+  for program in "${programs[@]}"; do
+    ours=$(gcode-pulse --summary --tool-table "$TOOLS_MM" "$program" 2> /dev/null) || continue
+    stream="$BATS_FILE_TMPDIR/ncfiles/$(basename "$program" .ngc).canon"
+    if [[ "$program" != "$NCFILES"/* ]]; then
+      # rs274 wants a program end; grbl-style files often have none.
+      { cat "$program"; echo; echo M2; } > with_end.ngc
+      canon "$PWD/with_end.ngc" > run.canon
+      stream=run.canon
+    fi
+    oracle=$(/usr/bin/python3 "$ORACLE" "$stream")
+    [[ "$oracle" == *'"status": "ok"'* ]] || continue  # a dialect LinuxCNC reads otherwise (Mach3's G71)
+    via_canon=$(gcode-pulse --canon --summary "$stream")
+    # rs274 alone re-reads the position after a tool change without the new
+    # tool offset, so a G43 on an M6's line moves Z on the next move there
+    # (LinuxCNC does not, nor do we): compare the ends only.
+    path=path
+    grep -qiE 'M0*6.*G43|G43.*M0*6' "$program" && path=""
+    within_a_step "$oracle" "$ours" $path || { echo "$program (our interpreter)"; false; }
+    within_a_step "$oracle" "$via_canon" path || { echo "$program (--canon)"; false; }
+    compared=$((compared + 1))
+  done
+  echo "compared $compared programs"
+  [ "$compared" -ge 20 ]
+}
+
+@test "G43, G43 H, G43.1, G49 and G53 put the machine where LinuxCNC does, after every line" {
+  local program="$FIXTURES/gcode/linuxcnc/tool_length.ngc" lines n oracle ours via_canon
+  lines=$(grep -c . "$program")
+  for n in $(seq 3 $((lines - 1))); do
+    { head -n "$n" "$program"; echo M2; } > prefix.ngc
+    canon "$PWD/prefix.ngc" > run.canon
+    oracle=$(/usr/bin/python3 "$ORACLE" run.canon)
+    [[ "$oracle" == *'"status": "ok"'* ]] || { echo "rs274 did not finish line $n"; cat run.canon; false; }
+    ours=$(gcode-pulse --summary --tool-table "$TOOLS_MM" prefix.ngc)
+    via_canon=$(gcode-pulse --canon --summary run.canon)
+    within_a_step "$oracle" "$ours" path || { echo "after line $n (our interpreter)"; false; }
+    within_a_step "$oracle" "$via_canon" path || { echo "after line $n (--canon)"; false; }
+  done
+}
+
+@test "G43 without a tool table is refused, not ignored; --lenient skips it with a warning" {
+  run -1 --separate-stderr gcode-pulse --summary "$FIXTURES/gcode/linuxcnc/tool_length.ngc"
+  [[ "$stderr" =~ tool_length\.ngc:5:\ G43.*tool\ 3.*--tool-table ]] || { echo "$stderr"; false; }
+  run -0 --separate-stderr gcode-pulse --summary --lenient "$FIXTURES/gcode/linuxcnc/tool_length.ngc"
+  [[ "$stderr" == *"skipped G43"* ]]
+  printf 'G21\nT0 M6 G43\nG0 X1\nM2\n' > tool0.ngc
+  run -0 gcode-pulse --summary tool0.ngc  # tool 0 (none) has no length to know
+  run -1 --separate-stderr gcode-pulse --summary --tool-table "$TOOLS_MM" <(printf 'G43 H42\nM2\n')
+  [[ "$stderr" == *"tool 42 is not in the tool table"* ]]
+}
+
+@test "a canonical stream rs274 did not finish is an error after its pulses; lines that are no command are refused" {
+  printf 'G21 G1 X1 F100\nG1 X2 Y [1 +\nM2\n' > broken.ngc
+  canon "$PWD/broken.ngc" > run.canon
+  run -1 --separate-stderr gcode-pulse --canon run.canon
+  [[ "$stderr" == *"without PROGRAM_END()"* ]] || { echo "$stderr"; false; }
+  # the move before the error was stepped: 200 steps of X
+  [ "$(grep -c '^{' <<< "$output")" -eq 200 ]
+  printf '    1 N..... STRAIGHT_FEED(1.0, 2.0)\n' > short.canon
+  run -1 --separate-stderr gcode-pulse --canon short.canon
+  [[ "$stderr" =~ short\.canon:1:\ STRAIGHT_FEED\ takes\ 6\ or\ 9\ arguments ]]
+  printf 'G1 X1 F100\n' > gcode.canon
+  run -1 --separate-stderr gcode-pulse --canon gcode.canon
+  [[ "$stderr" == *"gcode.canon:1: not a canonical command"* ]]
+}
