@@ -77,7 +77,11 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
                        : number.value.get_str();
   // Results name the number as it was given (1338*2^1000-1 stays so, though
   // proved as 669*2^1001-1), so they can be matched with the input.
-  proof.name = number.form ? kbnc_text(*number.form) : number.value.get_str();
+  // k*2^n+-1 keeps its "1*" as LLR's isLLRP and isProthP write it.
+  const bool llr_shape = number.form && number.form->b == 2 && (number.form->c == 1 || number.form->c == -1);
+  proof.name = llr_shape ? fmt::format("{}*2^{}{:+d}", number.form->k.get_str(), number.form->n, number.form->c)
+               : number.form ? kbnc_text(*number.form)
+                             : number.value.get_str();
   // 3 = 1*2^2-1 is the one k*2^n-1 that trial division below does not settle
   // and LLR's P = 4 cannot prove (it needs 3 not to divide N).
   if (number.value == 3 && special && form->c < 0) {
