@@ -19,15 +19,16 @@ struct ProofPlan {
   /// shape) is an Error instead of a BPSW probable-prime, unless trial
   /// division finds a factor.
   bool require_proof = false;
-  /// Options for the proof of one member, named by its text "k*2^n-1"
-  /// (checkpoint hooks, cancellation); may be empty.
+  /// Options for the proof of one member, named by its normalised text
+  /// "k*2^n-1", k odd (checkpoint hooks, cancellation); may be empty.
   std::function<ProofOptions(const std::string& member)> options_for;
 };
 
 struct MemberProof {
   Verdict verdict = Verdict::unknown;
   std::string test;         ///< llr, proth, bpsw or trial
-  std::string text;         ///< the member as "k*2^n+c" after normalising k
+  std::string text;         ///< the member as "k*2^n+c" after normalising k (checkpoint names)
+  std::string name;         ///< the member as its input wrote it (even k kept): results lines
   std::uint64_t parameter = 0;  ///< P (llr) or a (proth)
   std::optional<std::uint64_t> res64;  ///< composites of llr and proth
   std::string witness;      ///< "factor p" for a small factor

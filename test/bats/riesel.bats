@@ -39,9 +39,9 @@ no_seconds() {
   sed -E 's/"seconds":[0-9.eE+-]+/"seconds":S/'
 }
 
-# no_time: lresults.txt lines without their "  Time : S sec." tail.
+# no_time: lresults.txt lines without their "  Time : S sec." or "  Time : M ms." tail.
 no_time() {
-  sed -E 's/  Time : [0-9.]+ sec\.$//'
+  sed -E 's/  Time : [0-9]+\.[0-9]{3} (sec|ms)\.$//'
 }
 
 
@@ -170,9 +170,10 @@ for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"])'"
 prime llr
 prime proth
 probable-prime bpsw"
+  # Proved as 3*2^11-1 and 3*2^12+1, but logged by the digits they were given as.
   run bash -c "printf '6143\n12289\n' | riesel --state st > /dev/null && cut -d' ' -f1-3 st/lresults.txt"
-  assert_output "3*2^11-1 is prime!
-3*2^12+1 is prime!"
+  assert_output "6143 is prime!
+12289 is prime!"
 }
 
 @test "CSV in and out: a header row with the tool's columns" {
@@ -278,7 +279,8 @@ for r in map(json.loads, sys.stdin): print(r[\"k\"], r[\"n\"], r[\"form\"])' < o
 
 # 6*2^10-1 = 12*2^9-1 = 3*2^11-1 = 6143 (prime; P = 3 as above). 6*2^1+1 =
 # 3*2^2+1 = 13. 14*2^100-1 = 7*2^101-1: LLR's P = 4 and PARI's residue.
-@test "an even k is normalised to k/2, n+1: the proof, P, res64 and lresults name k odd" {
+# lresults.txt names each number as the input wrote it, as LLR 4 does.
+@test "an even k is proved as k/2, n+1 (P, res64), while lresults names the number as given" {
   need_gp
   printf '6*2^10-1\n12*2^9-1\n6*2^1+1\n14*2^100-1\n7*2^101-1\n' > even.txt
   run bash -c "riesel --state st even.txt | python3 -c '
@@ -292,10 +294,10 @@ for r in map(json.loads, sys.stdin): print(r[\"k\"], r[\"n\"], r[\"verdict\"], r
 14 100 composite llr 4 $res64
 7 101 composite llr 4 $res64"
   run no_time < st/lresults.txt
-  assert_output "3*2^11-1 is prime! (4 decimal digits)
-3*2^11-1 is prime! (4 decimal digits)
-3*2^2+1 is prime! (2 decimal digits)
-7*2^101-1 is not prime.  LLR Res64: $res64
+  assert_output "6*2^10-1 is prime! (4 decimal digits)
+12*2^9-1 is prime! (4 decimal digits)
+6*2^1+1 is prime! (2 decimal digits)
+14*2^100-1 is not prime.  LLR Res64: $res64
 7*2^101-1 is not prime.  LLR Res64: $res64"
 }
 
@@ -480,26 +482,73 @@ mixed_input() {
 
 # ------------------------------------------------------------ --state: journal and lresults.txt
 
+# LLR 4.0.6's shapes (Llr.c: isLLRP, GerbiczTest, write_timer): its Proth
+# residue is a^((N-1)/2) mod N plus one, with "Base-a " when a is not 3.
 @test "lresults.txt has LLR's line shapes, with PARI's residues" {
   need_gp
   # LLR prime, LLR composite, Proth prime, Proth composite, trial, BPSW.
   printf '3*2^11-1\n5*2^100-1\n3*2^2+1\n3*2^200+1\n7*2^4-1\n100003\n' > in.txt
   riesel --state st in.txt > /dev/null
   run cat st/lresults.txt
-  assert_line --index 0 --regexp '^3\*2\^11-1 is prime! \(4 decimal digits\)  Time : [0-9]+\.[0-9]{3} sec\.$'
-  assert_line --index 1 --regexp '^5\*2\^100-1 is not prime\.  LLR Res64: [0-9A-F]{16}  Time : [0-9]+\.[0-9]{3} sec\.$'
-  assert_line --index 2 --regexp '^3\*2\^2\+1 is prime! \(2 decimal digits\)  Time : [0-9]+\.[0-9]{3} sec\.$'
-  assert_line --index 3 --regexp '^3\*2\^200\+1 is not prime\.  Proth RES64: [0-9A-F]{16}  Time : [0-9]+\.[0-9]{3} sec\.$'
-  assert_line --index 4 --regexp '^7\*2\^4-1 is not prime\.  factor 3  Time : [0-9]+\.[0-9]{3} sec\.$'
-  assert_line --index 5 --regexp '^100003 is a BPSW probable prime\. \(6 decimal digits\)  Time : [0-9]+\.[0-9]{3} sec\.$'
+  local time='  Time : [0-9]+\.[0-9]{3} (sec|ms)\.$'
+  assert_line --index 0 --regexp "^3\\*2\\^11-1 is prime! \\(4 decimal digits\\)$time"
+  assert_line --index 1 --regexp "^5\\*2\\^100-1 is not prime\\.  LLR Res64: [0-9A-F]{16}$time"
+  assert_line --index 2 --regexp "^3\\*2\\^2\\+1 is prime! \\(2 decimal digits\\)$time"
+  assert_line --index 3 --regexp "^3\\*2\\^200\\+1 is not prime\\.  Base-7 Proth RES64: [0-9A-F]{16}\\.$time"
+  assert_line --index 4 --regexp "^7\\*2\\^4-1 is not prime\\.  factor 3$time"
+  assert_line --index 5 --regexp "^100003 is a BPSW probable prime\\. \\(6 decimal digits\\)$time"
   [ "${#lines[@]}" -eq 6 ]
   run oracle_gp <<'GP'
-print(hex64(llr_residue(5, 100, llr_P(5, 100))), " ", hex64(proth_residue(3, 200, proth_a(3, 200))), " ", isprime(100003));
+print(hex64(llr_residue(5, 100, llr_P(5, 100))), " ", proth_a(3, 200), " ", hex64(proth_residue(3, 200, proth_a(3, 200)) + 1), " ", isprime(100003));
 GP
-  read -r llr proth isprime <<< "$output"
-  [ "$isprime" = 1 ]
+  read -r llr a proth isprime <<< "$output"
+  [ "$isprime" = 1 ] && [ "$a" = 7 ]
   grep -qx "5\*2^100-1 is not prime.  LLR Res64: $llr  Time : .*" st/lresults.txt
-  grep -qx "3\*2^200+1 is not prime.  Proth RES64: $proth  Time : .*" st/lresults.txt
+  grep -qx "3\*2^200+1 is not prime.  Base-7 Proth RES64: $proth.  Time : .*" st/lresults.txt
+}
+
+# A sieve file names even k (sieve keeps every k of the range): lresults.txt
+# must name 1338*2^1000-1 so, not 669*2^1001-1, for scripts that match
+# results to the sieve file. PARI evaluates each name and checks it is the
+# input line's number, and recomputes its residue from that number alone.
+@test "sieve files: lresults names each number as its line gave it (even k too), and PARI agrees" {
+  need_gp
+  printf '1000:M:1:2:2\n1338 1000\n' > one.npg
+  riesel --state st1 one.npg > /dev/null
+  run no_time < st1/lresults.txt
+  assert_output --regexp '^1338\*2\^1000-1 is not prime\.  LLR Res64: [0-9A-F]{16}$'
+  sieve riesel --n 1000 --k 1:60 --pmax 1e3 --newpgen > r.npg
+  sieve proth --n 1000 --k 1:60 --pmax 1e3 --abc > p.abc
+  grep -q '^8 1000$' r.npg  # even k are among them
+  riesel --state st r.npg p.abc > out.jsonl
+  # One GP check per record: name, k, n, c, and what the line says.
+  python3 - st/lresults.txt out.jsonl > checks.gp <<'PY'
+import json, re, sys
+lines = open(sys.argv[1]).read().splitlines()
+records = [json.loads(l) for l in open(sys.argv[2])]
+assert len(lines) == len(records), (len(lines), len(records))
+for line, r in zip(lines, records):
+    m = re.fullmatch(r"(\S+) is (prime! \(\d+ decimal digits\)|not prime\.  (LLR Res64: ([0-9A-F]{16})|(Base-(\d+) )?Proth RES64: ([0-9A-F]{16})\.))  Time : \d+\.\d{3} (sec|ms)\.", line)
+    assert m, line
+    name, kind = m.group(1), "prime" if m.group(2).startswith("prime") else ("llr" if m.group(4) else "proth")
+    res = m.group(4) or m.group(7) or ""
+    base = m.group(6) or "3"
+    print(f'check("{name}", {r["k"]}, {r["n"]}, {r["c"]}, "{kind}", "{res}", {base});')
+PY
+  run oracle_gp < <(cat - checks.gp <<'GP'
+check(name, k, n, c, kind, res, a) = {
+  my(N = eval(name), v, h);
+  if (N != k*2^n + c, error("named ", name, " but tested ", k, "*2^", n, c));
+  v = valuation(N - c, 2); h = (N - c) >> v;
+  if (kind == "prime", if (!ispseudoprime(N), error(name, " is not prime")); return);
+  if (kind == "llr", if (res != hex64(llr_residue(h, v, llr_P(h, v))), error(name, ": LLR Res64")); return);
+  if (a != proth_a(h, v) || res != hex64(proth_residue(h, v, a) + 1), error(name, ": Proth RES64"));
+}
+GP
+  echo 'print("checked ", '"$(wc -l < checks.gp)"');')
+  assert_success
+  assert_output "checked $(wc -l < checks.gp)"
+  grep -q '^8\*2^1000-1 is ' st/lresults.txt
 }
 
 @test "form members each get an lresults line, up to the first composite" {

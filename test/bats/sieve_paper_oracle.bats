@@ -43,7 +43,7 @@ GP
 # The paper's parametrisation at e = 80 (so that the proofs take seconds):
 # candidates k*2^80+1, k*2^81+1 with k = 30030x; the chain verdicts of
 # mrtest (BPSW) and riesel (Proth proofs of k made odd) are PARI's isprime.
-@test "sieve | mrtest | riesel on h0 = 0, c = 30030 (cc2, length 2, e = 80) give PARI's verdicts; riesel names k odd" {
+@test "sieve | mrtest | riesel on h0 = 0, c = 30030 (cc2, length 2, e = 80) give PARI's verdicts; riesel names k as given" {
   sieve cc2 --length 2 --n 80 --h0 0 --c 30030 --x 1:20000 --pmax 1e5 > cand.jsonl
   mrtest -j 2 --trial-bound 0 cand.jsonl > tested.jsonl
   json-field verdict < tested.jsonl > mrtest.txt
@@ -61,12 +61,12 @@ GP
   [ "$chains" -ge 2 ]
   # riesel proves every chain mrtest passed.
   [ "$(json-field verdict < proved.jsonl | grep -c '^prime$')" -eq "$chains" ]
-  # Its results name each member with k made odd: 30030x*2^80+1 as
-  # (30030x/2^t)*2^(80+t)+1; gp writes the same names.
+  # Its results name each member as the sieve file gave it (30030x*2^80+1,
+  # even k kept, as LLR 4 names them); gp writes the same names.
   grep -o '^[0-9]*\*2^[0-9]*+1' st/lresults.txt | sort > names.txt
   paste -d' ' xs.txt want.txt | awk '$2 == "chain" { print $1 }' > chain_xs.txt
   { echo "v = [$(paste -sd, chain_xs.txt)];"; cat <<'GP'
-foreach(v, x, k = 30030*x; t = valuation(k, 2); for(i = 0, 1, print(k >> t, "*2^", 80 + i + t, "+1")));
+foreach(v, x, k = 30030*x; for(i = 0, 1, print(k, "*2^", 80 + i, "+1")));
 GP
   } | gp -q -f | sort > want_names.txt
   run diff want_names.txt names.txt

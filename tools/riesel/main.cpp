@@ -22,6 +22,7 @@
 #include "primes/candidate.hpp"
 #include "primes/candidate_input.hpp"
 #include "primes/candidate_proof.hpp"
+#include "primes/llr_results.hpp"
 #include "primes/number_expression.hpp"
 #include "primes/proof_journal.hpp"
 
@@ -55,19 +56,6 @@ struct Outcome {
   std::vector<std::string> log_lines;
   std::optional<tk::Error> error;
 };
-
-/// A results line as LLR writes it to lresults.txt.
-std::string llr_log_line(const tk::primes::MemberProof& proof, double seconds) {
-  const std::string time = fmt::format("Time : {:.3f} sec.", seconds);
-  if (proof.verdict == Verdict::prime)
-    return fmt::format("{} is prime! ({} decimal digits)  {}", proof.text, proof.digits, time);
-  if (proof.verdict == Verdict::probable_prime)
-    return fmt::format("{} is a BPSW probable prime. ({} decimal digits)  {}", proof.text, proof.digits, time);
-  if (proof.res64)
-    return fmt::format("{} is not prime.  {} {:016X}  {}", proof.text, proof.test == "llr" ? "LLR Res64:" : "Proth RES64:",
-                       *proof.res64, time);
-  return fmt::format("{} is not prime.  {}  {}", proof.text, proof.witness.empty() ? "BPSW" : proof.witness, time);
-}
 
 }  // namespace
 
@@ -176,7 +164,7 @@ int main(int argc, char** argv) {
         const Verdict verdict = tk::primes::prove_candidate(candidate, plan, job.record, [&](const tk::primes::MemberProof& proof) {
           const auto now = std::chrono::steady_clock::now();
           if (proof.verdict != Verdict::unknown)
-            out.log_lines.push_back(llr_log_line(proof, std::chrono::duration<double>(now - member_started).count()));
+            out.log_lines.push_back(tk::primes::llr_result_line(proof, std::chrono::duration<double>(now - member_started).count()));
           if (journal && proof.verdict != Verdict::unknown) journal->remove_checkpoint(proof.text + " start=" + start);
           member_started = now;
         });
