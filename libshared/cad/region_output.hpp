@@ -1,6 +1,7 @@
 /// @file region_output.hpp
 /// @brief The region as records (loops of lines and arcs with a flattened
-/// polyline, and what the chaining and the offset found) and as SVG.
+/// polyline, and what the chaining and the offset found); its drawing is
+/// in region_svg.hpp.
 #pragma once
 
 #include <string>
@@ -30,17 +31,5 @@ Record uncut_record(const UncutSpan& span);
 /// "holes", "open_segments", "loose_ends", "t_junctions", "uncut",
 /// "polygon_loops"}.
 Record drawing_record(const Part& part, const RegionOffset& region);
-
-struct SvgLayers {
-  const std::vector<Loop>* drawn = nullptr;       ///< thin black
-  const std::vector<Segment>* open = nullptr;     ///< grey, dashed
-  const std::vector<Loop>* region = nullptr;      ///< filled, the prohibited region
-  const std::vector<LooseEnd>* loose_ends = nullptr;
-  const std::vector<UncutSpan>* uncut = nullptr;
-  std::string title;
-};
-
-/// Writes the drawing to `path` (Error when it cannot), y up, 1 mm a unit.
-void write_region_svg(const std::string& path, const SvgLayers& layers);
 
 }  // namespace tk::cad

@@ -27,12 +27,6 @@ struct Frame {
   double y(double v) const { return top + height * (y_max - std::clamp(v, y_min, y_max)) / (y_max - y_min); }
 };
 
-/// A tick's value with the digits down to the step's: 0.999996, not the 1 that {:g} makes of it.
-std::string tick_label(double value, double step, double largest) {
-  const double digits = std::floor(std::log10(std::max(std::abs(largest), step))) - std::floor(std::log10(step));
-  return fmt::format("{:.{}g}", value, std::clamp(static_cast<int>(digits) + 2, 1, 17));
-}
-
 /// The panel's y extent and tick step, per its Range.
 void fit_y(const TimePanelsPlot& plot, const TimePanel& panel, Frame& frame) {
   if (panel.range == TimePanel::Range::fixed) {
@@ -106,17 +100,17 @@ std::string axes(const Frame& frame, const std::string& y_label, double t_step, 
     if (v > frame.y_max + frame.y_step * 1e-9) break;
     if (std::abs(v) < frame.y_step * 1e-9) v = 0;  // not 5.55e-17
     svg += fmt::format("<line x1=\"{0}\" x2=\"{1}\" y1=\"{2:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\"/>"
-                       "<text x=\"{4}\" y=\"{5:.1f}\" text-anchor=\"end\">{6}</text>\n",
+                       "<text class=\"tick\" x=\"{4}\" y=\"{5:.1f}\" text-anchor=\"end\">{6}</text>\n",
                        kLeft, kLeft + kWidth, frame.y(v), v == 0 ? "#999" : "#ddd", kLeft - 6, frame.y(v) + 4,
-                       tick_label(v, frame.y_step, std::max(-frame.y_min, frame.y_max)));
+                       plain_number(v, frame.y_step));
   }
   for (int k = 0;; ++k) {
     const double t = frame.t_min + k * t_step;
     if (t > frame.t_max + t_step * 1e-9) break;
     svg += fmt::format("<line x1=\"{0:.1f}\" x2=\"{0:.1f}\" y1=\"{1}\" y2=\"{2}\" stroke=\"#ddd\"/>\n", frame.x(t), frame.top, bottom);
     if (time_labels)
-      svg += fmt::format("<text x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", frame.x(t), bottom + 16,
-                         tick_label(t, t_step, std::max(-frame.t_min, frame.t_max)));
+      svg += fmt::format("<text class=\"tick\" x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", frame.x(t), bottom + 16,
+                         plain_number(t, t_step));
   }
   svg += fmt::format("<rect class=\"panel\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>\n", kLeft,
                      frame.top, kWidth, frame.height);
@@ -149,27 +143,6 @@ std::string legend(const Frame& frame, const TimePanel& panel) {
 }
 
 }  // namespace
-
-double nice_step(double span, int ticks) {
-  const double raw = span / ticks, power = std::pow(10, std::floor(std::log10(raw)));
-  for (const double m : {1.0, 2.0, 5.0})
-    if (m * power >= raw) return m * power;
-  return 10 * power;
-}
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string time_panels_svg(const TimePanelsPlot& plot) {
   const double t_first = plot.samples ? plot.time_s(0) : 0, t_last = plot.samples ? plot.time_s(plot.samples - 1) : 1;

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/svg_marks.hpp"
+
 namespace tk::sim {
 
 /// Sample i of a signal (or of the time). The owner keeps its own sample
@@ -68,11 +70,5 @@ std::string time_panels_svg(const TimePanelsPlot& plot);
 /// Writes the drawing to `path` atomically; throws tk::Error naming `path`
 /// when it cannot.
 void write_time_panels_svg(const std::string& path, const TimePanelsPlot& plot);
-
-/// `text` with &, <, > and " escaped, for SVG text and attribute values.
-std::string xml_escape(const std::string& text);
-
-/// A step of 1, 2 or 5 times a power of ten giving about `ticks` ticks over `span` (> 0).
-double nice_step(double span, int ticks);
 
 }  // namespace tk::sim

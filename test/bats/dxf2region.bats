@@ -400,6 +400,61 @@ print(ours == theirs or [p for p in theirs if p not in ours])' "$CORPUS/gcode/vi
   grep -q 'fill-rule="evenodd"' plate.svg
 }
 
+@test "--svg: a legend names each layer drawn in its own look, and the scale bar is as long as its label says" {
+  run --separate-stderr dxf2region "$DXF/notch.dxf" --tool-radius 2 --svg notch.svg
+  assert_success
+  # The part's width in mm from the DXF (ezdxf), its drawn width from the black path: the drawing's scale.
+  py '
+import re, sys, ezdxf, xml.etree.ElementTree as E
+N = "{http://www.w3.org/2000/svg}"
+xs = [p[0] for e in ezdxf.readfile(sys.argv[1]).modelspace() for p in e.get_points("xy")]
+part_mm = max(xs) - min(xs)
+root = E.parse("notch.svg").getroot()
+def numbers(d): return [float(v) for v in re.findall(r"-?[0-9.]+(?:e-?[0-9]+)?", d)]
+part = [p for p in root.iter(N + "path") if p.get("stroke") == "black" and p.get("fill") == "none"]
+assert len(part) == 1, part
+drawn_x = numbers(part[0].get("d"))[0::2]
+scale = (max(drawn_x) - min(drawn_x)) / part_mm  # SVG units per mm
+groups = {g.get("class"): g for g in root.iter(N + "g") if g.get("class")}
+bar = groups["scale-bar"]
+label = bar.find(N + "text").text
+m = re.fullmatch(r"([0-9]+(?:\.[0-9]+)?) mm", label)
+assert m, label
+length_mm = float(m.group(1))
+mantissa = length_mm / 10 ** int(f"{length_mm:e}".split("e")[1])
+assert round(mantissa, 9) in (1, 2, 5), length_mm
+assert part_mm / 10 <= length_mm <= part_mm * 0.4, (length_mm, part_mm)
+horizontal = [l for l in bar.iter(N + "line") if l.get("y1") == l.get("y2")]
+assert len(horizontal) == 1
+drawn = abs(float(horizontal[0].get("x2")) - float(horizontal[0].get("x1")))
+assert abs(drawn - length_mm * scale) < 1e-6 * drawn, (drawn, length_mm, scale)
+vx, vy, vw, vh = map(float, root.get("viewBox").split())
+assert vx <= float(horizontal[0].get("x1")) and float(horizontal[0].get("x2")) <= vx + vw
+# The legend: one row per layer drawn (no open segments or loose ends here), each swatch in the colour of its layer.
+legend = groups["legend"]
+labels = [t.text for t in legend.iter(N + "text")]
+assert len(labels) == 4, labels
+uncut = [p for p in root.iter(N + "path") if p.get("stroke") == "#f08000"]
+region = [p for p in root.iter(N + "path") if p.get("fill-rule") == "evenodd"]
+expected = {"part": ("stroke", part[0].get("stroke")), "prohibited region": ("fill", region[0].get("fill")),
+            "contour": ("stroke", region[0].get("stroke")), "uncut": ("stroke", uncut[0].get("stroke"))}
+swatches = [e for e in legend if e.tag != N + "text"]
+for word, (attribute, colour) in expected.items():
+    rows = [i for i, text in enumerate(labels) if word in text]
+    assert len(rows) == 1, (word, labels)
+    assert swatches[rows[0]].get(attribute) == colour, (word, swatches[rows[0]].attrib)
+' "$DXF/notch.dxf"
+  # With open segments and loose ends, they get rows too.
+  run --separate-stderr dxf2region "$DXF/plate.dxf" --tool-radius 2 --svg plate.svg
+  assert_success
+  run py '
+import xml.etree.ElementTree as E
+N = "{http://www.w3.org/2000/svg}"
+legend = [g for g in E.parse("plate.svg").getroot().iter(N + "g") if g.get("class") == "legend"][0]
+print(*[t.text.split()[0] for t in legend.iter(N + "text")])'
+  assert_output "part prohibited region open loose"
+}
+
 @test "--simulate: the fixed guard invades below speed x latency, the latency-aware guard never, with less under-cut" {
   run --separate-stderr dxf2region "$DXF/plate.dxf" --layer OUTLINE --tool-radius 2 --simulate --strokes 200 --tolerances 2,4,6 --joystick-speed 50
   assert_success

@@ -599,6 +599,42 @@ print("ok", alarms)' $policy
   [ "${#lines[@]}" -eq 2 ]
 }
 
+@test "--svg: tick labels are plain numbers (1000, not 1e+03) on a 1-2-5 step" {
+  subtune --simulate --parts 5000 --arl-runs 20 --policy ewma --svg plot.svg > /dev/null
+  run py '
+import math, re, xml.etree.ElementTree as E
+N = "{http://www.w3.org/2000/svg}"
+texts = [t for t in E.parse("plot.svg").getroot().iter(N + "text")]
+# Every label that reads as a number is one: no exponent, plain digits.
+numeric = []
+for t in texts:
+    text = (t.text or "").strip()
+    try:
+        float(text)
+    except ValueError:
+        continue
+    assert not re.search(r"e[+-]", text, re.I), text
+    assert re.fullmatch(r"-?[0-9]+(\.[0-9]+)?", text), text
+    numeric.append(t)
+# Axes: the labels of one row (time) or one column run (a panel), rising by a step of 1, 2 or 5 times a power of ten.
+axes, last = [], None
+for t in numeric:
+    key = ("x", t.get("y")) if t.get("text-anchor") == "middle" else ("y", t.get("x"))
+    value = float(t.text)
+    if not axes or axes[-1][0] != key or value <= axes[-1][1][-1]:
+        axes.append((key, []))
+    axes[-1][1].append(value)
+assert len(axes) == 3, axes  # two panels and the part-number axis
+for key, values in axes:
+    steps = {round(b - a, 9) for a, b in zip(values, values[1:])}
+    assert len(steps) == 1 and len(values) >= 4, (key, values)
+    step = steps.pop()
+    mantissa = step / 10 ** math.floor(math.log10(step) + 1e-9)
+    assert round(mantissa, 6) in (1, 2, 5), (key, step)
+print(max(axes[-1][1]))'
+  assert_output "5000.0"
+}
+
 @test "--simulate: --trace has a record per part and policy, --svg draws one policy, --compensate and --sim-model set sigma as the formula does" {
   subtune --simulate --parts 50 --arl-runs 20 --policy all --trace trace.jsonl > sum.jsonl
   [ "$(wc -l < trace.jsonl)" -eq 250 ]

@@ -297,6 +297,59 @@ for name, r in rows.items():
   [ "$(json-field tnorm < trace.jsonl | sort -u | wc -l)" -eq 6 ]
 }
 
+@test "laps --svg: one panel per t-norm, none overlapping, and a stop marker at the end of exactly the runs that did not finish" {
+  tnorm-bench laps --tnorm all --board esp32 --svg laps.svg --trace trace.jsonl > laps.jsonl
+  run py '
+import json, re, sys, xml.etree.ElementTree as E
+N = "{http://www.w3.org/2000/svg}"
+rows = [json.loads(l) for l in open("laps.jsonl")]
+unfinished = {r["tnorm"] for r in rows if not r["completed"]}
+trace = {}
+for line in open("trace.jsonl"):
+    t = json.loads(line)
+    trace.setdefault(t["tnorm"], []).append((t["x"], t["y"]))
+def numbers(d): return [float(v) for v in re.findall(r"-?[0-9.]+(?:e-?[0-9]+)?", d)]
+panels = {}
+for g in E.parse("laps.svg").getroot().iter(N + "g"):
+    caption = [t.text for t in g.iter(N + "text")]
+    names = [r["tnorm"] for r in rows if caption and caption[0].startswith(r["tnorm"] + ":")]
+    if len(names) != 1:
+        continue
+    # The bounding box of everything the panel draws: its frame, paths and marks.
+    xs, ys = [], []
+    for e in g.iter():
+        if e.tag == N + "path":
+            v = numbers(e.get("d")); xs += v[0::2]; ys += v[1::2]
+        elif e.tag == N + "rect":
+            x, y = float(e.get("x")), float(e.get("y")); xs += [x, x + float(e.get("width"))]; ys += [y, y + float(e.get("height"))]
+        elif e.tag == N + "circle":
+            r = float(e.get("r")); xs += [float(e.get("cx")) - r, float(e.get("cx")) + r]; ys += [float(e.get("cy")) - r, float(e.get("cy")) + r]
+    panels[names[0]] = (g, (min(xs), min(ys), max(xs), max(ys)))
+assert sorted(panels) == sorted(r["tnorm"] for r in rows), sorted(panels)
+boxes = list(panels.values())
+for i in range(len(boxes)):
+    for j in range(i + 1, len(boxes)):
+        a, b = boxes[i][1], boxes[j][1]
+        assert a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1], (a, b)
+marked = set()
+for name, (g, box) in panels.items():
+    stops = [c for c in g.iter(N + "circle") if c.get("class") == "stop"]
+    if not stops:
+        continue
+    marked.add(name)
+    assert len(stops) == 1, name
+    # The path starts at the first trace point: that fixes the panel offset (1 mm a unit, y mirrored); the marker sits on the last.
+    path = [p for p in g.iter(N + "path") if p.get("class") == "path"][0]
+    v = numbers(path.get("d"))
+    (x0, y0), (x1, y1) = trace[name][0], trace[name][-1]
+    ox, oy = v[0] - x0, v[1] + y0
+    assert abs(float(stops[0].get("cx")) - (x1 + ox)) < 0.05 and abs(float(stops[0].get("cy")) - (oy - y1)) < 0.05, name
+    labels = [t.text for t in g.iter(N + "text") if t.get("class") == "stop-label"]
+    assert len(labels) == 1 and labels[0].startswith(rows[[r["tnorm"] for r in rows].index(name)]["stop_reason"]), labels
+print(sorted(marked) == sorted(unfinished), sorted(unfinished))'
+  assert_output "True ['drastic']"
+}
+
 @test "laps: --no-rule hold keeps the drastic car's motors going where no rule fires" {
   run tnorm-bench laps --tnorm drastic minimum --board esp32 --no-rule hold --laps 1
   assert_success

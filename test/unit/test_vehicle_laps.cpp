@@ -225,22 +225,29 @@ TEST(VehicleLaps, TimeLimitAndBadParameters) {
   EXPECT_THROW(run_laps(oval_track(), CarParameters{}, options, bang_bang), tk::UsageError);
 }
 
-TEST(VehicleLaps, SvgHasTrackRunsAndLegend) {
+TEST(VehicleLaps, SvgHasAPanelPerRunAndMarksARunCutShort) {
   std::vector<TracePoint> trace;
   LapOptions options;
   options.time_limit_s = 1;
-  run_laps(oval_track(), CarParameters{}, options, bang_bang, &trace);
+  const LapResult result = run_laps(oval_track(), CarParameters{}, options, bang_bang, &trace);
+  ASSERT_EQ(result.stop_reason, "time limit");
   const std::string path =
       (std::filesystem::temp_directory_path() / ("tk_vehicle_laps_" + std::to_string(::getpid()) + ".svg")).string();
-  write_lap_svg(path, oval_track(), {{"minimum", trace}, {"drastic <&>", {}}});
+  write_lap_svg(path, oval_track(), {{"minimum", trace, result}, {"drastic <&>", {}, {}}});
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
   std::filesystem::remove(path);
   const std::string svg = text.str();
   EXPECT_NE(svg.find("<svg"), std::string::npos);
-  EXPECT_NE(svg.find(">minimum</text>"), std::string::npos);
-  EXPECT_NE(svg.find(">drastic &lt;&amp;&gt;</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">minimum: did not finish (time limit)</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">drastic &lt;&amp;&gt;: did not finish (ended)</text>"), std::string::npos);
+  std::size_t panels = 0, stops = 0;
+  for (std::size_t at = 0; (at = svg.find("class=\"panel\"", at)) != std::string::npos; ++at) ++panels;
+  for (std::size_t at = 0; (at = svg.find("class=\"stop\"", at)) != std::string::npos; ++at) ++stops;
+  EXPECT_EQ(panels, 2u);
+  EXPECT_EQ(stops, 1u);  // the run without a trace has no end to mark
+  EXPECT_NE(svg.find(">time limit after 1.0 s, "), std::string::npos);
   EXPECT_EQ(svg.rfind("</svg>\n"), svg.size() - 7);
   EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
 }

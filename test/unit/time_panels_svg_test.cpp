@@ -163,9 +163,9 @@ TEST(TimePanelsSvg, RangesFromTheDataSymmetricOrFixed) {
   EXPECT_NE(from_data.find(">-0.2</text>"), std::string::npos);
   EXPECT_EQ(from_data.find(">-1</text>"), std::string::npos);
   const std::string symmetric = time_panels_svg(one_series(100, ramp, TimePanel::Range::symmetric));
-  EXPECT_NE(symmetric.find(">-1</text>"), std::string::npos);
-  EXPECT_NE(symmetric.find(">1</text>"), std::string::npos);
-  EXPECT_NE(symmetric.find(">0</text>"), std::string::npos);  // not 5.55e-17
+  EXPECT_NE(symmetric.find(">-1.0</text>"), std::string::npos);
+  EXPECT_NE(symmetric.find(">1.0</text>"), std::string::npos);
+  EXPECT_NE(symmetric.find(">0.0</text>"), std::string::npos);  // not 5.55e-17; the step's decimals
 
   TimePanelsPlot fixed = one_series(100, [](std::size_t) { return 500.0; }, TimePanel::Range::fixed);
   fixed.panels[0].y_min = 0, fixed.panels[0].y_max = 200;
@@ -187,7 +187,7 @@ TEST(TimePanelsSvg, NiceStepsAreOneTwoOrFiveTimesAPowerOfTen) {
 TEST(TimePanelsSvg, ARunEndingOnePeriodShortOfATickEndsOnThatTick) {
   TimePanelsPlot plot = one_series(30000, [](std::size_t) { return 0.0; });
   plot.time_s = [](std::size_t i) { return i * 1e-4; };  // 0 .. 2.9999 s
-  EXPECT_NE(time_panels_svg(plot).find(">3</text>"), std::string::npos);
+  EXPECT_NE(time_panels_svg(plot).find(">3.0</text>"), std::string::npos);
 }
 
 TEST(TimePanelsSvg, WritesAtomicallyAndNamesAnUnwritablePath) {

@@ -12,6 +12,7 @@
 #include "cad/part.hpp"
 #include "cad/region_offset.hpp"
 #include "cad/region_output.hpp"
+#include "cad/region_svg.hpp"
 #include "cad/segment_geometry.hpp"
 #include "cad/toolpath.hpp"
 #include "cli/number_option.hpp"

@@ -352,7 +352,7 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
         trace_file->write(tr);
       }
     }
-    if (!laps.svg_path.empty()) runs.emplace_back(label, std::move(trace));
+    if (!laps.svg_path.empty()) runs.push_back({label, std::move(trace), result});
   }
   if (trace_file) trace_file->close();
   if (!laps.svg_path.empty()) vehicle::write_lap_svg(laps.svg_path, track, runs);
