@@ -37,13 +37,21 @@ const std::set<std::string, std::less<>>& passive_commands() {
   return names;
 }
 
+/// The text for a message, bytes that are no printable ASCII as '?'.
+std::string printable(std::string_view text) {
+  std::string out(text);
+  for (char& c : out)
+    if (c < 0x20 || c > 0x7e) c = '?';
+  return out;
+}
+
 double parse_number(std::string_view token) {
   double value = 0;
   const char* first = token.data();
   if (!token.empty() && token.front() == '+') ++first;
   const auto [end, error] = std::from_chars(first, token.data() + token.size(), value);
   if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(value))
-    throw Error(fmt::format("bad number '{}'", token.substr(0, 32)));
+    throw Error(fmt::format("bad number '{}'", printable(token.substr(0, 32))));
   return value;
 }
 
@@ -89,7 +97,7 @@ void CanonInterpreter::execute(std::string_view text, std::size_t line_number, s
   while (close > i && is_space(text[close - 1])) --close;
   if (i == name_start || i >= close || text[i] != '(' || text[close - 1] != ')')
     throw Error(fmt::format("not a canonical command (rs274 -g prints one per line, as NAME(ARGUMENTS)): '{}'",
-                            text.substr(name_start, 40)));
+                            printable(text.substr(name_start, 40))));
   Command command;
   command.name = text.substr(name_start, i - name_start);
   command.arguments = text.substr(i + 1, close - i - 2);
@@ -164,13 +172,13 @@ void CanonInterpreter::execute(std::string_view text, std::size_t line_number, s
     if (plane == "CANON_PLANE_XY") plane_ = 17;
     else if (plane == "CANON_PLANE_XZ") plane_ = 18;
     else if (plane == "CANON_PLANE_YZ") plane_ = 19;
-    else throw Error(fmt::format("SELECT_PLANE({}): only the XY, XZ and YZ planes are supported", plane));
+    else throw Error(fmt::format("SELECT_PLANE({}): only the XY, XZ and YZ planes are supported", printable(plane.substr(0, 40))));
   } else if (name == "USE_LENGTH_UNITS") {
     const std::string_view units = command.arguments;
     if (units == "CANON_UNITS_MM") unit_ = 1;
     else if (units == "CANON_UNITS_INCHES") unit_ = kMmPerInch;
     else if (units == "CANON_UNITS_CM") unit_ = 10;
-    else throw Error(fmt::format("USE_LENGTH_UNITS({}): unknown units", units));
+    else throw Error(fmt::format("USE_LENGTH_UNITS({}): unknown units", printable(units.substr(0, 40))));
   } else if (name == "SET_G5X_OFFSET") {
     command.expect({7, 10});
     g5x_ = {command.number(1) * unit_, command.number(2) * unit_, command.number(3) * unit_};
