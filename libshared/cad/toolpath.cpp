@@ -49,9 +49,11 @@ bool write_as_line(const Segment& s, Point from, Point to, Point centre) {
   const ArcShape arc = arc_shape(s);
   const double sweep = std::abs(arc.sweep);
   if (arc.radius * (1 - std::cos(std::min(sweep, std::numbers::pi) / 2)) <= kHalfResolutionMm) return true;
-  if (sweep > std::numbers::pi) return false;  // near a whole turn, rounding only moves the end along it
+  // Rounding moves the ends by a micrometre at most: it can only make an arc
+  // of a few microradians look shorter (or reversed), never a larger one.
+  if (sweep >= std::numbers::pi / 2) return false;
   const double ux = from.x - centre.x, uy = from.y - centre.y, vx = to.x - centre.x, vy = to.y - centre.y;
-  const double printed_sweep = std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);  // counter-clockwise, in (−π, π]
+  const double printed_sweep = std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);  // counter-clockwise, near 0
   return (arc.sweep > 0 ? printed_sweep : -printed_sweep) < kShortestSweepRad;
 }
 
