@@ -226,9 +226,11 @@ g76_pulse_verdict() {
 }
 export -f g76_pulse_verdict
 
-@test "gcode-pulse: every threadcalc g76 program reads cleanly up to its G76 block, which it refuses" {
+@test "gcode-pulse: every third threadcalc g76 program reads cleanly up to its G76 block, which it refuses" {
   cd "$BATS_FILE_TMPDIR"
-  grep g76 threads.list > "$BATS_TEST_TMPDIR/g76.list"
+  # Their comments are the same at every size: a third of them (the test
+  # below runs them all through rs274 and gcode-pulse --canon).
+  grep g76 threads.list | awk 'NR % 3 == 1' > "$BATS_TEST_TMPDIR/g76.list"
   run judge g76_pulse_verdict "$BATS_TEST_TMPDIR/g76.list"
   assert_output ""
 }
