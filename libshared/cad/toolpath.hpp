@@ -18,11 +18,16 @@ struct ToolpathOptions {
   double cut_z = -1;         ///< mm
   double safe_z = 5;         ///< mm, for G0 moves
   bool climb = true;         ///< material on the right of the travel (clockwise spindle)
-  std::string title;         ///< written as a comment at the top
+  std::string title;         ///< written as a comment at the top (any text)
 };
 
 /// `loops` have the prohibited region on their left (RegionOffset::loops).
-/// Coordinates in mm, six decimals; arcs with incremental centres (I, J).
+/// Coordinates in mm, six decimals; arcs with incremental centres (I, J)
+/// from the position as printed. An arc whose sagitta is at most half a
+/// printed micrometre, or whose sweep from the printed numbers is under
+/// 1e-5 rad (LinuxCNC cuts a whole circle under 1e-6), is written as a G1 to
+/// its end; a piece that does not move at the printed resolution is left
+/// out. Comments go through motion::gcode_comment.
 std::string toolpath_gcode(const std::vector<Loop>& loops, const ToolpathOptions& options);
 
 }  // namespace tk::cad

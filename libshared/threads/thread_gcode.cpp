@@ -7,9 +7,15 @@
 #include <numbers>
 
 #include "io/error.hpp"
+#include "motion/gcode_comment.hpp"
 
 namespace tk::threads {
 namespace {
+
+using motion::gcode_comment;
+
+/// A comment on a line of its own.
+std::string comment_line(std::string_view text) { return gcode_comment(text) + "\n"; }
 
 /// A coordinate to 0.1 µm without trailing zeros, as controls read them.
 std::string number(double value) {
@@ -56,14 +62,14 @@ Geometry geometry(const TurningPlan& plan, const ProgramSettings& s) {
 
 std::string header(const TurningPlan& plan, const ProgramSettings& s, const char* style) {
   std::string out;
-  out += fmt::format("(threadcalc: {} {}, {} program)\n", s.title, plan.external ? "external" : "internal", style);
-  out += fmt::format("(ap {} mm from the peak diameter {}; pitch diameter aimed at {}; {} passes, {} infeed)\n",
+  out += comment_line(fmt::format("threadcalc: {} {}, {} program", s.title, plan.external ? "external" : "internal", style));
+  out += comment_line(fmt::format("ap {} mm from the peak diameter {}; pitch diameter aimed at {}; {} passes, {} infeed",
                      number(plan.ap), number(plan.peak_diameter), number(plan.target_pitch_diameter), plan.passes,
                      plan.infeed == Infeed::flank ? fmt::format("{}-degree flank", number(plan.infeed_angle_deg))
-                                                  : std::string("radial"));
-  out += fmt::format("({} before threading: {}; chamfer {} x 45 degrees)\n", plan.external ? "turn" : "bore",
-                     number(plan.blank_diameter), number(plan.chamfer));
-  out += "G18 G21 G90 G94 G7 (XZ plane, mm, absolute, X as a diameter)\n";
+                                                  : std::string("radial")));
+  out += comment_line(fmt::format("{} before threading: {}; chamfer {} x 45 degrees", plan.external ? "turn" : "bore",
+                     number(plan.blank_diameter), number(plan.chamfer)));
+  out += "G18 G21 G90 G94 G7 " + comment_line("XZ plane, mm, absolute, X as a diameter");
   out += fmt::format("S{} M3\n", number(std::round(s.rpm)));
   return out;
 }
@@ -103,12 +109,12 @@ std::string thread_program(ProgramStyle style, const TurningPlan& plan, const Pr
   const double tan_angle = std::tan(plan.infeed_angle_deg * std::numbers::pi / 180);
   std::string out = header(plan, s, style == ProgramStyle::g76 ? "G76" : "G33 passes");
   if (style == ProgramStyle::g76)
-    out += "(G76 cuts at ap*sqrt(i/n): the plan's count and final depth, not its light first pass)\n";
+    out += comment_line("G76 cuts at ap*sqrt[i/n]: the plan's count and final depth, not its light first pass");
   if (s.left_hand)
-    out += fmt::format("(left hand: starts {} mm beyond the thread's inner end, in a groove at least that wide)\n",
-                       number(g.safe_z + plan.ap * tan_angle));
-  out += fmt::format("(the Z axis takes {} mm to reach P*S and as much to stop: the thread's end needs that undercut)\n",
-                     number(synchronisation_distance(s)));
+    out += comment_line(fmt::format("left hand: starts {} mm beyond the thread's inner end, in a groove at least that wide",
+                                    number(g.safe_z + plan.ap * tan_angle)));
+  out += comment_line(fmt::format("the Z axis takes {} mm to reach P*S and as much to stop: the thread's end needs that undercut",
+                                  number(synchronisation_distance(s))));
   // To the safe Z first, then onto the drive line, then along it: never a
   // diagonal rapid through the face or into the bore.
   out += fmt::format("G0 Z{}\n", number(g.safe_z));
@@ -128,7 +134,7 @@ std::string thread_program(ProgramStyle style, const TurningPlan& plan, const Pr
       // the full-depth pass ends exactly at the thread's end, as G76's does.
       const double shift = g.direction * (depth - plan.ap) * tan_angle;
       out += fmt::format("G0 Z{}\n", number(g.z_start + shift));
-      out += fmt::format("G0 X{} ({})\n", number(pass_diameter(plan, depth)), note);
+      out += fmt::format("G0 X{} ", number(pass_diameter(plan, depth))) + comment_line(note);
       out += fmt::format("G33 Z{} K{}\n", number(g.z_end + shift), number(s.pitch_mm));
       out += fmt::format("G0 X{}\n", number(g.drive_x));
     };

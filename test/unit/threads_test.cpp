@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "io/error.hpp"
+#include "motion/gcode.hpp"
 #include "threads/designation.hpp"
 #include "threads/thread_gcode.hpp"
 #include "threads/thread_limits.hpp"
@@ -446,4 +447,19 @@ TEST(ThreadReport, MembersAndSeries) {
   EXPECT_EQ(pitch_series(30, 2.2), PitchSeries::non_standard);
   EXPECT_EQ(pitch_series(31, 2), PitchSeries::no_iso261_size);
   EXPECT_STREQ(series_name(PitchSeries::no_iso261_size), "no ISO 261 size");
+}
+
+// Every line of both programs lexes as G-code: no comment inside a comment
+// (LinuxCNC and gcode-pulse refused the G76 program's "ap*sqrt(i/n)"), and a
+// title with parentheses and a newline stays inside its comment.
+TEST(ThreadProgram, EveryLineLexesWithItsCommentsClosed) {
+  ProgramSettings s = m30_program();
+  for (const std::string title : {std::string("M30x2-6g"), std::string("M30 (spare)\n(MSG, x")}) {
+    s.title = title;
+    for (ProgramStyle style : {ProgramStyle::g76, ProgramStyle::passes})
+      for (const std::string& line : lines_of(thread_program(style, m30_plan(), s))) {
+        EXPECT_NO_THROW(tk::motion::lex_gcode_line(line)) << line;
+        EXPECT_TRUE(tk::motion::lex_gcode_line(line).message.empty()) << line;
+      }
+  }
 }
