@@ -12,17 +12,15 @@ bats_require_minimum_version 1.5.0
 
 NCFILES=/usr/share/linuxcnc/ncfiles
 
-# canon PROGRAM > canonical commands: rs274 run from the program's folder
-# (for its subroutine files), with the test tool table and the block delete
-# switch on (-b), as gcode-pulse reads '/' lines. Its exit status says
-# nothing (0 after most errors, 1 after some): the stream's end does. rs274
-# keeps its tool table in $HOME/.tool.mmap, which runs at the same time
-# overwrite: each test file has its own HOME.
+# canon PROGRAM > canonical commands: rs274 (test_helper's rs274_g) with the
+# test tool table and the block delete switch on (-b), as gcode-pulse reads
+# '/' lines; the stream's end, not rs274's exit status, tells an error.
 canon() {
-  (cd "$(dirname "$1")" && HOME="$BATS_FILE_TMPDIR" rs274 -b -t "$TOOLS_INCH" -g "$(basename "$1")" < /dev/null 2> /dev/null) || true
+  rs274_g "$1" -b -t "$TOOLS_INCH" 2> /dev/null || true
 }
 
 setup_file() {
+  load test_helper
   command -v rs274 > /dev/null || return 0
   TOOLS_INCH="$BATS_TEST_DIRNAME/../fixtures/gcode/linuxcnc/rs274_tools_inch.tbl"
   # LinuxCNC's examples through rs274 once, for the tests that use them.

@@ -53,3 +53,16 @@ def near(x, want, tol):
 exec(sys.argv[1])
 print("ok")' "$1"
 }
+
+# rs274_g PROGRAM [RS274 OPTIONS...] > canonical commands: LinuxCNC's rs274
+# -g, run from the program's folder (it reads subroutine files there) with a
+# HOME of this shell's own: rs274 truncates $HOME/.tool.mmap at each start,
+# and two at once with one HOME die of SIGBUS. Its exit status says little
+# (0 after most errors): the stream's PROGRAM_END() does.
+rs274_g() {
+  local program=$1 home="${BATS_FILE_TMPDIR:-${TMPDIR:-/tmp}}/rs274-home.$BASHPID"
+  shift
+  mkdir -p "$home"
+  (cd "$(dirname "$program")" && HOME="$home" rs274 "$@" -g "$(basename "$program")" < /dev/null)
+}
+export -f rs274_g

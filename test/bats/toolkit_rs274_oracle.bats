@@ -23,13 +23,9 @@ setup() {
   CORPUS="$TOOLKIT_ROOT/../shared/corpus"
 }
 
-# rs274_run FILE: rs274 -g FILE. rs274 keeps its tool table in
-# $HOME/.tool.mmap, truncated at each start: two at once with one HOME, and
-# one of them dies of SIGBUS. So each shell has a HOME of its own.
+# rs274_run FILE: rs274 -g FILE (test_helper's rs274_g: a HOME per shell).
 rs274_run() {
-  local home="$BATS_FILE_TMPDIR/home.$$"
-  [ -d "$home" ] || mkdir "$home"
-  HOME=$home rs274 -g "$1" < /dev/null
+  rs274_g "$1"
 }
 
 # rs274_verdict FILE: nothing when rs274 runs FILE cleanly, else one line
