@@ -159,7 +159,7 @@ assert_cnc_error() {
 @test "--version names the tool" {
   run --separate-stderr gcode-pulse --version
   assert_success
-  assert_output --regexp '^gcode-pulse \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+$'
+  assert_output --regexp '^gcode-pulse \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
   [ -z "$stderr" ]
 }
 

@@ -18,7 +18,7 @@ setup() {
 @test "--version names the tool" {
   run mrtest --version
   assert_success
-  assert_output --regexp '^mrtest \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+$'
+  assert_output --regexp '^mrtest \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
 }
 
 @test "an unknown option is a usage error with exit 2" {

@@ -95,7 +95,7 @@ oracle_gp() {
 @test "--version names the tool" {
   run riesel --version
   assert_success
-  assert_output --regexp '^riesel \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+$'
+  assert_output --regexp '^riesel \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
 }
 
 @test "unknown options and bad option values are usage errors with exit 2" {

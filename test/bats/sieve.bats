@@ -71,7 +71,7 @@ need_gp() {
 @test "--version names the tool" {
   run sieve --version
   assert_success
-  assert_output --regexp '^sieve \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+$'
+  assert_output --regexp '^sieve \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
 }
 
 @test "no subcommand, an unknown option or an unknown subcommand is a usage error with exit 2" {
