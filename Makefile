@@ -2,6 +2,7 @@
 # (scripts/setup-deps.sh TIER: nothing when they are there) and builds only
 # what it runs: `make demo` the ten tools, `make test` the tools and tests.
 include Makefile.inc
+MAKEFLAGS += --no-print-directory
 
 .PHONY: all deps test-deps bench-deps deb-deps configure tools build demo test test-fast \
         test-sanitize test-slow deb bench fuzz man install clean
@@ -23,7 +24,7 @@ deb-deps:
 # The first configure leaves the tests out (they need the test tier);
 # `make build` and `make test` turn them on.
 $(BUILD_DIR)/CMakeCache.txt:
-	$(CMAKE) -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCMAKE_INSTALL_PREFIX=$(PREFIX) \
+	$(TIME) $(CMAKE) -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DCMAKE_INSTALL_PREFIX=$(PREFIX) \
 	  -DTOOLKIT_TESTS=OFF $(CMAKE_FLAGS)
 
 # The ten tools and their gzipped man pages, nothing else.
