@@ -1,0 +1,150 @@
+/// @file weighted_squaring_setup.cpp
+/// @brief WeightedSquaring's choice of length and digits, its tables, and
+/// the conversions between GMP integers and its digits.
+#include <fftw3.h>
+
+#include <bit>
+#include <cmath>
+
+#include "primes/fft_plans.hpp"
+#include "primes/weighted_squaring.hpp"
+#include "primes/weighted_squaring_detail.hpp"
+
+namespace tk::primes {
+
+namespace {
+
+using namespace weighted_detail;
+
+constexpr unsigned kMaxKBits = 56;
+
+// The largest average digit size whose squares round safely at this
+// length. Measured here on random balanced digits (44-bit k, L from 64 to
+// 2^18): the worst rounding error grows 4x per digit bit and about 1.25x
+// per doubled length; this keeps it near 0.05 (0.02 at L = 18432, where
+// b = 20 gives 0.02 and 21 gives 0.09), far below the 0.4 that is checked.
+double max_average_bits(std::size_t length) { return 25.0 - 0.31 * std::log2(static_cast<double>(length)); }
+
+bool supported(const SpecialForm& form) {
+  return form.n >= 64 && (form.c == 1 || form.c == -1) && form.k % 2 == 1 && std::bit_width(form.k) <= kMaxKBits;
+}
+
+// Digits above 2^n: the folded value is below about 2^(n + kbits + 2),
+// and its square must fit below digit 2(m + t) - 1, at 2^(2n + e_(2t-1)).
+std::size_t top_digits(const SpecialForm& form, std::size_t low_digits) {
+  const double average = static_cast<double>(form.n) / static_cast<double>(low_digits);
+  const double kbits = std::bit_width(form.k);
+  return static_cast<std::size_t>(std::ceil((kbits + 3.0) / average + 0.5));
+}
+
+std::size_t low_digits_for(std::uint64_t n, double bits) {
+  return static_cast<std::size_t>(std::ceil(static_cast<double>(n) / bits));
+}
+
+mpz_class modulus_of(const SpecialForm& form) {
+  mpz_class N = form.k;
+  N <<= static_cast<mp_bitcnt_t>(form.n);
+  return N + form.c;
+}
+
+}  // namespace
+
+std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& form) {
+  if (!supported(form)) return nullptr;
+  for (std::size_t length : fast_fft_lengths()) {
+    const std::size_t low = low_digits_for(form.n, max_average_bits(length));
+    if (2 * (low + top_digits(form, low)) - 1 <= length)
+      return std::unique_ptr<WeightedSquaring>(new WeightedSquaring(form, length, low));
+  }
+  return nullptr;
+}
+
+std::unique_ptr<WeightedSquaring> WeightedSquaring::create_with(const SpecialForm& form, std::size_t length, int digit_bits) {
+  if (!supported(form) || digit_bits < 4 || digit_bits > 40 || length % 2 != 0) return nullptr;
+  const std::size_t low = low_digits_for(form.n, digit_bits);
+  if (2 * (low + top_digits(form, low)) - 1 > length) return nullptr;
+  return std::unique_ptr<WeightedSquaring>(new WeightedSquaring(form, length, low));
+}
+
+WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits)
+    : form_(form), length_(length), low_digits_(low_digits) {
+  digits_ = low_digits + top_digits(form, low_digits);
+  coefficients_ = 2 * digits_ - 1;
+  const std::uint64_t n = form.n, m = low_digits;
+  exponent_.resize(coefficients_ + 1);
+  for (std::size_t j = 0; j <= coefficients_; ++j) exponent_[j] = (n * j + m - 1) / m;  // ceil(n*j/m)
+  bits_.resize(coefficients_);
+  rotation_.resize(coefficients_);
+  output_weight_.resize(coefficients_);
+  input_weight_.resize(digits_);
+  for (std::size_t j = 0; j < coefficients_; ++j) {
+    bits_[j] = static_cast<std::uint8_t>(exponent_[j + 1] - exponent_[j]);
+    max_digit_bits_ = std::max<int>(max_digit_bits_, bits_[j]);
+    rotation_[j] = static_cast<std::uint8_t>(exponent_[j] % 61);
+    // e_j - n*j/m = (e_j*m - n*j)/m, exactly in integers, in [0, 1).
+    const auto excess = static_cast<long double>(exponent_[j] * m - n * j) / static_cast<long double>(m);
+    output_weight_[j] = static_cast<double>(std::exp2(-excess) / static_cast<long double>(length));
+    if (j < digits_) input_weight_[j] = static_cast<double>(std::exp2(excess));
+  }
+  low_.assign(low_digits_, 0);
+  high_limbs_ = (exponent_[coefficients_] - n) / 64 + 2;
+  high_.assign(high_limbs_ + 1, 0);
+  quotient_.assign(high_limbs_ + 3, 0);  // zeros past the end for reading two limbs at a time
+  input_ = fftw_alloc_real(length_);
+  output_ = fftw_alloc_real(length_);
+  spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
+  std::fill(input_, input_ + length_, 0.0);
+  plans_ = real_fft_plans(length_);
+}
+
+WeightedSquaring::~WeightedSquaring() {
+  fftw_free(input_);
+  fftw_free(output_);
+  fftw_free(spectrum_);
+}
+
+void WeightedSquaring::load(const mpz_class& x) {
+  mpz_class value;
+  mpz_mod(value.get_mpz_t(), x.get_mpz_t(), modulus_of(form_).get_mpz_t());
+  std::vector<mp_limb_t> limbs(form_.n / 64 + 4, 0);
+  mpz_export(limbs.data(), nullptr, -1, sizeof(mp_limb_t), 0, 0, value.get_mpz_t());
+  for (std::size_t j = 0; j < low_digits_; ++j)
+    low_[j] = static_cast<std::int64_t>(bits_at(limbs.data(), exponent_[j], bits_[j]));
+  std::fill(quotient_.begin(), quotient_.end(), 0);
+  const mpz_class top = value >> static_cast<mp_bitcnt_t>(form_.n);  // below k
+  fold_into_input(static_cast<std::int64_t>(top.get_ui()), 0);
+}
+
+// The digits are balanced (some negative): carried into non-negative
+// digits first, so the value packs into limbs; the last carry (negative
+// for a negative value) is added at the top.
+void WeightedSquaring::store(mpz_class& x) const {
+  std::vector<mp_limb_t> limbs(exponent_[digits_] / 64 + 3, 0);
+  std::int64_t carry = 0;
+  for (std::size_t j = 0; j < digits_; ++j) {
+    const std::int64_t digit = std::llround(input_[j] / input_weight_[j]) + carry;
+    const std::int64_t low = digit & ((std::int64_t{1} << bits_[j]) - 1);
+    carry = digit >> bits_[j];
+    const std::size_t at = exponent_[j] / 64;
+    const unsigned shift = exponent_[j] % 64;
+    limbs[at] |= static_cast<mp_limb_t>(low) << shift;
+    if (shift != 0) limbs[at + 1] |= static_cast<mp_limb_t>(low) >> (64 - shift);
+  }
+  mpz_import(x.get_mpz_t(), limbs.size(), -1, sizeof(mp_limb_t), 0, 0, limbs.data());
+  if (carry != 0) {
+    mpz_class top = carry;
+    top <<= static_cast<mp_bitcnt_t>(exponent_[digits_]);
+    x += top;
+  }
+  const mpz_class N = modulus_of(form_);
+  mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
+}
+
+void WeightedSquaring::square_by_gmp(unsigned long minus) {
+  mpz_class x;
+  store(x);
+  x = x * x - minus;
+  load(x);
+}
+
+}  // namespace tk::primes

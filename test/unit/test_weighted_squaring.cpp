@@ -1,0 +1,124 @@
+/// @file test_weighted_squaring.cpp
+/// @brief The weighted squaring against GMP (x^2 - m mod N computed
+/// directly): random values and chains of squarings, k from 1 to 56 bits
+/// (the 44-bit k of the twin records among them), both forms, n around
+/// limb and digit boundaries, the edge values; and the safety net: digits
+/// too wide to round correctly are caught and redone, never a wrong square.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include "primes/weighted_squaring.hpp"
+
+namespace {
+
+using namespace tk::primes;
+
+mpz_class value_of(const SpecialForm& form) {
+  mpz_class N = form.k;
+  N <<= static_cast<mp_bitcnt_t>(form.n);
+  return N + form.c;
+}
+
+std::string name_of(const SpecialForm& form) {
+  return std::to_string(form.k) + "*2^" + std::to_string(form.n) + (form.c > 0 ? "+1" : "-1");
+}
+
+void expect_chain_matches(WeightedSquaring& squarer, const SpecialForm& form, mpz_class x, unsigned long minus, int rounds) {
+  const mpz_class N = value_of(form);
+  squarer.load(x);
+  for (int round = 0; round < rounds; ++round) {
+    squarer.square_minus(minus);
+    x = x * x - minus;
+    mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
+    mpz_class got;
+    squarer.store(got);
+    ASSERT_EQ(got, x) << name_of(form) << " round " << round;
+  }
+}
+
+TEST(WeightedSquaring, MatchesGmpForManyKOfBothSigns) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(20261123);
+  const std::uint64_t ks[] = {1, 3, 5, 1023, 65537, 778965587811ull, 16869987339975ull, (1ull << 44) - 1,
+                              (1ull << 56) - 1, 72057594037927935ull - 2};
+  const std::uint64_t ns[] = {64, 65, 127, 128, 1000, 4503, 36627};
+  for (std::uint64_t k : ks)
+    for (std::uint64_t n : ns)
+      for (std::int64_t c : {-1, 1}) {
+        const SpecialForm form{k, n, c};
+        auto squarer = WeightedSquaring::create(form);
+        ASSERT_NE(squarer, nullptr) << name_of(form);
+        const mpz_class N = value_of(form);
+        expect_chain_matches(*squarer, form, random.get_z_range(N), c < 0 ? 2 : 0, 12);
+        EXPECT_EQ(squarer->fallbacks(), 0u) << name_of(form);
+        EXPECT_LT(squarer->worst_roundoff(), 0.25) << name_of(form);
+      }
+}
+
+TEST(WeightedSquaring, RandomKAndNAgainstGmp) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(99);
+  for (int trial = 0; trial < 60; ++trial) {
+    const unsigned kbits = 1 + static_cast<unsigned>(mpz_class(random.get_z_range(56)).get_ui());
+    const std::uint64_t k = mpz_class(random.get_z_bits(kbits) | 1).get_ui() | (1ull << (kbits - 1));
+    const std::uint64_t n = 64 + mpz_class(random.get_z_range(20000)).get_ui();
+    const SpecialForm form{k, n, trial % 2 ? 1 : -1};
+    auto squarer = WeightedSquaring::create(form);
+    ASSERT_NE(squarer, nullptr) << name_of(form);
+    expect_chain_matches(*squarer, form, random.get_z_range(value_of(form)), trial % 3, 5);
+    EXPECT_EQ(squarer->fallbacks(), 0u) << name_of(form);
+  }
+}
+
+TEST(WeightedSquaring, EdgeValuesIncludingANegativeSquareMinusTwo) {
+  for (std::int64_t c : {-1, 1}) {
+    const SpecialForm form{778965587811ull, 3000, c};
+    const mpz_class N = value_of(form);
+    auto squarer = WeightedSquaring::create(form);
+    ASSERT_NE(squarer, nullptr);
+    for (const mpz_class& x : {mpz_class(0), mpz_class(1), mpz_class(2), mpz_class(N - 1), mpz_class(N - 2), mpz_class(N / 2)})
+      for (unsigned long minus : {0ul, 2ul}) expect_chain_matches(*squarer, form, x, minus, 3);
+  }
+}
+
+TEST(WeightedSquaring, LargeTwinNumberRoundsSafely) {
+  const SpecialForm form{16869987339975ull, 171960, -1};
+  auto squarer = WeightedSquaring::create(form);
+  ASSERT_NE(squarer, nullptr);
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(7);
+  expect_chain_matches(*squarer, form, random.get_z_range(value_of(form)), 2, 4);
+  EXPECT_EQ(squarer->fallbacks(), 0u);
+  EXPECT_LT(squarer->worst_roundoff(), 0.25);
+}
+
+TEST(WeightedSquaring, DigitsTooWideAreCaughtAndRedoneByGmp) {
+  // 30-bit digits at length 4096: coefficients past a double's 53 bits.
+  const SpecialForm form{778965587811ull, 40000, -1};
+  auto squarer = WeightedSquaring::create_with(form, 4096, 30);
+  ASSERT_NE(squarer, nullptr);
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(11);
+  expect_chain_matches(*squarer, form, random.get_z_range(value_of(form)), 2, 10);
+  EXPECT_EQ(squarer->fallbacks(), 10u);
+}
+
+TEST(WeightedSquaring, BorderlineDigitsStillNeverGiveAWrongSquare) {
+  // Errors near 0.5: some squares caught, some kept; all must be GMP's.
+  const SpecialForm form{3, 90000, 1};
+  auto squarer = WeightedSquaring::create_with(form, 8192, 23);
+  ASSERT_NE(squarer, nullptr);
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(12);
+  expect_chain_matches(*squarer, form, random.get_z_range(value_of(form)), 0, 30);
+}
+
+TEST(WeightedSquaring, RefusesFormsItCannotReduce) {
+  EXPECT_EQ(WeightedSquaring::create(SpecialForm{3, 63, -1}), nullptr);
+  EXPECT_EQ(WeightedSquaring::create(SpecialForm{4, 1000, -1}), nullptr);
+  EXPECT_EQ(WeightedSquaring::create(SpecialForm{3, 1000, 5}), nullptr);
+  EXPECT_EQ(WeightedSquaring::create(SpecialForm{1ull << 57 | 1, 1000, -1}), nullptr);  // k past 56 bits
+  EXPECT_EQ(WeightedSquaring::create_with(SpecialForm{3, 10000, -1}, 512, 16), nullptr);
+}
+
+}  // namespace
