@@ -6,6 +6,7 @@
 #include "io/error.hpp"
 #include "primes/fft_squaring.hpp"
 #include "primes/modulus.hpp"
+#include "primes/weighted_squaring.hpp"
 
 namespace tk::primes {
 
@@ -49,7 +50,8 @@ bool square_rounds_gmp(const Modulus& N, ProofState& state, std::uint64_t last, 
   return true;
 }
 
-bool square_rounds_fft(FftSquaring& fft, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
+template <class Squarer>
+bool square_rounds_fft(Squarer& fft, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
   fft.load(state.value);
   for (; state.iteration < last; ++state.iteration) {
     if (reports_now(state, options)) {
@@ -71,15 +73,19 @@ bool square_rounds_fft(FftSquaring& fft, ProofState& state, std::uint64_t last, 
 bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options,
                    ProofResult& result) {
   N.reduce(state.value.get_mpz_t());
-  std::unique_ptr<FftSquaring> fft;
-  if (options.arithmetic == Arithmetic::fft || (options.arithmetic == Arithmetic::automatic && N.bits() >= kFftMinBits)) {
-    fft = FftSquaring::create(*N.form());  // nothing for n < 64: GMP squares those
-  }
-  if (!fft) return square_rounds_gmp(N, state, last, minus, options);
-  const bool finished = square_rounds_fft(*fft, state, last, minus, options);
-  result.fft_length = fft->transform_length();
-  result.fft_fallbacks = fft->fallbacks();
-  return finished;
+  if (options.arithmetic == Arithmetic::gmp || (options.arithmetic == Arithmetic::automatic && N.bits() < kFftMinBits))
+    return square_rounds_gmp(N, state, last, minus, options);
+  // The weighted transform where k fits it (k < 2^56), else the padded FFT
+  // with GMP's reduction; neither for n < 64: GMP squares those.
+  auto run = [&](auto& squarer) {
+    const bool finished = square_rounds_fft(squarer, state, last, minus, options);
+    result.fft_length = squarer.transform_length();
+    result.fft_fallbacks = squarer.fallbacks();
+    return finished;
+  };
+  if (auto weighted = WeightedSquaring::create(*N.form())) return run(*weighted);
+  if (auto fft = FftSquaring::create(*N.form())) return run(*fft);
+  return square_rounds_gmp(N, state, last, minus, options);
 }
 
 std::uint64_t low_64_bits(const mpz_class& value) {

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "primes/fft_plans.hpp"
+#include "primes/weighted_rounding.hpp"
 #include "primes/weighted_squaring_detail.hpp"
 
 namespace tk::primes {
@@ -70,47 +71,53 @@ bool WeightedSquaring::square_and_carry() {
   fftw_execute_dft_c2r(plans_->inverse, spectrum, output_);
   clock.lap(times_.inverse);
 
-  // Unweight and round each coefficient, sum it times 2^(e_j) mod p, and
-  // carry: a coefficient is below 2^51 and the carry below 2^(52-s), so
+  const RoundedCoefficients rounded =
+      round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);
+  // Carry: a coefficient is below 2^51 and the carry below 2^(52-s), so
   // their sum fits 64 bits and its low s_j bits are the digit (>= 0).
-  double worst = 0;
-  std::uint64_t sum = 0;
+  // Everything in locals: stores through low_ could otherwise alias the
+  // members, and the compiler would reload them every coefficient.
+  const std::int64_t* __restrict z = coefficient_.data();
+  const std::uint8_t* __restrict bits = bits_.data();
+  std::int64_t* __restrict low = low_.data();
+  std::uint64_t* __restrict high = high_.data();
+  const std::size_t low_digits = low_digits_, coefficients = coefficients_;
   std::int64_t carry = 0;
-  bool out_of_range = false;  // only with digits too wide (create_with): never convert those
-  auto coefficient = [&](std::size_t j) {
-    const double value = output_[j] * output_weight_[j];
-    const double rounded = round_to_integer(value);
-    worst = std::max(worst, std::fabs(value - rounded));
-    const bool representable = std::fabs(value) < 0x1p51;  // false for NaN too
-    out_of_range |= !representable;
-    const std::int64_t z = representable ? static_cast<std::int64_t>(rounded) : 0;
-    sum = fold61(sum + times_power61(residue61(z), rotation_[j]));
-    const std::int64_t total = z + carry;
-    carry = total >> bits_[j];  // arithmetic shift: floor division by 2^s
-    return static_cast<std::uint64_t>(total) & ((std::uint64_t{1} << bits_[j]) - 1);
-  };
-  for (std::size_t j = 0; j < low_digits_; ++j) low_[j] = static_cast<std::int64_t>(coefficient(j));
-  // From 2^n up, the digits go straight into limbs for the division.
-  u128 pending = 0;
+  std::size_t j = 0;
+  for (; j < low_digits; ++j) {
+    const std::int64_t total = z[j] + carry;
+    carry = total >> bits[j];  // arithmetic shift: floor division by 2^s
+    low[j] = total & ((std::int64_t{1} << bits[j]) - 1);
+  }
+  // From 2^n up, the digits go straight into limbs for the division:
+  // `pending` holds the `filled` (< 64) bits not yet in a full limb. No
+  // branch (a limb fills at an irregular digit) and no 128-bit shifts.
+  std::uint64_t pending = 0;
   unsigned filled = 0;
   std::size_t limb = 0;
-  for (std::size_t j = low_digits_; j < coefficients_; ++j) {
-    pending |= static_cast<u128>(coefficient(j)) << filled;
-    filled += bits_[j];
-    high_[limb] = static_cast<std::uint64_t>(pending);
-    const bool full = filled >= 64;
+  for (; j < coefficients; ++j) {
+    const unsigned s = bits[j];
+    const std::int64_t total = z[j] + carry;
+    carry = total >> s;
+    const std::uint64_t digit = static_cast<std::uint64_t>(total) & ((std::uint64_t{1} << s) - 1);
+    const std::uint64_t joined = pending | (digit << filled);
+    high[limb] = joined;
+    const bool full = filled + s >= 64;
+    pending = full ? (digit >> 1) >> (63 - filled) : joined;
     limb += full;
-    pending = full ? pending >> 64 : pending;
-    filled -= full ? 64 : 0;
+    filled = filled + s - (full ? 64 : 0);
   }
-  high_[limb] = static_cast<std::uint64_t>(pending);
+  high[limb] = pending;
   std::fill(high_.begin() + static_cast<std::ptrdiff_t>(limb) + 1, high_.end(), 0);
+  const double worst = rounded.worst;
+  const bool out_of_range = rounded.out_of_range;
+  square_mod_p_ = rounded.sum;
   clock.lap(times_.carry);
   worst_roundoff_ = std::max(worst_roundoff_, worst);
   // The square fits below the last coefficient, so nothing carries out of
   // the top; and the coefficients must give x^2 mod p.
   return !out_of_range && worst <= kMaxRoundoff && carry == 0 &&
-         reduce61(sum) == multiply61(value_mod_p_, value_mod_p_);
+         square_mod_p_ == multiply61(value_mod_p_, value_mod_p_);
 }
 
 // N = k*2^n + c, so k*2^n = -c (mod N). The square P = H*2^n + L with
@@ -137,31 +144,39 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
   const std::uint64_t a = q_high / k, b = q_high % k;
   const std::int64_t top = form_.c < 0 ? static_cast<std::int64_t>(r + b) : static_cast<std::int64_t>(r) - static_cast<std::int64_t>(b);
   fold_into_input(top, static_cast<std::int64_t>(a) - static_cast<std::int64_t>(minus));
+  // The folded value is P - (q - c*a)*N - minus: its residue mod p, for the
+  // next square's check, follows from the square's (checked) and q's. A
+  // fold that went wrong then fails that check and is redone by GMP.
+  const std::uint64_t q_mod_p = mpn_mod_1(quotient_.data(), static_cast<mp_size_t>(high_limbs_), kP61);
+  const std::uint64_t multiple = form_.c < 0 ? reduce61(q_mod_p + a) : reduce61(q_mod_p + kP61 - a % kP61);
+  value_mod_p_ = reduce61(square_mod_p_ + 2 * kP61 - multiply61(multiple, modulus_mod_p_) - minus);
   clock.lap(times_.fold);
 }
 
 void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
-  // c = -1 adds the quotient, c = +1 subtracts it.
+  // c = -1 adds the quotient, c = +1 subtracts it. Locals, as above.
   const std::int64_t sign = -form_.c;
+  const std::uint8_t* __restrict bits = bits_.data();
+  const std::uint64_t* __restrict exponent = exponent_.data();
+  const double* __restrict weight = input_weight_.data();
+  const std::int64_t* __restrict low = low_.data();
+  const mp_limb_t* __restrict q = quotient_.data();
+  double* __restrict input = input_;
+  const std::size_t low_digits = low_digits_, digits = digits_;
   std::int64_t carry = bottom;
-  std::uint64_t sum = 0;
   auto put = [&](std::size_t j, std::int64_t total) {
-    const unsigned s = bits_[j];
+    const unsigned s = bits[j];
     const std::int64_t up = (total + (std::int64_t{1} << (s - 1))) >> s;  // balanced: digit in [-2^(s-1), 2^(s-1))
     const std::int64_t digit = total - (up << s);
     carry = up;
-    input_[j] = static_cast<double>(digit) * input_weight_[j];
-    sum = fold61(sum + times_power61(residue61(digit), rotation_[j]));
+    input[j] = static_cast<double>(digit) * weight[j];
   };
-  const mp_limb_t* q = quotient_.data();
-  for (std::size_t j = 0; j < low_digits_; ++j)
-    put(j, low_[j] + sign * static_cast<std::int64_t>(bits_at(q, exponent_[j], bits_[j])) + carry);
+  for (std::size_t j = 0; j < low_digits; ++j)
+    put(j, low[j] + sign * static_cast<std::int64_t>(bits_at(q, exponent[j], bits[j])) + carry);
   carry += top;
-  for (std::size_t j = low_digits_; j + 1 < digits_; ++j) put(j, carry);
-  const std::size_t last = digits_ - 1;  // takes what is left, unbalanced
-  input_[last] = static_cast<double>(carry) * input_weight_[last];
-  sum = fold61(sum + times_power61(residue61(carry), rotation_[last]));
-  value_mod_p_ = reduce61(sum);
+  for (std::size_t j = low_digits; j + 1 < digits; ++j) put(j, carry);
+  const std::size_t last = digits - 1;  // takes what is left, unbalanced
+  input[last] = static_cast<double>(carry) * weight[last];
 }
 
 }  // namespace tk::primes

@@ -95,7 +95,10 @@ class WeightedSquaring {
   double* output_ = nullptr;  ///< FFTW-aligned, length_
   void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex
   const RealFftPlans* plans_ = nullptr;
-  std::uint64_t value_mod_p_ = 0;  ///< the input's value mod 2^61-1
+  std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded
+  std::uint64_t value_mod_p_ = 0;    ///< the input's value mod 2^61-1
+  std::uint64_t square_mod_p_ = 0;   ///< its square's, from the coefficients
+  std::uint64_t modulus_mod_p_ = 0;  ///< N's
   double worst_roundoff_ = 0;
   std::uint64_t fallbacks_ = 0;
   bool timing_ = false;

@@ -87,6 +87,8 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
     if (j < digits_) input_weight_[j] = static_cast<double>(std::exp2(excess));
   }
   low_.assign(low_digits_, 0);
+  coefficient_.assign(coefficients_, 0);
+  modulus_mod_p_ = mpz_fdiv_ui(modulus_of(form).get_mpz_t(), kP61);
   high_limbs_ = (exponent_[coefficients_] - n) / 64 + 2;
   high_.assign(high_limbs_ + 1, 0);
   quotient_.assign(high_limbs_ + 3, 0);  // zeros past the end for reading two limbs at a time
@@ -113,6 +115,7 @@ void WeightedSquaring::load(const mpz_class& x) {
   std::fill(quotient_.begin(), quotient_.end(), 0);
   const mpz_class top = value >> static_cast<mp_bitcnt_t>(form_.n);  // below k
   fold_into_input(static_cast<std::int64_t>(top.get_ui()), 0);
+  value_mod_p_ = mpz_fdiv_ui(value.get_mpz_t(), kP61);
 }
 
 // The digits are balanced (some negative): carried into non-negative
