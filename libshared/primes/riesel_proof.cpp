@@ -5,6 +5,7 @@
 
 #include "io/error.hpp"
 #include "primes/fft_squaring.hpp"
+#include "primes/gerbicz_check.hpp"
 #include "primes/modulus.hpp"
 #include "primes/weighted_squaring.hpp"
 
@@ -51,12 +52,13 @@ bool square_rounds_gmp(const Modulus& N, ProofState& state, std::uint64_t last, 
 }
 
 template <class Squarer>
-bool square_rounds_fft(Squarer& fft, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
-  fft.load(state.value);
-  for (; state.iteration < last; ++state.iteration) {
-    if (reports_now(state, options)) {
+bool square_rounds_fft(Squarer& fft, std::uint64_t& iteration, std::uint64_t last, long minus, const ProofOptions& options,
+                       bool report) {
+  for (; iteration < last; ++iteration) {
+    if (report && iteration % options.report_every == 0 && iteration) {
       const bool cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
       if (options.progress) {
+        ProofState state{iteration, {}};
         fft.store(state.value);
         if (!options.progress(state)) return false;
       }
@@ -64,8 +66,35 @@ bool square_rounds_fft(Squarer& fft, ProofState& state, std::uint64_t last, long
     }
     fft.square_minus(static_cast<unsigned long>(minus));
   }
-  fft.store(state.value);
   return true;
+}
+
+/// Proth's squarings (minus 0) go through Gerbicz's check; LLR's (x^2 - 2)
+/// have no such identity and rely on the squarer's own checks.
+template <class Squarer>
+bool square_rounds_fft(Squarer& fft, const Modulus& N, ProofState& state, std::uint64_t last, long minus,
+                       const ProofOptions& options, ProofResult& result) {
+  if (options.report_every == 0) {
+    ProofOptions quiet = options;
+    quiet.report_every = std::uint64_t{1} << 62;
+    return square_rounds_fft(fft, N, state, last, minus, quiet, result);
+  }
+  if (minus != 0) {
+    fft.load(state.value);
+    const bool finished = square_rounds_fft(fft, state.iteration, last, minus, options, true);
+    fft.store(state.value);
+    return finished;
+  }
+  CheckedSquarer squarer;
+  squarer.square_to = [&](std::uint64_t& iteration, std::uint64_t to, bool report) {
+    return square_rounds_fft(fft, iteration, to, 0, options, report);
+  };
+  squarer.load = [&](const mpz_class& x) { fft.load(x); };
+  squarer.store = [&](mpz_class& x) { fft.store(x); };
+  const GerbiczOutcome outcome = gerbicz_squarings(squarer, N, state.value, state.iteration, last,
+                                                   gerbicz_plan(last - state.iteration), options.corrupt_for_tests);
+  result.gerbicz_restarts = outcome.restarts;
+  return outcome.finished;
 }
 
 /// Runs the rounds in the arithmetic the options ask for; the value enters
@@ -78,7 +107,7 @@ bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long
   // The weighted transform where k fits it (k < 2^56), else the padded FFT
   // with GMP's reduction; neither for n < 64: GMP squares those.
   auto run = [&](auto& squarer) {
-    const bool finished = square_rounds_fft(squarer, state, last, minus, options);
+    const bool finished = square_rounds_fft(squarer, N, state, last, minus, options, result);
     result.fft_length = squarer.transform_length();
     result.fft_fallbacks = squarer.fallbacks();
     return finished;

@@ -73,42 +73,48 @@ bool WeightedSquaring::square_and_carry() {
 
   const RoundedCoefficients rounded =
       round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);
-  // Carry: a coefficient is below 2^51 and the carry below 2^(52-s), so
-  // their sum fits 64 bits and its low s_j bits are the digit (>= 0).
-  // Everything in locals: stores through low_ could otherwise alias the
-  // members, and the compiler would reload them every coefficient.
+  // Carry. Below 2^n the digits need not be normal: the fold's balanced
+  // carrying takes the coefficients as they are. Only their carry into
+  // 2^n (c_m = floor(L / 2^n)) is needed, for H + c_m: a two-instruction
+  // chain, run alongside the carries from 2^n up, which turn those
+  // coefficients into normal digits and pack them into limbs for the
+  // division (`pending` holds the `filled` < 64 bits not yet in a limb).
+  // A coefficient is below 2^51 and the carry below 2^(52-s), so their
+  // sum fits 64 bits. Everything in locals: stores through high_ could
+  // otherwise alias the members, and the compiler would reload them.
   const std::int64_t* __restrict z = coefficient_.data();
   const std::uint8_t* __restrict bits = bits_.data();
-  std::int64_t* __restrict low = low_.data();
   std::uint64_t* __restrict high = high_.data();
   const std::size_t low_digits = low_digits_, coefficients = coefficients_;
-  std::int64_t carry = 0;
-  std::size_t j = 0;
-  for (; j < low_digits; ++j) {
-    const std::int64_t total = z[j] + carry;
-    carry = total >> bits[j];  // arithmetic shift: floor division by 2^s
-    low[j] = total & ((std::int64_t{1} << bits[j]) - 1);
-  }
-  // From 2^n up, the digits go straight into limbs for the division:
-  // `pending` holds the `filled` (< 64) bits not yet in a full limb. No
-  // branch (a limb fills at an irregular digit) and no 128-bit shifts.
+  std::int64_t low_carry = 0, carry = 0;
   std::uint64_t pending = 0;
   unsigned filled = 0;
   std::size_t limb = 0;
-  for (; j < coefficients; ++j) {
+  auto high_digit = [&](std::size_t j) {
     const unsigned s = bits[j];
     const std::int64_t total = z[j] + carry;
-    carry = total >> s;
+    carry = total >> s;  // arithmetic shift: floor division by 2^s
     const std::uint64_t digit = static_cast<std::uint64_t>(total) & ((std::uint64_t{1} << s) - 1);
     const std::uint64_t joined = pending | (digit << filled);
     high[limb] = joined;
-    const bool full = filled + s >= 64;
+    const bool full = filled + s >= 64;  // no branch: a limb fills at an irregular digit
     pending = full ? (digit >> 1) >> (63 - filled) : joined;
     limb += full;
     filled = filled + s - (full ? 64 : 0);
+  };
+  for (std::size_t j = 0; j < low_digits; ++j) {  // the high part has more coefficients than the low
+    low_carry = (z[j] + low_carry) >> bits[j];
+    high_digit(low_digits + j);
   }
+  for (std::size_t j = 2 * low_digits; j < coefficients; ++j) high_digit(j);
   high[limb] = pending;
   std::fill(high_.begin() + static_cast<std::ptrdiff_t>(limb) + 1, high_.end(), 0);
+  // H = packed + c_m. Only a tiny square (x below 2^(n/2)) can have
+  // packed < -c_m, leaving a carry of -1 at the top: GMP squares those.
+  low_carry_ = low_carry;
+  const auto limbs = static_cast<mp_size_t>(high_limbs_);
+  const mp_limb_t overflow = low_carry >= 0 ? mpn_add_1(high, high, limbs, static_cast<mp_limb_t>(low_carry))
+                                            : mpn_sub_1(high, high, limbs, static_cast<mp_limb_t>(-low_carry));
   const double worst = rounded.worst;
   const bool out_of_range = rounded.out_of_range;
   square_mod_p_ = rounded.sum;
@@ -116,7 +122,7 @@ bool WeightedSquaring::square_and_carry() {
   worst_roundoff_ = std::max(worst_roundoff_, worst);
   // The square fits below the last coefficient, so nothing carries out of
   // the top; and the coefficients must give x^2 mod p.
-  return !out_of_range && worst <= kMaxRoundoff && carry == 0 &&
+  return !out_of_range && worst <= kMaxRoundoff && carry == 0 && overflow == 0 && high_[high_limbs_ - 1] == 0 &&
          square_mod_p_ == multiply61(value_mod_p_, value_mod_p_);
 }
 
@@ -143,7 +149,7 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
   }
   const std::uint64_t a = q_high / k, b = q_high % k;
   const std::int64_t top = form_.c < 0 ? static_cast<std::int64_t>(r + b) : static_cast<std::int64_t>(r) - static_cast<std::int64_t>(b);
-  fold_into_input(top, static_cast<std::int64_t>(a) - static_cast<std::int64_t>(minus));
+  fold_into_input(top - low_carry_, static_cast<std::int64_t>(a) - static_cast<std::int64_t>(minus));
   // The folded value is P - (q - c*a)*N - minus: its residue mod p, for the
   // next square's check, follows from the square's (checked) and q's. A
   // fold that went wrong then fails that check and is redone by GMP.
@@ -159,7 +165,7 @@ void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
   const std::uint8_t* __restrict bits = bits_.data();
   const std::uint64_t* __restrict exponent = exponent_.data();
   const double* __restrict weight = input_weight_.data();
-  const std::int64_t* __restrict low = low_.data();
+  const std::int64_t* __restrict low = coefficient_.data();
   const mp_limb_t* __restrict q = quotient_.data();
   double* __restrict input = input_;
   const std::size_t low_digits = low_digits_, digits = digits_;

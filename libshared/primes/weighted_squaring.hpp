@@ -71,7 +71,7 @@ class WeightedSquaring {
 
   bool square_and_carry();  ///< transforms; the square's digits into low_/high_; false when a check fails
   void divide_and_fold(unsigned long minus);
-  /// Balanced, weighted digits of low_ -/+ the quotient's low n bits, with
+  /// Balanced, weighted digits of the low coefficients -/+ the quotient's low n bits, with
   /// `top` times 2^n and `bottom` added, into input_ (and x mod 2^61-1).
   void fold_into_input(std::int64_t top, std::int64_t bottom);
   void square_by_gmp(unsigned long minus);
@@ -87,7 +87,6 @@ class WeightedSquaring {
   std::vector<std::uint8_t> rotation_;   ///< e_j mod 61: 2^(e_j) mod 2^61-1 is a rotation
   std::vector<double> input_weight_;     ///< 2^(e_j - nj/m)
   std::vector<double> output_weight_;    ///< its inverse over L
-  std::vector<std::int64_t> low_;        ///< the square's digits below 2^n
   std::vector<mp_limb_t> high_;          ///< the square's bits from 2^n up
   std::vector<mp_limb_t> quotient_;      ///< high_ / k, zero-padded
   std::size_t high_limbs_ = 0;
@@ -95,7 +94,8 @@ class WeightedSquaring {
   double* output_ = nullptr;  ///< FFTW-aligned, length_
   void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex
   const RealFftPlans* plans_ = nullptr;
-  std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded
+  std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded (below 2^n: the fold's input)
+  std::int64_t low_carry_ = 0;       ///< floor(L / 2^n) of those below 2^n, moved into H
   std::uint64_t value_mod_p_ = 0;    ///< the input's value mod 2^61-1
   std::uint64_t square_mod_p_ = 0;   ///< its square's, from the coefficients
   std::uint64_t modulus_mod_p_ = 0;  ///< N's

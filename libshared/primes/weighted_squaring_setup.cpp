@@ -86,7 +86,6 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
     output_weight_[j] = static_cast<double>(std::exp2(-excess) / static_cast<long double>(length));
     if (j < digits_) input_weight_[j] = static_cast<double>(std::exp2(excess));
   }
-  low_.assign(low_digits_, 0);
   coefficient_.assign(coefficients_, 0);
   modulus_mod_p_ = mpz_fdiv_ui(modulus_of(form).get_mpz_t(), kP61);
   high_limbs_ = (exponent_[coefficients_] - n) / 64 + 2;
@@ -111,7 +110,7 @@ void WeightedSquaring::load(const mpz_class& x) {
   std::vector<mp_limb_t> limbs(form_.n / 64 + 4, 0);
   mpz_export(limbs.data(), nullptr, -1, sizeof(mp_limb_t), 0, 0, value.get_mpz_t());
   for (std::size_t j = 0; j < low_digits_; ++j)
-    low_[j] = static_cast<std::int64_t>(bits_at(limbs.data(), exponent_[j], bits_[j]));
+    coefficient_[j] = static_cast<std::int64_t>(bits_at(limbs.data(), exponent_[j], bits_[j]));
   std::fill(quotient_.begin(), quotient_.end(), 0);
   const mpz_class top = value >> static_cast<mp_bitcnt_t>(form_.n);  // below k
   fold_into_input(static_cast<std::int64_t>(top.get_ui()), 0);
