@@ -163,7 +163,6 @@ void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
   // c = -1 adds the quotient, c = +1 subtracts it. Locals, as above.
   const std::int64_t sign = -form_.c;
   const std::uint8_t* __restrict bits = bits_.data();
-  const std::uint64_t* __restrict exponent = exponent_.data();
   const double* __restrict weight = input_weight_.data();
   const std::int64_t* __restrict low = coefficient_.data();
   const mp_limb_t* __restrict q = quotient_.data();
@@ -177,8 +176,11 @@ void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
     carry = up;
     input[j] = static_cast<double>(digit) * weight[j];
   };
-  for (std::size_t j = 0; j < low_digits; ++j)
-    put(j, low[j] + sign * static_cast<std::int64_t>(bits_at(q, exponent[j], bits[j])) + carry);
+  std::uint64_t position = 0;  // e_j, kept by adding (one memory stream fewer than reading exponent_)
+  for (std::size_t j = 0; j < low_digits; ++j) {
+    put(j, low[j] + sign * static_cast<std::int64_t>(bits_at(q, position, bits[j])) + carry);
+    position += bits[j];
+  }
   carry += top;
   for (std::size_t j = low_digits; j + 1 < digits; ++j) put(j, carry);
   const std::size_t last = digits - 1;  // takes what is left, unbalanced

@@ -7,6 +7,7 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include "primes/riesel_proof.hpp"
 #include "primes/weighted_squaring.hpp"
 
 namespace {
@@ -119,6 +120,30 @@ TEST(WeightedSquaring, RefusesFormsItCannotReduce) {
   EXPECT_EQ(WeightedSquaring::create(SpecialForm{3, 1000, 5}), nullptr);
   EXPECT_EQ(WeightedSquaring::create(SpecialForm{1ull << 57 | 1, 1000, -1}), nullptr);  // k past 56 bits
   EXPECT_EQ(WeightedSquaring::create_with(SpecialForm{3, 10000, -1}, 512, 16), nullptr);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(WeightedSquaring, ProofsOnTheFftGiveGmpsVerdictsAndResidues) {
+  // k small, 44-bit (the twin records' size), and past 56 bits (the padded
+  // FFT's case); LLR and Proth, composites and whatever primes fall in.
+  using namespace tk::primes;
+  ProofOptions gmp, fft;
+  gmp.arithmetic = Arithmetic::gmp;
+  fft.arithmetic = Arithmetic::fft;
+  for (std::uint64_t k : {3ull, 16869987339975ull, (1ull << 44) - 1, (1ull << 60) + 1})
+    for (std::uint64_t n : {2000ull, 3001ull}) {
+      const auto llr_gmp = llr_prove(k, n, LlrStart::llr, gmp), llr_fft = llr_prove(k, n, LlrStart::llr, fft);
+      EXPECT_EQ(llr_gmp.verdict, llr_fft.verdict) << k << " " << n;
+      EXPECT_EQ(llr_gmp.res64, llr_fft.res64) << k << " " << n;
+      EXPECT_GT(llr_fft.fft_length, 0u);
+      const auto proth_gmp = proth_prove(k, n, gmp), proth_fft = proth_prove(k, n, fft);
+      EXPECT_EQ(proth_gmp.verdict, proth_fft.verdict) << k << " " << n;
+      EXPECT_EQ(proth_gmp.res64, proth_fft.res64) << k << " " << n;
+      EXPECT_EQ(proth_fft.gerbicz_restarts, 0u);
+    }
 }
 
 }  // namespace
