@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "primes/fft_plans.hpp"
+#include "primes/weighted_passes.hpp"
 #include "primes/weighted_rounding.hpp"
 #include "primes/weighted_squaring_detail.hpp"
 
@@ -77,38 +78,12 @@ bool WeightedSquaring::square_and_carry() {
   // carrying takes the coefficients as they are. Only their carry into
   // 2^n (c_m = floor(L / 2^n)) is needed, for H + c_m: a two-instruction
   // chain, run alongside the carries from 2^n up, which turn those
-  // coefficients into normal digits and pack them into limbs for the
-  // division (`pending` holds the `filled` < 64 bits not yet in a limb).
-  // A coefficient is below 2^51 and the carry below 2^(52-s), so their
-  // sum fits 64 bits. Everything in locals: stores through high_ could
-  // otherwise alias the members, and the compiler would reload them.
-  const std::int64_t* __restrict z = coefficient_.data();
-  const std::uint8_t* __restrict bits = bits_.data();
-  std::uint64_t* __restrict high = high_.data();
-  const std::size_t low_digits = low_digits_, coefficients = coefficients_;
-  std::int64_t low_carry = 0, carry = 0;
-  std::uint64_t pending = 0;
-  unsigned filled = 0;
-  std::size_t limb = 0;
-  auto high_digit = [&](std::size_t j) {
-    const unsigned s = bits[j];
-    const std::int64_t total = z[j] + carry;
-    carry = total >> s;  // arithmetic shift: floor division by 2^s
-    const std::uint64_t digit = static_cast<std::uint64_t>(total) & ((std::uint64_t{1} << s) - 1);
-    const std::uint64_t joined = pending | (digit << filled);
-    high[limb] = joined;
-    const bool full = filled + s >= 64;  // no branch: a limb fills at an irregular digit
-    pending = full ? (digit >> 1) >> (63 - filled) : joined;
-    limb += full;
-    filled = filled + s - (full ? 64 : 0);
-  };
-  for (std::size_t j = 0; j < low_digits; ++j) {  // the high part has more coefficients than the low
-    low_carry = (z[j] + low_carry) >> bits[j];
-    high_digit(low_digits + j);
-  }
-  for (std::size_t j = 2 * low_digits; j < coefficients; ++j) high_digit(j);
-  high[limb] = pending;
-  std::fill(high_.begin() + static_cast<std::ptrdiff_t>(limb) + 1, high_.end(), 0);
+  // coefficients into normal digits packed into limbs for the division.
+  const HighCarry carried =
+      carry_into_limbs(coefficient_.data(), bits_.data(), low_digits_, coefficients_, high_.data());
+  std::fill(high_.begin() + static_cast<std::ptrdiff_t>(carried.last_limb) + 1, high_.end(), 0);
+  const std::int64_t low_carry = carried.low_carry, carry = carried.top_carry;
+  std::uint64_t* high = high_.data();
   // H = packed + c_m. Only a tiny square (x below 2^(n/2)) can have
   // packed < -c_m, leaving a carry of -1 at the top: GMP squares those.
   low_carry_ = low_carry;
@@ -160,31 +135,9 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
 }
 
 void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
-  // c = -1 adds the quotient, c = +1 subtracts it. Locals, as above.
-  const std::int64_t sign = -form_.c;
-  const std::uint8_t* __restrict bits = bits_.data();
-  const double* __restrict weight = input_weight_.data();
-  const std::int64_t* __restrict low = coefficient_.data();
-  const mp_limb_t* __restrict q = quotient_.data();
-  double* __restrict input = input_;
-  const std::size_t low_digits = low_digits_, digits = digits_;
-  std::int64_t carry = bottom;
-  auto put = [&](std::size_t j, std::int64_t total) {
-    const unsigned s = bits[j];
-    const std::int64_t up = (total + (std::int64_t{1} << (s - 1))) >> s;  // balanced: digit in [-2^(s-1), 2^(s-1))
-    const std::int64_t digit = total - (up << s);
-    carry = up;
-    input[j] = static_cast<double>(digit) * weight[j];
-  };
-  std::uint64_t position = 0;  // e_j, kept by adding (one memory stream fewer than reading exponent_)
-  for (std::size_t j = 0; j < low_digits; ++j) {
-    put(j, low[j] + sign * static_cast<std::int64_t>(bits_at(q, position, bits[j])) + carry);
-    position += bits[j];
-  }
-  carry += top;
-  for (std::size_t j = low_digits; j + 1 < digits; ++j) put(j, carry);
-  const std::size_t last = digits - 1;  // takes what is left, unbalanced
-  input[last] = static_cast<double>(carry) * weight[last];
+  // c = -1 adds the quotient, c = +1 subtracts it.
+  fold_digits(coefficient_.data(), quotient_.data(), bits_.data(), input_weight_.data(), input_, low_digits_, digits_,
+              bottom, top, form_.c < 0);
 }
 
 }  // namespace tk::primes
