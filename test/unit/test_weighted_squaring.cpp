@@ -2,40 +2,22 @@
 /// @brief The weighted squaring against GMP (x^2 - m mod N computed
 /// directly): random values and chains of squarings, k from 1 to 56 bits
 /// (the 44-bit k of the twin records among them), both forms, n around
-/// limb and digit boundaries, the edge values; and the safety net: digits
-/// too wide to round correctly are caught and redone, never a wrong square.
+/// limb and digit boundaries, the edge values, and whole proofs. The
+/// safety net is in test_squaring_safety.cpp.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include "primes/riesel_proof.hpp"
 #include "primes/weighted_squaring.hpp"
+#include "squaring_chain.hpp"
 
 namespace {
 
 using namespace tk::primes;
 
-mpz_class value_of(const SpecialForm& form) {
-  mpz_class N = form.k;
-  N <<= static_cast<mp_bitcnt_t>(form.n);
-  return N + form.c;
-}
-
-std::string name_of(const SpecialForm& form) {
-  return std::to_string(form.k) + "*2^" + std::to_string(form.n) + (form.c > 0 ? "+1" : "-1");
-}
-
-void expect_chain_matches(WeightedSquaring& squarer, const SpecialForm& form, mpz_class x, unsigned long minus, int rounds) {
-  const mpz_class N = value_of(form);
-  squarer.load(x);
-  for (int round = 0; round < rounds; ++round) {
-    squarer.square_minus(minus);
-    x = x * x - minus;
-    mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
-    mpz_class got;
-    squarer.store(got);
-    ASSERT_EQ(got, x) << name_of(form) << " round " << round;
-  }
-}
+using squaring_test::expect_chain_matches;
+using squaring_test::name_of;
+using squaring_test::value_of;
 
 TEST(WeightedSquaring, MatchesGmpForManyKOfBothSigns) {
   gmp_randclass random(gmp_randinit_default);
@@ -93,33 +75,8 @@ TEST(WeightedSquaring, LargeTwinNumberRoundsSafely) {
   EXPECT_LT(squarer->worst_roundoff(), 0.25);
 }
 
-TEST(WeightedSquaring, DigitsTooWideAreCaughtAndRedoneByGmp) {
-  // 30-bit digits at length 4096: coefficients past a double's 53 bits.
-  const SpecialForm form{778965587811ull, 40000, -1};
-  auto squarer = WeightedSquaring::create_with(form, 4096, 30);
-  ASSERT_NE(squarer, nullptr);
-  gmp_randclass random(gmp_randinit_default);
-  random.seed(11);
-  expect_chain_matches(*squarer, form, random.get_z_range(value_of(form)), 2, 10);
-  EXPECT_EQ(squarer->fallbacks(), 10u);
-}
-
-TEST(WeightedSquaring, BorderlineDigitsStillNeverGiveAWrongSquare) {
-  // Errors near 0.5: some squares caught, some kept; all must be GMP's.
-  const SpecialForm form{3, 90000, 1};
-  auto squarer = WeightedSquaring::create_with(form, 8192, 23);
-  ASSERT_NE(squarer, nullptr);
-  gmp_randclass random(gmp_randinit_default);
-  random.seed(12);
-  expect_chain_matches(*squarer, form, random.get_z_range(value_of(form)), 0, 30);
-}
-
-TEST(WeightedSquaring, RefusesFormsItCannotReduce) {
-  EXPECT_EQ(WeightedSquaring::create(SpecialForm{3, 63, -1}), nullptr);
-  EXPECT_EQ(WeightedSquaring::create(SpecialForm{4, 1000, -1}), nullptr);
-  EXPECT_EQ(WeightedSquaring::create(SpecialForm{3, 1000, 5}), nullptr);
-  EXPECT_EQ(WeightedSquaring::create(SpecialForm{1ull << 57 | 1, 1000, -1}), nullptr);  // k past 56 bits
-  EXPECT_EQ(WeightedSquaring::create_with(SpecialForm{3, 10000, -1}, 512, 16), nullptr);
+TEST(WeightedSquaring, RefusesKPast56Bits) {
+  EXPECT_EQ(WeightedSquaring::create(SpecialForm{1ull << 57 | 1, 1000, -1}), nullptr);  // the padded FFT's case
 }
 
 }  // namespace
