@@ -3,8 +3,10 @@
 /// the conversions between GMP integers and its digits.
 #include <fftw3.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <ctime>
 
 #include "primes/fft_plans.hpp"
 #include "primes/weighted_squaring.hpp"
@@ -48,16 +50,72 @@ mpz_class modulus_of(const SpecialForm& form) {
   return N + form.c;
 }
 
+bool fast_fft_lengths_contain(std::size_t length) {
+  const auto& lengths = fast_fft_lengths();
+  return std::binary_search(lengths.begin(), lengths.end(), length);
+}
+
+// Which FFTW length is fastest depends on its factors in ways no simple
+// rule captured here (15*2^a and 135*2^a are sometimes faster than the
+// shorter 2^a and 9*2^a, sometimes slower). From this length on, the
+// first few that fit are timed on a few squarings (a few milliseconds, with
+// plans estimated in microseconds), and the fastest is kept.
+constexpr std::size_t kTimeFromLength = 8192;
+constexpr std::size_t kTimedCandidates = 3;
+constexpr int kTimedSquarings = 24;
+
+const std::vector<std::size_t>& candidate_lengths() {
+  static const std::vector<std::size_t> lengths = [] {
+    std::vector<std::size_t> all = fast_fft_lengths();
+    for (std::size_t power = 64; power <= (std::size_t{1} << 22); power *= 2)
+      for (std::size_t odd : {15, 27, 135})
+        if (odd * power >= kTimeFromLength) all.push_back(odd * power);
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    return all;
+  }();
+  return lengths;
+}
+
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
+
+double seconds_per_squaring(WeightedSquaring& squarer, const mpz_class& N) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(23);
+  squarer.load(random.get_z_range(N));
+  for (int i = 0; i < 4; ++i) squarer.square_minus(2);  // caches and pages warm
+  const double start = thread_cpu_seconds();
+  for (int i = 0; i < kTimedSquarings; ++i) squarer.square_minus(2);
+  return (thread_cpu_seconds() - start) / kTimedSquarings;
+}
+
 }  // namespace
 
 std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& form) {
   if (!supported(form)) return nullptr;
-  for (std::size_t length : fast_fft_lengths()) {
+  std::unique_ptr<WeightedSquaring> best;
+  double best_seconds = 0;
+  std::size_t timed = 0;
+  for (std::size_t length : candidate_lengths()) {
+    const bool short_length = length < kTimeFromLength;
+    if (short_length && !fast_fft_lengths_contain(length)) continue;
     const std::size_t low = low_digits_for(form.n, max_average_bits(length));
-    if (2 * (low + top_digits(form, low)) - 1 <= length)
-      return std::unique_ptr<WeightedSquaring>(new WeightedSquaring(form, length, low));
+    if (2 * (low + top_digits(form, low)) - 1 > length) continue;
+    std::unique_ptr<WeightedSquaring> candidate(new WeightedSquaring(form, length, low));
+    if (short_length) return candidate;
+    const double seconds = seconds_per_squaring(*candidate, modulus_of(form));
+    if (!best || seconds < best_seconds) {
+      best = std::move(candidate);
+      best_seconds = seconds;
+    }
+    if (++timed == kTimedCandidates) break;
   }
-  return nullptr;
+  if (best) best->load(0);
+  return best;
 }
 
 std::unique_ptr<WeightedSquaring> WeightedSquaring::create_with(const SpecialForm& form, std::size_t length, int digit_bits) {
