@@ -49,7 +49,7 @@ __attribute__((always_inline)) inline RoundedCoefficients round_with(const doubl
     const v4d magnitude = value > -value ? value : -value;
     const v4i fits = magnitude < limit;  // all ones where |value| < 2^51 (false for NaN)
     bad |= ~fits;
-    const v4i zi = ((v4i)moved - shifter_int) & fits;
+    const v4i zi = (v4i)((v4u)moved - (v4u)shifter_int) & fits;  // unsigned: lanes out of range wrap harmlessly
     std::memcpy(z + j, &zi, sizeof zi);
     const v4u residue = (v4u)zi + (p & (v4u)(zi >> 63));
     const v4u e = {rotation[j], rotation[j + 1], rotation[j + 2], rotation[j + 3]};
