@@ -6,6 +6,7 @@
 #include "io/error.hpp"
 #include "primes/fft_squaring.hpp"
 #include "primes/gerbicz_check.hpp"
+#include "primes/jacobi_check.hpp"
 #include "primes/modulus.hpp"
 #include "primes/weighted_squaring.hpp"
 
@@ -69,8 +70,8 @@ bool square_rounds_fft(Squarer& fft, std::uint64_t& iteration, std::uint64_t las
   return true;
 }
 
-/// Proth's squarings (minus 0) go through Gerbicz's check; LLR's (x^2 - 2)
-/// have no such identity and rely on the squarer's own checks.
+/// Proth's squarings (minus 0) go through Gerbicz's check, LLR's (x^2 - 2)
+/// through the Jacobi check of the Lucas sequence.
 template <class Squarer>
 bool square_rounds_fft(Squarer& fft, const Modulus& N, ProofState& state, std::uint64_t last, long minus,
                        const ProofOptions& options, ProofResult& result) {
@@ -79,21 +80,20 @@ bool square_rounds_fft(Squarer& fft, const Modulus& N, ProofState& state, std::u
     quiet.report_every = std::uint64_t{1} << 62;
     return square_rounds_fft(fft, N, state, last, minus, quiet, result);
   }
-  if (minus != 0) {
-    fft.load(state.value);
-    const bool finished = square_rounds_fft(fft, state.iteration, last, minus, options, true);
-    fft.store(state.value);
-    return finished;
-  }
   CheckedSquarer squarer;
   squarer.square_to = [&](std::uint64_t& iteration, std::uint64_t to, bool report) {
-    return square_rounds_fft(fft, iteration, to, 0, options, report);
+    return square_rounds_fft(fft, iteration, to, minus, options, report);
   };
   squarer.load = [&](const mpz_class& x) { fft.load(x); };
   squarer.store = [&](mpz_class& x) { fft.store(x); };
-  const GerbiczOutcome outcome = gerbicz_squarings(squarer, N, state.value, state.iteration, last,
-                                                   gerbicz_plan(last - state.iteration), options.corrupt_for_tests);
-  result.gerbicz_restarts = outcome.restarts;
+  // A resumed LLR may start at iteration 0 only from u_0, which the
+  // Jacobi identity does not cover: its first check comes after squarings.
+  const GerbiczOutcome outcome =
+      minus != 0 ? jacobi_checked_squarings(squarer, N.value(), state.value, state.iteration, last, kJacobiCheckEvery,
+                                            options.corrupt_for_tests)
+                 : gerbicz_squarings(squarer, N, state.value, state.iteration, last,
+                                     gerbicz_plan(last - state.iteration), options.corrupt_for_tests);
+  result.check_restarts = outcome.restarts;
   return outcome.finished;
 }
 

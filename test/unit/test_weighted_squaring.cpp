@@ -99,7 +99,7 @@ TEST(WeightedSquaring, ProofsOnTheFftGiveGmpsVerdictsAndResidues) {
       const auto proth_gmp = proth_prove(k, n, gmp), proth_fft = proth_prove(k, n, fft);
       EXPECT_EQ(proth_gmp.verdict, proth_fft.verdict) << k << " " << n;
       EXPECT_EQ(proth_gmp.res64, proth_fft.res64) << k << " " << n;
-      EXPECT_EQ(proth_fft.gerbicz_restarts, 0u);
+      EXPECT_EQ(proth_fft.check_restarts, 0u);
     }
 }
 
