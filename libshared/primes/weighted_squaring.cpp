@@ -7,7 +7,6 @@
 #include <fftw3.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "primes/fft_plans.hpp"
@@ -30,23 +29,6 @@ inline double round_to_integer(double v) {
   return (v + shifter) - shifter;
 }
 
-class StepClock {
- public:
-  explicit StepClock(bool on) : on_(on) {
-    if (on_) last_ = std::chrono::steady_clock::now();
-  }
-  void lap(double& into) {
-    if (!on_) return;
-    const auto now = std::chrono::steady_clock::now();
-    into += std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-  }
-
- private:
-  bool on_;
-  std::chrono::steady_clock::time_point last_;
-};
-
 }  // namespace
 
 void WeightedSquaring::square_minus(unsigned long minus) {
@@ -59,18 +41,14 @@ void WeightedSquaring::square_minus(unsigned long minus) {
 }
 
 bool WeightedSquaring::square_and_carry() {
-  StepClock clock(timing_);
   auto* spectrum = static_cast<fftw_complex*>(spectrum_);
   fftw_execute_dft_r2c(plans_->forward, input_, spectrum);
-  clock.lap(times_.forward);
   for (std::size_t j = 0; j <= length_ / 2; ++j) {
     const double re = spectrum[j][0], im = spectrum[j][1];
     spectrum[j][0] = re * re - im * im;
     spectrum[j][1] = 2.0 * re * im;
   }
-  clock.lap(times_.pointwise);
   fftw_execute_dft_c2r(plans_->inverse, spectrum, output_);
-  clock.lap(times_.inverse);
 
   const RoundedCoefficients rounded =
       round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);
@@ -93,7 +71,6 @@ bool WeightedSquaring::square_and_carry() {
   const double worst = rounded.worst;
   const bool out_of_range = rounded.out_of_range;
   square_mod_p_ = rounded.sum;
-  clock.lap(times_.carry);
   worst_roundoff_ = std::max(worst_roundoff_, worst);
   // The square fits below the last coefficient, so nothing carries out of
   // the top; and the coefficients must give x^2 mod p.
@@ -106,7 +83,6 @@ bool WeightedSquaring::square_and_carry() {
 // 2^(kbits+5): q = q_lo + q_hi*2^n with q_hi = a*k + b folds once more to
 // -c*q_lo + a + (r - c*b)*2^n, below about 2*N in size whatever x was.
 void WeightedSquaring::divide_and_fold(unsigned long minus) {
-  StepClock clock(timing_);
   const std::uint64_t k = form_.k, n = form_.n;
   // r = H mod k first (GMP's mpn_mod_1, about 1.5 cycles a limb here),
   // then (H - r)/k by Hensel's exact division, a short multiply chain:
@@ -115,7 +91,6 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
   const std::uint64_t r = mpn_mod_1(high_.data(), limbs, k);
   mpn_sub_1(high_.data(), high_.data(), limbs, r);
   mpn_divexact_1(quotient_.data(), high_.data(), limbs, k);
-  clock.lap(times_.divide);
   const std::size_t at = n / 64;
   const unsigned shift = n % 64;
   const std::uint64_t q_high = (quotient_[at] >> shift) | ((quotient_[at + 1] << 1) << (63 - shift));
@@ -133,11 +108,12 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
   fold_into_input(top - low_carry_, static_cast<std::int64_t>(a) - static_cast<std::int64_t>(minus));
   // The folded value is P - (q - c*a)*N - minus: its residue mod p, for the
   // next square's check, follows from the square's (checked) and q's. A
-  // fold that went wrong then fails that check and is redone by GMP.
+  // fold that went wrong then fails that check (a fallback is counted; the
+  // wrong value is what GMP squares), and the proof's Gerbicz or Jacobi
+  // check sends the proof back to its last verified value.
   const std::uint64_t q_mod_p = mpn_mod_1(quotient_.data(), static_cast<mp_size_t>(high_limbs_), kP61);
   const std::uint64_t multiple = form_.c < 0 ? reduce61(q_mod_p + a) : reduce61(q_mod_p + kP61 - a % kP61);
   value_mod_p_ = reduce61(square_mod_p_ + 2 * kP61 - multiply61(multiple, modulus_mod_p_) - minus);
-  clock.lap(times_.fold);
 }
 
 void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {

@@ -12,8 +12,8 @@
 /// same weights, the integers z_j = sum of x_i*x_l*2^(e_i+e_l-e_j), the
 /// square's coefficients at 2^(e_j). One pass rounds, checks and carries
 /// them; the part above 2^n goes to limbs for one division by k (GMP's
-/// mpn_divrem_1, the one step that is sequential over the whole number);
-/// one pass folds the quotient back (k*2^n = -c mod N) while carrying
+/// mpn_mod_1 for the remainder, then mpn_divexact_1); one pass folds
+/// the quotient back (k*2^n = -c mod N) while carrying
 /// into balanced digits and weighting them for the next transform.
 ///
 /// Every square is checked, as FftSquaring's: worst rounding error below
@@ -59,13 +59,6 @@ class WeightedSquaring {
   double worst_roundoff() const { return worst_roundoff_; }
   std::uint64_t fallbacks() const { return fallbacks_; }
 
-  /// Time spent in each step, for the man page's table (when enabled).
-  struct StepTimes {
-    double forward = 0, pointwise = 0, inverse = 0, carry = 0, divide = 0, fold = 0;
-  };
-  void enable_step_times(bool on) { timing_ = on; }
-  const StepTimes& step_times() const { return times_; }
-
  private:
   WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits);
 
@@ -101,8 +94,6 @@ class WeightedSquaring {
   std::uint64_t modulus_mod_p_ = 0;  ///< N's
   double worst_roundoff_ = 0;
   std::uint64_t fallbacks_ = 0;
-  bool timing_ = false;
-  StepTimes times_;
 };
 
 }  // namespace tk::primes
