@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <ctime>
+#include <vector>
 
 #include "primes/fft_plans.hpp"
 #include "primes/weighted_squaring.hpp"
@@ -62,7 +63,7 @@ bool fast_fft_lengths_contain(std::size_t length) {
 // plans estimated in microseconds), and the fastest is kept.
 constexpr std::size_t kTimeFromLength = 8192;
 constexpr std::size_t kTimedCandidates = 3;
-constexpr int kTimedSquarings = 24;
+constexpr int kTimingTurns = 4, kSquaringsPerTurn = 8;
 
 const std::vector<std::size_t>& candidate_lengths() {
   static const std::vector<std::size_t> lengths = [] {
@@ -83,39 +84,49 @@ double thread_cpu_seconds() {
   return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
 }
 
-double seconds_per_squaring(WeightedSquaring& squarer, const mpz_class& N) {
+double seconds_for_squarings(WeightedSquaring& squarer, int count) {
+  const double start = thread_cpu_seconds();
+  for (int i = 0; i < count; ++i) squarer.square_minus(2);
+  return thread_cpu_seconds() - start;
+}
+
+// The fastest of the candidates: each is timed in short turns, taken in
+// rotation, and judged by its best turn, which other jobs on the machine
+// disturb least (one long turn each picked the slower length at times).
+std::unique_ptr<WeightedSquaring> fastest(std::vector<std::unique_ptr<WeightedSquaring>> candidates, const mpz_class& N) {
+  if (candidates.size() == 1) return std::move(candidates.front());
   gmp_randclass random(gmp_randinit_default);
   random.seed(23);
-  squarer.load(random.get_z_range(N));
-  for (int i = 0; i < 4; ++i) squarer.square_minus(2);  // caches and pages warm
-  const double start = thread_cpu_seconds();
-  for (int i = 0; i < kTimedSquarings; ++i) squarer.square_minus(2);
-  return (thread_cpu_seconds() - start) / kTimedSquarings;
+  const mpz_class x = random.get_z_range(N);
+  std::vector<double> best(candidates.size(), 1e300);
+  for (auto& candidate : candidates) {
+    candidate->load(x);
+    seconds_for_squarings(*candidate, 4);  // caches and pages warm
+  }
+  for (int turn = 0; turn < kTimingTurns; ++turn)
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      best[i] = std::min(best[i], seconds_for_squarings(*candidates[i], kSquaringsPerTurn));
+  const auto winner = std::min_element(best.begin(), best.end()) - best.begin();
+  return std::move(candidates[static_cast<std::size_t>(winner)]);
 }
 
 }  // namespace
 
 std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& form) {
   if (!supported(form)) return nullptr;
-  std::unique_ptr<WeightedSquaring> best;
-  double best_seconds = 0;
-  std::size_t timed = 0;
+  std::vector<std::unique_ptr<WeightedSquaring>> candidates;
   for (std::size_t length : candidate_lengths()) {
     const bool short_length = length < kTimeFromLength;
     if (short_length && !fast_fft_lengths_contain(length)) continue;
     const std::size_t low = low_digits_for(form.n, max_average_bits(length));
     if (2 * (low + top_digits(form, low)) - 1 > length) continue;
-    std::unique_ptr<WeightedSquaring> candidate(new WeightedSquaring(form, length, low));
-    if (short_length) return candidate;
-    const double seconds = seconds_per_squaring(*candidate, modulus_of(form));
-    if (!best || seconds < best_seconds) {
-      best = std::move(candidate);
-      best_seconds = seconds;
-    }
-    if (++timed == kTimedCandidates) break;
+    candidates.emplace_back(new WeightedSquaring(form, length, low));
+    if (short_length || candidates.size() == kTimedCandidates) break;
   }
-  if (best) best->load(0);
-  return best;
+  if (candidates.empty()) return nullptr;
+  auto chosen = fastest(std::move(candidates), modulus_of(form));
+  chosen->load(0);
+  return chosen;
 }
 
 std::unique_ptr<WeightedSquaring> WeightedSquaring::create_with(const SpecialForm& form, std::size_t length, int digit_bits) {
