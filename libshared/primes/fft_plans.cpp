@@ -57,6 +57,17 @@ const RealFftPlans* real_fft_plans(std::size_t length) {
   return &cache.emplace(length, plans).first->second;
 }
 
+void square_by_real_fft(const RealFftPlans& plans, double* input, fftw_complex* spectrum, double* output,
+                        std::size_t length) {
+  fftw_execute_dft_r2c(plans.forward, input, spectrum);
+  for (std::size_t j = 0; j <= length / 2; ++j) {
+    const double re = spectrum[j][0], im = spectrum[j][1];
+    spectrum[j][0] = re * re - im * im;
+    spectrum[j][1] = 2.0 * re * im;
+  }
+  fftw_execute_dft_c2r(plans.inverse, spectrum, output);
+}
+
 const std::vector<std::size_t>& fast_fft_lengths() {
   static const std::vector<std::size_t> lengths = [] {
     std::vector<std::size_t> all;

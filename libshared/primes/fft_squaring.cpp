@@ -146,14 +146,7 @@ void FftSquaring::split_into_digits() {
 }
 
 bool FftSquaring::square_by_fft() {
-  auto* spectrum = static_cast<fftw_complex*>(spectrum_);
-  fftw_execute_dft_r2c(plans_->forward, real_, spectrum);
-  for (std::size_t j = 0; j <= length_ / 2; ++j) {
-    const double re = spectrum[j][0], im = spectrum[j][1];
-    spectrum[j][0] = re * re - im * im;
-    spectrum[j][1] = 2.0 * re * im;
-  }
-  fftw_execute_dft_c2r(plans_->inverse, spectrum, real_);
+  square_by_real_fft(*plans_, real_, static_cast<fftw_complex*>(spectrum_), real_, length_);
 
   // Round each coefficient and carry: a coefficient is below 2^51 and the
   // running carry below 2^(52-b), so their sum fits 64 bits and its low b

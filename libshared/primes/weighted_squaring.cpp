@@ -41,14 +41,7 @@ void WeightedSquaring::square_minus(unsigned long minus) {
 }
 
 bool WeightedSquaring::square_and_carry() {
-  auto* spectrum = static_cast<fftw_complex*>(spectrum_);
-  fftw_execute_dft_r2c(plans_->forward, input_, spectrum);
-  for (std::size_t j = 0; j <= length_ / 2; ++j) {
-    const double re = spectrum[j][0], im = spectrum[j][1];
-    spectrum[j][0] = re * re - im * im;
-    spectrum[j][1] = 2.0 * re * im;
-  }
-  fftw_execute_dft_c2r(plans_->inverse, spectrum, output_);
+  square_by_real_fft(*plans_, input_, static_cast<fftw_complex*>(spectrum_), output_, length_);
 
   const RoundedCoefficients rounded =
       round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);
