@@ -77,35 +77,6 @@ bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::pai
   return true;
 }
 
-void RegionIndex::Impl::tree_k_nearest(Point p, std::size_t k, std::vector<std::pair<double, std::uint32_t>>& out) const {
-  // A max-heap of squared distances; once it holds k, nothing farther than its top can enter.
-  std::vector<std::pair<double, std::uint32_t>> heap;
-  double limit2 = kInf;
-  std::uint32_t stack[128];
-  std::size_t top = 0;
-  stack[top++] = 0;
-  while (top > 0 && k > 0) {
-    const std::uint32_t index = stack[--top];
-    const Node& node = nodes[index];
-    if (box_distance2(node.box, p) > limit2) continue;
-    if (node.count == 0) {
-      const bool left_first = box_distance2(nodes[index + 1].box, p) <= box_distance2(nodes[node.right].box, p);
-      stack[top++] = left_first ? node.right : index + 1;  // the nearer child is popped first
-      stack[top++] = left_first ? index + 1 : node.right;
-      continue;
-    }
-    for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-      const double d2 = distance2(kernels[order[i]], p);
-      if (heap.size() == k && d2 >= heap.front().first) continue;
-      heap.emplace_back(d2, order[i]);
-      std::push_heap(heap.begin(), heap.end());
-      if (heap.size() > k) std::pop_heap(heap.begin(), heap.end()), heap.pop_back();
-      if (heap.size() == k) limit2 = heap.front().first;
-    }
-  }
-  for (const auto& [d2, e] : heap) out.emplace_back(std::sqrt(d2), e);
-}
-
 bool RegionIndex::Impl::tree_ray_parity(Point p) const {
   bool odd = false;
   std::uint32_t stack[128];
