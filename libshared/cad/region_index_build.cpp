@@ -3,8 +3,6 @@
 /// leaf's candidate list (pruned by quartering) and reference point.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "cad/region_index_impl.hpp"
 #include "cad/segment_geometry.hpp"
@@ -99,10 +97,16 @@ void RegionIndex::Impl::build_covers() {
     // a point, about kLeafCandidates that may be nearest (roughly as many
     // as Voronoi regions cross the leaf, so in proportion to its width).
     const Point middle{ox + (double(cell % nx) + 0.5) * size, oy + (double(cell / nx) + 0.5) * size};
-    const double may_win = double(leaf_window(cell, middle, size / 2, kRefineDepth - 1).size());
+    const CellWindow& w = windows[cell];
+    const double may_win =
+        double(leaf_window(cell, middle, size / 2, kRefineDepth - 1, window_elements.data() + w.first, w.count).size());
     const double wanted =
         std::max(std::sqrt(double(distinct) / kLeafCovers), std::min(may_win / kLeafCandidates, kMaxListSplit));
-    const auto split = static_cast<std::uint32_t>(std::clamp(std::ceil(wanted), 1.0, 32.0));
+    // A power of two (the nearer, in ratio), so that leaves' lists come down by quarters.
+    const double clamped = std::clamp(std::ceil(wanted), 1.0, 32.0);
+    std::uint32_t split = 1;
+    while (split * 2 <= clamped) split *= 2;
+    if (clamped > std::sqrt(2.0) * split) split *= 2;
     coarse[cell] = {leaf_count, split};
     leaf_count += split * split;
     const double x0 = ox + double(cell % nx) * size, y0 = oy + double(cell / nx) * size, step = size / split;
@@ -149,9 +153,10 @@ void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::siz
   for (std::size_t i = begin; i < end; ++i)
     if (far2[i] <= reach * reach) scratch.push_back(scratch[i]);
   const std::size_t last = scratch.size();
-  // Stop at one element, at the depth limit, or where quartering stopped
-  // pruning (all nearly equidistant, as round the centre of a fine circle).
-  const bool stuck = depth > 0 && last - first == end - begin;
+  // Stop at one element, at the depth limit, or where quartering prunes
+  // little (many nearly equidistant, as round the centre of a fine circle):
+  // each level costs four times the last.
+  const bool stuck = depth > 0 && double(last - first) > kStuckShare * double(end - begin);
   if (last - first <= 1 || depth == kRefineDepth || stuck || last - first > kRefineLimit) {
     for (std::size_t i = first; i < last; ++i)
       if (stamp[scratch[i]] != mark) stamp[scratch[i]] = mark, out.push_back(scratch[i]);
@@ -165,7 +170,29 @@ void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::siz
 /// A leaf's candidates, capped; then its reference point: the first of a
 /// few scattered points that keeps clear of the boundary (its inside flag
 /// comes later, from build_inside).
-void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y) {
+/// The lists of the leaves of a cell's block [x0, x0 + span)^2 (in
+/// leaves) into leaf_lists, each quarter's pruned from the block's.
+void RegionIndex::Impl::build_leaves(std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
+                                     const std::vector<std::uint32_t>& list) {
+  if (span == 1) {
+    leaf_lists[y0 * coarse[cell].split + x0] = list;
+    return;
+  }
+  const std::uint32_t half_span = span / 2;
+  const double step = size / coarse[cell].split;
+  std::vector<std::uint32_t> quarter;
+  for (std::uint32_t dy = 0; dy < 2; ++dy)
+    for (std::uint32_t dx = 0; dx < 2; ++dx) {
+      const std::uint32_t x = x0 + dx * half_span, y = y0 + dy * half_span;
+      const Point c{ox + double(cell % nx) * size + (x + half_span / 2.0) * step,
+                    oy + double(cell / nx) * size + (y + half_span / 2.0) * step};
+      quarter.clear();
+      if (!windows[cell].wide) prune(c, half_span * step / 2 * (1 + 1e-9), list.data(), list.size(), quarter);
+      build_leaves(cell, x, y, half_span, quarter);
+    }
+}
+
+void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y, const std::vector<std::uint32_t>& list) {
   const std::size_t leaf = coarse[cell].first_leaf + y * coarse[cell].split + x;
   const double leaf_size = size / coarse[cell].split;
   const Point c = centre(cell % nx, cell / nx, coarse[cell].split, x, y);
@@ -173,7 +200,7 @@ void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint3
   const Point middle = centre(cell % nx, cell / nx, 1, 0, 0);
   // A wide cell's leaves: no list, and a bound on the centre's distance for a start.
   const double from_middle = std::hypot(c.x - middle.x, c.y - middle.y);
-  const std::vector<std::uint32_t> listed = leaf_window(cell, c, leaf_size / 2, 0);
+  const std::vector<std::uint32_t> listed = leaf_window(cell, c, leaf_size / 2, 0, list.data(), list.size());
   const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaves[leaf].nearest = float_above(nearest);
   leaves[leaf].complete = window.wide                       ? 0
@@ -234,20 +261,19 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_uniqu
   m.near.resize(m.segments.size());
   m.build_windows();
   m.build_covers();
-  for (std::size_t cell = 0; cell < m.coarse.size(); ++cell)
-    for (std::uint32_t y = 0; y < m.coarse[cell].split; ++y)
-      for (std::uint32_t x = 0; x < m.coarse[cell].split; ++x) m.build_leaf(cell, x, y);
-  m.build_inside();
-  if (std::getenv("RINDEX_DEBUG")) {
-    std::size_t wide = 0, total = 0, listed = 0, capped = 0;
-    for (const auto& w : m.windows) wide += w.wide, total += w.count;
-    for (std::size_t i = 0; i + 1 < m.leaves.size(); ++i) capped += m.leaves[i].complete < INFINITY;
-    listed = m.candidates.size();
-    std::fprintf(stderr, "cells %zu wide %zu window_avg %.1f leaves %zu capped %zu list_tail %zu covers %zu\n", m.windows.size(), wide,
-                 double(total) / m.windows.size(), m.leaves.size() - 1, capped, listed, m.covers.size());
+  std::vector<std::uint32_t> list;
+  for (std::size_t cell = 0; cell < m.coarse.size(); ++cell) {
+    const Impl::CellWindow& w = m.windows[cell];
+    list.assign(m.window_elements.begin() + w.first, m.window_elements.begin() + w.first + w.count);
+    const std::uint32_t split = m.coarse[cell].split;
+    m.leaf_lists.resize(std::size_t(split) * split);
+    m.build_leaves(cell, 0, 0, split, list);
+    for (std::uint32_t y = 0; y < split; ++y)  // in order: each leaf's lists end the last's
+      for (std::uint32_t x = 0; x < split; ++x) m.build_leaf(cell, x, y, m.leaf_lists[y * split + x]);
   }
+  m.build_inside();
   m.stamp = {}, m.near = {}, m.far2 = {}, m.scratch = {}, m.windows = {}, m.window_elements = {},
-  m.cell_touches = {}, m.cell_touch_first = {};
+  m.cell_touches = {}, m.cell_touch_first = {}, m.leaf_lists = {};
 }
 
 }  // namespace tk::cad

@@ -89,14 +89,15 @@ void RegionIndex::Impl::build_windows() {
     for (std::size_t x = 0; x < nx; x += kBlockCells) ask_block(x, y, kBlockCells);
 }
 
-/// The elements that may be nearest to a point of the square round c of
-/// half side `half` inside `cell`, pruned by refine() from `depth` on;
+/// The elements of `window` (a list for a square holding this one) that
+/// may be nearest to a point of the square round c of half side `half`
+/// inside `cell`, pruned by refine() from `depth` on;
 /// sorted by distance from c (left in near[]). Empty for a wide cell.
-std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(std::size_t cell, Point c, double half, int depth) {
+std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(std::size_t cell, Point c, double half, int depth,
+                                                          const std::uint32_t* window, std::size_t count) {
   std::vector<std::uint32_t> listed;
-  const CellWindow& w = windows[cell];
-  if (w.wide) return listed;
-  scratch.assign(window_elements.begin() + w.first, window_elements.begin() + w.first + w.count);
+  if (windows[cell].wide) return listed;
+  scratch.assign(window, window + count);
   ++mark;
   refine(c, half, 0, scratch.size(), depth, listed);
   for (std::uint32_t e : listed) near[e] = std::sqrt(distance2(kernels[e], c));

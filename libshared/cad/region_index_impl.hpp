@@ -23,8 +23,9 @@ constexpr double kLeafCovers = 1;           // elements touching a leaf, about
 constexpr double kLeafCandidates = 6;       // elements that may be nearest in a leaf, about
 constexpr double kMaxListSplit = 2;         // splits of a cell for that, at most
 constexpr std::size_t kMaxCandidates = 64;  // elements listed per leaf, at most
-constexpr int kRefineDepth = 3;             // quarterings of a leaf while pruning its list
+constexpr int kRefineDepth = 2;             // quarterings of a leaf while pruning its list
 constexpr std::size_t kRefineLimit = 1024;  // longer lists are not pruned
+constexpr double kStuckShare = 0.75;        // a quarter keeping more of its parent's list is not quartered again
 constexpr std::size_t kWideWindow = 4 * kMaxCandidates;  // a cell with a longer window keeps no lists
 
 /// An element prepared for queries. Arcs live in their chord frame as in
@@ -205,6 +206,7 @@ struct RegionIndex::Impl {
   };
   std::vector<CellWindow> windows;
   std::vector<std::uint32_t> window_elements;
+  std::vector<std::vector<std::uint32_t>> leaf_lists;  // while building: a cell's leaves' windows
   std::vector<std::uint32_t> cell_touches, cell_touch_first;  // while building: the elements that may touch each cell
   /// Each leaf's inside flag: the ray test at the first leaf of each row of
   /// cells, then from leaf to leaf by the crossings of the segments joining
@@ -228,9 +230,12 @@ struct RegionIndex::Impl {
   /// Appends to `out` the elements of `in` that may be nearest to a point of
   /// the square round c of half side `half`; returns c's distance to the nearest of them.
   double prune(Point c, double half, const std::uint32_t* in, std::size_t count, std::vector<std::uint32_t>& out);
-  std::vector<std::uint32_t> leaf_window(std::size_t cell, Point c, double half, int depth);
+  std::vector<std::uint32_t> leaf_window(std::size_t cell, Point c, double half, int depth, const std::uint32_t* window,
+                                         std::size_t count);
   void build_covers();
-  void build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y);
+  void build_leaves(std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
+                    const std::vector<std::uint32_t>& list);
+  void build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y, const std::vector<std::uint32_t>& list);
   void refine(Point q, double half, std::size_t begin, std::size_t end, int depth, std::vector<std::uint32_t>& out);
 
   // Scratch while building: a mark per element, distances from a centre,
