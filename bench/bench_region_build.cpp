@@ -15,7 +15,8 @@
 /// million random queries a second and >= 10 million along a tool path.
 /// `bench_region_build --write-dxf DIR` only writes the nine DXFs.
 /// Environment: BENCH_REGION_BUILD_REPEATS or BENCH_REPEATS (default 3),
-/// BENCH_REGION_BUILD_SIZES (default "1000,10000,100000").
+/// BENCH_REGION_BUILD_SIZES (default "1000,10000,100000"),
+/// BENCH_REGION_BUILD_SHAPES (default "ring,gear,comb").
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 
@@ -247,7 +248,9 @@ int main(int argc, char** argv) {
               "loops", "index", "union", "offset", "exact", "contour", "uncut", "TOTAL", "build", "rtree", "rand", "rtree",
               "path", "rtree");
   double total_10k = 0, total_100k = 0, worst_random = 1e300, worst_path = 1e300;
+  const char* only = std::getenv("BENCH_REGION_BUILD_SHAPES");
   for (const Shape& shape : kShapes) {
+    if (only && std::string(only).find(shape.name) == std::string::npos) continue;
     double at_10k = 0, at_100k = 0;
     for (std::size_t n : sizes()) {
       const std::string path = (dir / (std::string(shape.name) + "_" + std::to_string(n) + ".dxf")).string();
