@@ -13,7 +13,7 @@ build_pkgs=(g++ cmake make pkg-config libcli11-dev libgmp-dev libeigen3-dev
 test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp python3 python3-ezdxf python3-scipy parallel fuzzylite
            linuxcnc-uspace)
 # Benchmarks: peers timed in the same run (never runtime dependencies).
-bench_pkgs=(libflint-dev primesieve libfuzzylite-dev libgsl-dev)
+bench_pkgs=(libflint-dev primesieve libfuzzylite-dev libgsl-dev libboost-dev)
 
 want=("${build_pkgs[@]}")
 case "${1:-build}" in
