@@ -12,7 +12,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$root/build}
 benches=("$@")
-[ ${#benches[@]} -gt 0 ] || benches=(bench_u64 bench_kbnc bench_generic bench_sieve bench_riesel bench_gcode_pulse bench_dxf_parse bench_region_query bench_tnorm bench_fuzzyfeed bench_smcsim bench_subtune)
+[ ${#benches[@]} -gt 0 ] || benches=(bench_u64 bench_kbnc bench_generic bench_sieve bench_riesel bench_gcode_pulse bench_dxf_parse bench_region_query bench_region_build bench_tnorm bench_fuzzyfeed bench_smcsim bench_subtune)
 
 command -v "${BENCH_GP:-gp}" >/dev/null || { echo "run.sh: PARI/GP's gp not found (make bench-deps)" >&2; exit 2; }
 

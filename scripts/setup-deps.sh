@@ -21,7 +21,7 @@ test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp python3 python3-ez
 # CPack's stripping, lintian to check the result, man to check the pages.
 deb_pkgs=(dpkg-dev file lintian man-db)
 # Benchmarks: peers timed in the same run (never runtime dependencies).
-bench_pkgs=(libflint-dev primesieve libfuzzylite-dev libgsl-dev)
+bench_pkgs=(libflint-dev primesieve libfuzzylite-dev libgsl-dev libboost-dev)
 
 want=("${build_pkgs[@]}")
 case "${1:-build}" in

@@ -3,20 +3,25 @@
 ///
 /// The index is a two-level grid over the boundary's box, enlarged by a
 /// quarter on each side: about one cell per element, each cell split into
-/// leaves until about one element touches a leaf and few may be nearest to
-/// its points. Each leaf keeps
+/// leaves (a power of two a side) until about one element touches a leaf
+/// and few may be nearest to its points. Each leaf keeps
 ///  - the elements that may be nearest to one of its points: those within
 ///    the centre's nearest distance plus a leaf diagonal, pruned by the
-///    same test on quarters of the leaf, three times over, which leaves
-///    little more than the elements whose Voronoi regions meet the leaf.
+///    same test on quarters of the leaf, twice over (less where it stops
+///    pruning), which leaves little more than the elements whose Voronoi
+///    regions meet the leaf. The lists come top down (see
+///    region_index_cells.cpp) so the build grows as about n log n; a cell
+///    with too many candidates (deep inside a finely divided outline)
+///    keeps none, and its queries use the tree.
 ///    They are sorted by distance from the centre, the first four kept in
 ///    the leaf's own cache line, and a query stops once the triangle
-///    inequality rules out the rest. Lists are capped (at the
-///    centre of a circle of many arcs every arc may win); a query that
+///    inequality rules out the rest. Lists are capped; a query that
 ///    runs off a capped list finishes in a box tree over the elements,
 ///    as do queries outside the grid;
 ///  - a reference point clear of the boundary, whether it is inside (by
-///    the same ray test as brute force), and the elements that may touch
+///    the same ray test as brute force at the first leaf of each row of
+///    cells, then from leaf to leaf by the crossing test below), and the
+///    elements that may touch
 ///    the leaf: the query's inside flag is the reference point's, flipped
 ///    once per crossing of the short segment from there to the query point.
 /// The crossing tests share their conventions and their left_of() calls
@@ -75,35 +80,6 @@ bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::pai
     if (out.size() > cap) return false;
   }
   return true;
-}
-
-void RegionIndex::Impl::tree_k_nearest(Point p, std::size_t k, std::vector<std::pair<double, std::uint32_t>>& out) const {
-  // A max-heap of squared distances; once it holds k, nothing farther than its top can enter.
-  std::vector<std::pair<double, std::uint32_t>> heap;
-  double limit2 = kInf;
-  std::uint32_t stack[128];
-  std::size_t top = 0;
-  stack[top++] = 0;
-  while (top > 0 && k > 0) {
-    const std::uint32_t index = stack[--top];
-    const Node& node = nodes[index];
-    if (box_distance2(node.box, p) > limit2) continue;
-    if (node.count == 0) {
-      const bool left_first = box_distance2(nodes[index + 1].box, p) <= box_distance2(nodes[node.right].box, p);
-      stack[top++] = left_first ? node.right : index + 1;  // the nearer child is popped first
-      stack[top++] = left_first ? index + 1 : node.right;
-      continue;
-    }
-    for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-      const double d2 = distance2(kernels[order[i]], p);
-      if (heap.size() == k && d2 >= heap.front().first) continue;
-      heap.emplace_back(d2, order[i]);
-      std::push_heap(heap.begin(), heap.end());
-      if (heap.size() > k) std::pop_heap(heap.begin(), heap.end()), heap.pop_back();
-      if (heap.size() == k) limit2 = heap.front().first;
-    }
-  }
-  for (const auto& [d2, e] : heap) out.emplace_back(std::sqrt(d2), e);
 }
 
 bool RegionIndex::Impl::tree_ray_parity(Point p) const {

@@ -84,22 +84,29 @@ void RegionIndex::Impl::build_covers() {
   std::stable_sort(touches.begin(), touches.end(), [](const Touch& a, const Touch& b) { return a.cell < b.cell; });
 
   coarse.assign(nx * ny, Coarse{0, 1});
+  cell_touch_first.assign(nx * ny + 1, 0);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (leaf, element)
   std::uint32_t leaf_count = 0;
   for (std::size_t t = 0, cell = 0; cell < nx * ny; ++cell) {
     const std::size_t begin = t;
     std::size_t distinct = 0;
+    cell_touch_first[cell] = static_cast<std::uint32_t>(cell_touches.size());
     for (; t < touches.size() && touches[t].cell == cell; ++t)
-      distinct += t == begin || touches[t].element != touches[t - 1].element;
+      if (t == begin || touches[t].element != touches[t - 1].element) ++distinct, cell_touches.push_back(touches[t].element);
     // Enough leaves for about kLeafCovers elements touching each, and, up to
     // a point, about kLeafCandidates that may be nearest (roughly as many
     // as Voronoi regions cross the leaf, so in proportion to its width).
-    double nearest = 0;
     const Point middle{ox + (double(cell % nx) + 0.5) * size, oy + (double(cell / nx) + 0.5) * size};
-    const double may_win = double(winners(middle, size / 2, 1, nearest).size());
+    const CellWindow& w = windows[cell];
+    const double may_win =
+        double(leaf_window(cell, middle, size / 2, kRefineDepth - 1, window_elements.data() + w.first, w.count).size());
     const double wanted =
         std::max(std::sqrt(double(distinct) / kLeafCovers), std::min(may_win / kLeafCandidates, kMaxListSplit));
-    const auto split = static_cast<std::uint32_t>(std::clamp(std::ceil(wanted), 1.0, 32.0));
+    // A power of two (the nearer, in ratio), so that leaves' lists come down by quarters.
+    const double clamped = std::clamp(std::ceil(wanted), 1.0, 32.0);
+    std::uint32_t split = 1;
+    while (split * 2 <= clamped) split *= 2;
+    if (clamped > std::sqrt(2.0) * split) split *= 2;
     coarse[cell] = {leaf_count, split};
     leaf_count += split * split;
     const double x0 = ox + double(cell % nx) * size, y0 = oy + double(cell / nx) * size, step = size / split;
@@ -123,6 +130,7 @@ void RegionIndex::Impl::build_covers() {
       }
     }
   }
+  cell_touch_first[nx * ny] = static_cast<std::uint32_t>(cell_touches.size());
   std::stable_sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   leaves.assign(leaf_count + 1, Leaf{});
@@ -145,9 +153,10 @@ void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::siz
   for (std::size_t i = begin; i < end; ++i)
     if (far2[i] <= reach * reach) scratch.push_back(scratch[i]);
   const std::size_t last = scratch.size();
-  // Stop at one element, at the depth limit, or where quartering stopped
-  // pruning (all nearly equidistant, as round the centre of a fine circle).
-  const bool stuck = depth > 0 && last - first == end - begin;
+  // Stop at one element, at the depth limit, or where quartering prunes
+  // little (many nearly equidistant, as round the centre of a fine circle):
+  // each level costs four times the last.
+  const bool stuck = depth > 0 && double(last - first) > kStuckShare * double(end - begin);
   if (last - first <= 1 || depth == kRefineDepth || stuck || last - first > kRefineLimit) {
     for (std::size_t i = first; i < last; ++i)
       if (stamp[scratch[i]] != mark) stamp[scratch[i]] = mark, out.push_back(scratch[i]);
@@ -158,51 +167,46 @@ void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::siz
   scratch.resize(first);
 }
 
-/// The elements that may be nearest to a point of the square round c of
-/// half side `half` (refined `depth` times), sorted by their distance from
-/// c (left in near[]); `nearest` gets c's distance to the boundary.
-std::vector<std::uint32_t> RegionIndex::Impl::winners(Point c, double half, int depth, double& nearest) {
-  double best2 = kInf;
-  std::uint32_t best = 0;
-  tree_nearest(c, best2, best);
-  nearest = std::sqrt(best2);
-  std::vector<std::pair<double, std::uint32_t>> found;
-  const double reach = (nearest + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
-  std::vector<std::uint32_t> listed;
-  if (!tree_within(c, reach, found, kWideWindow)) {
-    // Many elements nearly equidistant (deep inside a finely divided
-    // outline): refining, even gathering them all, would cost more than it
-    // saves. The nearest kMaxCandidates + 1 to c keep the leaf's promise
-    // (every element nearer than the last listed is listed); queries
-    // beyond fall back to the tree.
-    found.clear();
-    tree_k_nearest(c, kMaxCandidates + 1, found);
-    for (const auto& [d, e] : found) near[e] = d, listed.push_back(e);
-  } else {
-    for (const auto& [d, e] : found) near[e] = d;
-    scratch.clear();
-    for (const auto& entry : found) scratch.push_back(entry.second);
-    ++mark;
-    refine(c, half, 0, scratch.size(), kRefineDepth - depth, listed);
+/// A leaf's candidates, capped; then its reference point: the first of a
+/// few scattered points that keeps clear of the boundary (its inside flag
+/// comes later, from build_inside).
+/// The lists of the leaves of a cell's block [x0, x0 + span)^2 (in
+/// leaves) into leaf_lists, each quarter's pruned from the block's.
+void RegionIndex::Impl::build_leaves(std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
+                                     const std::vector<std::uint32_t>& list) {
+  if (span == 1) {
+    leaf_lists[y0 * coarse[cell].split + x0] = list;
+    return;
   }
-  std::sort(listed.begin(), listed.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return std::pair{near[a], a} < std::pair{near[b], b}; });
-  return listed;
+  const std::uint32_t half_span = span / 2;
+  const double step = size / coarse[cell].split;
+  std::vector<std::uint32_t> quarter;
+  for (std::uint32_t dy = 0; dy < 2; ++dy)
+    for (std::uint32_t dx = 0; dx < 2; ++dx) {
+      const std::uint32_t x = x0 + dx * half_span, y = y0 + dy * half_span;
+      const Point c{ox + double(cell % nx) * size + (x + half_span / 2.0) * step,
+                    oy + double(cell / nx) * size + (y + half_span / 2.0) * step};
+      quarter.clear();
+      if (!windows[cell].wide) prune(c, half_span * step / 2 * (1 + 1e-9), list.data(), list.size(), quarter);
+      build_leaves(cell, x, y, half_span, quarter);
+    }
 }
 
-/// A leaf's candidates, capped; then its reference point: the first of a
-/// few scattered points that keeps clear of the boundary, with its inside
-/// flag from the ray test.
-void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y) {
+void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y, const std::vector<std::uint32_t>& list) {
   const std::size_t leaf = coarse[cell].first_leaf + y * coarse[cell].split + x;
   const double leaf_size = size / coarse[cell].split;
   const Point c = centre(cell % nx, cell / nx, coarse[cell].split, x, y);
-  double nearest = 0;
-  std::vector<std::uint32_t> listed = winners(c, leaf_size / 2, kRefineDepth, nearest);
+  const CellWindow& window = windows[cell];
+  const Point middle = centre(cell % nx, cell / nx, 1, 0, 0);
+  // A wide cell's leaves: no list, and a bound on the centre's distance for a start.
+  const double from_middle = std::hypot(c.x - middle.x, c.y - middle.y);
+  const std::vector<std::uint32_t> listed = leaf_window(cell, c, leaf_size / 2, 0, list.data(), list.size());
+  const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaves[leaf].nearest = float_above(nearest);
-  leaves[leaf].complete = listed.size() > kMaxCandidates ? float_below(near[listed[kMaxCandidates]]) : INFINITY;
-  listed.resize(std::min(listed.size(), kMaxCandidates));
-  for (std::size_t i = 0; i < listed.size(); ++i) {
+  leaves[leaf].complete = window.wide                       ? 0
+                          : listed.size() > kMaxCandidates ? float_below(near[listed[kMaxCandidates]])
+                                                           : INFINITY;
+  for (std::size_t i = 0; i < std::min(listed.size(), kMaxCandidates); ++i) {
     const Candidate entry{float_below(near[listed[i]]), listed[i]};
     if (i < kHead) leaves[leaf].head[i] = entry;
     else candidates.push_back(entry);
@@ -216,7 +220,9 @@ void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint3
     const double fx = 0.8 * std::fmod(0.5137 + 0.6180339887 * k, 1.0) - 0.4;
     const double fy = 0.8 * std::fmod(0.5291 + 0.7548776662 * k, 1.0) - 0.4;
     const Point q{c.x + fx * leaf_size, c.y + fy * leaf_size};
-    const double clearance = std::sqrt(leaf_nearest(leaf, c, q, ignored));
+    // Far from the boundary a lower bound settles it without a search.
+    const double at_least = (window.nearest - std::hypot(q.x - middle.x, q.y - middle.y)) * (1 - 1e-9);
+    const double clearance = at_least >= 1e-4 * leaf_size ? at_least : std::sqrt(leaf_nearest(leaf, c, q, ignored));
     if (clearance > clearest) clearest = clearance, ref = q;
   }
   for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m) {
@@ -225,7 +231,6 @@ void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint3
     covers[m].packed |= (left ? kRefLeft : 0) | (arc && in_lens(kernels[e], left, ref) ? kRefLens : 0) |
                         (arc ? kArc : 0) | (kernels[e].side > 0 ? kCcw : 0);
   }
-  leaves[leaf].inside = tree_ray_parity(ref);
 }
 
 RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_unique<Impl>()) {
@@ -254,11 +259,21 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_uniqu
   if (m.nx == 0) return;
   m.stamp.assign(m.segments.size(), 0);
   m.near.resize(m.segments.size());
+  m.build_windows();
   m.build_covers();
-  for (std::size_t cell = 0; cell < m.coarse.size(); ++cell)
-    for (std::uint32_t y = 0; y < m.coarse[cell].split; ++y)
-      for (std::uint32_t x = 0; x < m.coarse[cell].split; ++x) m.build_leaf(cell, x, y);
-  m.stamp = {}, m.near = {}, m.far2 = {}, m.scratch = {};
+  std::vector<std::uint32_t> list;
+  for (std::size_t cell = 0; cell < m.coarse.size(); ++cell) {
+    const Impl::CellWindow& w = m.windows[cell];
+    list.assign(m.window_elements.begin() + w.first, m.window_elements.begin() + w.first + w.count);
+    const std::uint32_t split = m.coarse[cell].split;
+    m.leaf_lists.resize(std::size_t(split) * split);
+    m.build_leaves(cell, 0, 0, split, list);
+    for (std::uint32_t y = 0; y < split; ++y)  // in order: each leaf's lists end the last's
+      for (std::uint32_t x = 0; x < split; ++x) m.build_leaf(cell, x, y, m.leaf_lists[y * split + x]);
+  }
+  m.build_inside();
+  m.stamp = {}, m.near = {}, m.far2 = {}, m.scratch = {}, m.windows = {}, m.window_elements = {},
+  m.cell_touches = {}, m.cell_touch_first = {}, m.leaf_lists = {};
 }
 
 }  // namespace tk::cad

@@ -23,9 +23,10 @@ constexpr double kLeafCovers = 1;           // elements touching a leaf, about
 constexpr double kLeafCandidates = 6;       // elements that may be nearest in a leaf, about
 constexpr double kMaxListSplit = 2;         // splits of a cell for that, at most
 constexpr std::size_t kMaxCandidates = 64;  // elements listed per leaf, at most
-constexpr int kRefineDepth = 3;             // quarterings of a leaf while pruning its list
+constexpr int kRefineDepth = 2;             // quarterings of a leaf while pruning its list
 constexpr std::size_t kRefineLimit = 1024;  // longer lists are not pruned
-constexpr std::size_t kWideWindow = 4 * kMaxCandidates;  // longer windows are not refined at all
+constexpr double kStuckShare = 0.75;        // a quarter keeping more of its parent's list is not quartered again
+constexpr std::size_t kWideWindow = 4 * kMaxCandidates;  // a cell with a longer window keeps no lists
 
 /// An element prepared for queries. Arcs live in their chord frame as in
 /// segment_geometry.cpp: local u along the chord from its midpoint, v
@@ -198,6 +199,20 @@ struct RegionIndex::Impl {
   std::vector<Leaf> leaves;
   std::vector<Candidate> candidates;
   std::vector<Cover> covers;
+  struct CellWindow {  // while building: the elements that may be nearest in a cell (region_index_cells.cpp)
+    std::uint32_t first = 0, count = 0;
+    double nearest = 0;  // the cell centre's distance to the boundary
+    bool wide = false;   // too many: the cell's leaves keep no list
+  };
+  std::vector<CellWindow> windows;
+  std::vector<std::uint32_t> window_elements;
+  std::vector<std::vector<std::uint32_t>> leaf_lists;  // while building: a cell's leaves' windows
+  std::vector<std::uint32_t> cell_touches, cell_touch_first;  // while building: the elements that may touch each cell
+  /// Each leaf's inside flag: the ray test at the first leaf of each row of
+  /// cells, then from leaf to leaf by the crossings of the segments joining
+  /// their reference points (as a query does from the reference point).
+  void build_inside();
+  bool chain_parity(Point from, Point to, const std::vector<std::uint32_t>& elements);
   double ox = 0, oy = 0, size = 1, inv_size = 1;
   std::size_t nx = 0, ny = 0;
 
@@ -207,13 +222,20 @@ struct RegionIndex::Impl {
   /// unfinished) as soon as there are more than `cap`.
   bool tree_within(Point p, double radius, std::vector<std::pair<double, std::uint32_t>>& out,
                    std::size_t cap = SIZE_MAX) const;
-  /// The k elements nearest to p (fewer when there are fewer), unordered.
-  void tree_k_nearest(Point p, std::size_t k, std::vector<std::pair<double, std::uint32_t>>& out) const;
   bool tree_ray_parity(Point p) const;
   void build_grid();
+  void build_windows();
+  void ask_block(std::size_t x0, std::size_t y0, std::size_t span);
+  void split_block(std::size_t x0, std::size_t y0, std::size_t span, std::vector<std::uint32_t>& list, double nearest);
+  /// Appends to `out` the elements of `in` that may be nearest to a point of
+  /// the square round c of half side `half`; returns c's distance to the nearest of them.
+  double prune(Point c, double half, const std::uint32_t* in, std::size_t count, std::vector<std::uint32_t>& out);
+  std::vector<std::uint32_t> leaf_window(std::size_t cell, Point c, double half, int depth, const std::uint32_t* window,
+                                         std::size_t count);
   void build_covers();
-  void build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y);
-  std::vector<std::uint32_t> winners(Point c, double half, int depth, double& nearest);
+  void build_leaves(std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
+                    const std::vector<std::uint32_t>& list);
+  void build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y, const std::vector<std::uint32_t>& list);
   void refine(Point q, double half, std::size_t begin, std::size_t end, int depth, std::vector<std::uint32_t>& out);
 
   // Scratch while building: a mark per element, distances from a centre,

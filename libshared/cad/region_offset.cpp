@@ -11,6 +11,8 @@
 #include <numbers>
 #include <optional>
 
+#include <ctime>
+
 #include "cad/segment_geometry.hpp"
 #include "cli/option_checks.hpp"
 #include "io/error.hpp"
@@ -333,6 +335,27 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
   return spans;
 }
 
+/// Adds the CPU seconds since the last call (or construction) to a stage's total.
+class StageClock {
+ public:
+  explicit StageClock(OffsetStageTimes* times) : times_(times), last_(now()) {}
+  void add(double OffsetStageTimes::*stage) {
+    if (!times_) return;
+    const double t = now();
+    times_->*stage += t - last_;
+    last_ = t;
+  }
+
+ private:
+  static double now() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + double(t.tv_nsec) * 1e-9;
+  }
+  OffsetStageTimes* times_;
+  double last_;
+};
+
 }  // namespace
 
 double offset_vertices_estimate(const std::vector<Loop>& loops, double tool_radius, double tolerance) {
@@ -371,6 +394,7 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     }
   cli::require_run_size(offset_vertices_estimate(drawn, options.tool_radius, options.tolerance), options.max_vertices,
                         "offset polygon vertices", "--tool-radius, --offset-tol and the drawing's arcs");
+  StageClock clock(options.stage_times);
   if (options.tool_radius == 0 || drawn.empty()) {
     result.loops = drawn;
   } else {
@@ -385,11 +409,13 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
       even_odd.AddPaths(paths, ClipperLib::ptSubject, true);
       even_odd.Execute(ClipperLib::ctUnion, paths, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
     }
+    clock.add(&OffsetStageTimes::even_odd_union);
     ClipperLib::ClipperOffset offsetter;
     offsetter.ArcTolerance = options.tolerance / kClipperUnitMm;
     offsetter.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
     ClipperLib::PolyTree tree;
     offsetter.Execute(tree, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm);
+    clock.add(&OffsetStageTimes::clipper_offset);
     const DrawingFeatures features(drawn, index);
     // Walk the tree: outer boundaries before their holes, depth from nesting.
     std::vector<std::pair<const ClipperLib::PolyNode*, int>> pending;
@@ -409,10 +435,13 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
       result.loops.push_back(std::move(loop));
       for (const ClipperLib::PolyNode* child : node->Childs) pending.push_back({child, self});
     }
+    clock.add(&OffsetStageTimes::exact_recovery);
   }
   // One index over the contour serves the uncut search here and the barrier points of guard_query.
   if (options.tool_radius > 0 && !result.loops.empty()) result.contour = std::make_unique<RegionIndex>(result.loops);
+  clock.add(&OffsetStageTimes::contour_index);
   result.uncut = find_uncut(drawn, result.contour.get(), options.tool_radius, options);
+  clock.add(&OffsetStageTimes::uncut);
   // Inside machining: the region is everything but the shrunk pocket, so the loops turn round
   // (the index does not care: its inside is even-odd and its distances have no direction).
   if (inside)

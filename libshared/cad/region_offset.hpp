@@ -26,6 +26,11 @@ namespace tk::cad {
 
 enum class MachiningSide { outside, inside };
 
+/// CPU seconds of each stage of offset_region (for the benchmark).
+struct OffsetStageTimes {
+  double even_odd_union = 0, clipper_offset = 0, exact_recovery = 0, contour_index = 0, uncut = 0;
+};
+
 struct OffsetOptions {
   double tool_radius = 0;          ///< mm, >= 0
   MachiningSide side = MachiningSide::outside;
@@ -34,6 +39,7 @@ struct OffsetOptions {
   /// The polygon stage's vertices (offset_vertices_estimate) beyond which
   /// the offset is refused before it starts (a usage error: dxf2region(1)).
   double max_vertices = 3e5;  // its time grows with them: a drawing estimated at 124,000 took 7 s
+  OffsetStageTimes* stage_times = nullptr;  ///< filled when given
 };
 
 /// The vertices the offset's polygon stage implies: chords within

@@ -131,13 +131,7 @@ void CanonInterpreter::execute(std::string_view text, std::size_t line_number, s
     command.expect({1});
     const double seconds = command.number(0);
     if (seconds < 0) throw Error(fmt::format("negative dwell time {:g}", seconds));
-    if (seconds > 0) {
-      Motion dwell;
-      dwell.kind = MotionKind::dwell;
-      dwell.start = dwell.end = position_;
-      dwell.duration = seconds;
-      out.push_back(dwell);
-    }
+    if (seconds > 0) out.push_back(dwell_at(position_, seconds, line_number));
   } else if (name == "SET_FEED_RATE") {
     command.expect({1});
     feed_ = command.number(0) * unit_;

@@ -86,6 +86,9 @@ struct Motion {
 /// extra turn.
 double arc_sweep(const Motion& arc);
 
+/// A dwell of `seconds` (> 0) where the machine stands; both interpreters' G4.
+Motion dwell_at(const Vec3& position, double seconds, std::size_t source_line);
+
 struct InterpreterOptions {
   bool lenient = false;  ///< skip unsupported motion words with a warning instead of failing
   /// Largest |coordinate| in mm accepted (beyond it the step counters could overflow).

@@ -21,6 +21,15 @@ constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
+Motion dwell_at(const Vec3& position, double seconds, std::size_t source_line) {
+  Motion dwell;
+  dwell.kind = MotionKind::dwell;
+  dwell.start = dwell.end = position;
+  dwell.duration = seconds;
+  dwell.source_line = source_line;
+  return dwell;
+}
+
 GcodeInterpreter::GcodeInterpreter(InterpreterOptions options) : options_(options), position_(options.start) {}
 
 void GcodeInterpreter::warn(const std::string& message) const {
@@ -48,14 +57,7 @@ void GcodeInterpreter::execute(const GcodeLine& line, std::size_t line_number, s
     if (!block.has('P')) throw Error("G4 (dwell) without a P word");
     const double seconds = block.take('P');
     if (seconds < 0) throw Error(fmt::format("negative dwell time P{:g}", seconds));
-    if (seconds > 0) {
-      Motion dwell;
-      dwell.kind = MotionKind::dwell;
-      dwell.start = dwell.end = position_;
-      dwell.duration = seconds;
-      dwell.source_line = line_number;
-      out.push_back(dwell);
-    }
+    if (seconds > 0) out.push_back(dwell_at(position_, seconds, line_number));
   }
   move(block, skip_motion, line_number, out);
   for (char letter = 'A'; letter <= 'Z'; ++letter)

@@ -1,43 +1,21 @@
 /// @file fft_squaring.cpp
 #include "primes/fft_squaring.hpp"
 
-#include <fftw3.h>
-
-#include "concurrency/fftw_planner.hpp"
-#include "io/error.hpp"
+#include "primes/fft_plans.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <map>
-#include <mutex>
-#include <string>
 
 namespace tk::primes {
-
-struct FftSquaring::Plans {
-  fftw_plan forward = nullptr;  // real -> half spectrum
-  fftw_plan inverse = nullptr;  // half spectrum -> real, unnormalised
-};
 
 namespace {
 
 __extension__ typedef unsigned __int128 u128;
-using Plans = FftSquaring::Plans;
 
 // A square whose worst rounding error passes this is redone by GMP: the
 // error of a correct rounding is far below it at the digit sizes chosen.
 constexpr double kMaxRoundoff = 0.4;
-
-// Lengths FFTW transforms fast: 2^a times 1, 3, 5, 7 or 9 (measured here;
-// factors like 11 cost half as much again).
-std::vector<std::size_t> transform_lengths() {
-  std::vector<std::size_t> lengths;
-  for (std::size_t power = 64; power <= (std::size_t{1} << 24); power *= 2)
-    for (std::size_t odd : {1, 3, 5, 7, 9}) lengths.push_back(odd * power);
-  std::sort(lengths.begin(), lengths.end());
-  return lengths;
-}
 
 // Largest digit size whose squares round safely at this length. Digits
 // are balanced (|d| <= 2^(b-1)), so a coefficient of the square sums about
@@ -53,48 +31,6 @@ int max_digit_bits(std::size_t length) {
   return std::min(exact, safe);
 }
 
-
-// FFTW_MEASURE times candidate plans: up to a few seconds at the largest
-// lengths, worth it for proofs of minutes, where it is 10-30% faster than
-// FFTW_ESTIMATE here. Shorter lengths estimate (a hundredth of a second),
-// so one small proof does not pay seconds of planning.
-constexpr std::size_t kMeasureFromLength = 8192;
-
-// The plans live until exit, then go back to FFTW (leak checkers see
-// memory that only a destroyed map pointed to as lost).
-struct PlanCache {
-  std::map<std::size_t, Plans> plans;
-  ~PlanCache() {
-    for (auto& [length, pair] : plans) {
-      fftw_destroy_plan(pair.forward);
-      fftw_destroy_plan(pair.inverse);
-    }
-    fftw_cleanup();
-  }
-};
-
-const Plans* plans_for(std::size_t length) {
-  static PlanCache plan_cache;
-  auto& cache = plan_cache.plans;
-  std::lock_guard lock(fftw_planner_mutex());
-  static const bool system_wisdom = fftw_import_system_wisdom() != 0;  // /etc/fftw/wisdom, if the admin made one
-  (void)system_wisdom;
-  auto found = cache.find(length);
-  if (found != cache.end()) return &found->second;
-  // Planning may overwrite its arrays: plan on scratch arrays, then execute
-  // on each squarer's own (allocated alike, so aligned alike).
-  double* real = fftw_alloc_real(length);
-  fftw_complex* spectrum = fftw_alloc_complex(length / 2 + 1);
-  const int n = static_cast<int>(length);
-  const unsigned flags = length >= kMeasureFromLength ? FFTW_MEASURE : FFTW_ESTIMATE;
-  Plans plans;
-  plans.forward = fftw_plan_dft_r2c_1d(n, real, spectrum, flags);
-  plans.inverse = fftw_plan_dft_c2r_1d(n, spectrum, real, flags);
-  fftw_free(real);
-  fftw_free(spectrum);
-  if (!plans.forward || !plans.inverse) throw Error("FFTW could not plan a transform of length " + std::to_string(length));
-  return &cache.emplace(length, plans).first->second;
-}
 
 std::size_t digits_for(std::size_t bits, int digit_bits) {
   return (bits + static_cast<std::size_t>(digit_bits) - 1) / static_cast<std::size_t>(digit_bits) + 1;
@@ -122,7 +58,7 @@ bool supported(const SpecialForm& form) {
 std::unique_ptr<FftSquaring> FftSquaring::create(const SpecialForm& form) {
   if (!supported(form)) return nullptr;
   const std::size_t bits = bits_of(form);
-  for (std::size_t length : transform_lengths())
+  for (std::size_t length : fast_fft_lengths())
     for (int b = 8; b <= max_digit_bits(length); ++b)
       if (2 * digits_for(bits, b) - 1 <= length) return std::unique_ptr<FftSquaring>(new FftSquaring(form, length, b));
   return nullptr;
@@ -153,7 +89,7 @@ FftSquaring::FftSquaring(const SpecialForm& form, std::size_t length, int digit_
   digit_buffer_.assign(2 * digits_ + 64, 0);  // zeros past the top for the packing
   real_ = fftw_alloc_real(length_);
   spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
-  plans_ = plans_for(length_);
+  plans_ = real_fft_plans(length_);
 }
 
 FftSquaring::~FftSquaring() {
@@ -210,14 +146,7 @@ void FftSquaring::split_into_digits() {
 }
 
 bool FftSquaring::square_by_fft() {
-  auto* spectrum = static_cast<fftw_complex*>(spectrum_);
-  fftw_execute_dft_r2c(plans_->forward, real_, spectrum);
-  for (std::size_t j = 0; j <= length_ / 2; ++j) {
-    const double re = spectrum[j][0], im = spectrum[j][1];
-    spectrum[j][0] = re * re - im * im;
-    spectrum[j][1] = 2.0 * re * im;
-  }
-  fftw_execute_dft_c2r(plans_->inverse, spectrum, real_);
+  square_by_real_fft(*plans_, real_, static_cast<fftw_complex*>(spectrum_), real_, length_);
 
   // Round each coefficient and carry: a coefficient is below 2^51 and the
   // running carry below 2^(52-b), so their sum fits 64 bits and its low b

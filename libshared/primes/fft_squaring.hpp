@@ -23,6 +23,8 @@
 
 namespace tk::primes {
 
+struct RealFftPlans;
+
 class FftSquaring {
  public:
   /// Nothing when the form is not k*2^n +- 1 or N is too large for double
@@ -46,8 +48,6 @@ class FftSquaring {
   double worst_roundoff() const { return worst_roundoff_; }
   std::uint64_t fallbacks() const { return fallbacks_; }
 
-  struct Plans;  ///< FFTW's plans for one length, shared by every squarer
-
  private:
   FftSquaring(const SpecialForm& form, std::size_t length, int digit_bits);
 
@@ -64,7 +64,7 @@ class FftSquaring {
   std::vector<std::uint64_t> digit_buffer_;  ///< the square's digits after carrying
   double* real_ = nullptr;    ///< FFTW-aligned, length_
   void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex
-  const Plans* plans_ = nullptr;
+  const RealFftPlans* plans_ = nullptr;
   std::uint64_t square_at_one_ = 0, square_at_minus_one_ = 0;
   double worst_roundoff_ = 0;
   std::uint64_t fallbacks_ = 0;

@@ -5,7 +5,10 @@
 
 #include "io/error.hpp"
 #include "primes/fft_squaring.hpp"
+#include "primes/gerbicz_check.hpp"
+#include "primes/jacobi_check.hpp"
 #include "primes/modulus.hpp"
+#include "primes/weighted_squaring.hpp"
 
 namespace tk::primes {
 
@@ -49,12 +52,14 @@ bool square_rounds_gmp(const Modulus& N, ProofState& state, std::uint64_t last, 
   return true;
 }
 
-bool square_rounds_fft(FftSquaring& fft, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
-  fft.load(state.value);
-  for (; state.iteration < last; ++state.iteration) {
-    if (reports_now(state, options)) {
+template <class Squarer>
+bool square_rounds_fft(Squarer& fft, std::uint64_t& iteration, std::uint64_t last, long minus, const ProofOptions& options,
+                       bool report) {
+  for (; iteration < last; ++iteration) {
+    if (report && iteration % options.report_every == 0 && iteration) {
       const bool cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
       if (options.progress) {
+        ProofState state{iteration, {}};
         fft.store(state.value);
         if (!options.progress(state)) return false;
       }
@@ -62,8 +67,34 @@ bool square_rounds_fft(FftSquaring& fft, ProofState& state, std::uint64_t last, 
     }
     fft.square_minus(static_cast<unsigned long>(minus));
   }
-  fft.store(state.value);
   return true;
+}
+
+/// Proth's squarings (minus 0) go through Gerbicz's check, LLR's (x^2 - 2)
+/// through the Jacobi check of the Lucas sequence.
+template <class Squarer>
+bool square_rounds_fft(Squarer& fft, const Modulus& N, ProofState& state, std::uint64_t last, long minus,
+                       const ProofOptions& options, ProofResult& result) {
+  if (options.report_every == 0) {
+    ProofOptions quiet = options;
+    quiet.report_every = std::uint64_t{1} << 62;
+    return square_rounds_fft(fft, N, state, last, minus, quiet, result);
+  }
+  CheckedSquarer squarer;
+  squarer.square_to = [&](std::uint64_t& iteration, std::uint64_t to, bool report) {
+    return square_rounds_fft(fft, iteration, to, minus, options, report);
+  };
+  squarer.load = [&](const mpz_class& x) { fft.load(x); };
+  squarer.store = [&](mpz_class& x) { fft.store(x); };
+  // A resumed LLR may start at iteration 0 only from u_0, which the
+  // Jacobi identity does not cover: its first check comes after squarings.
+  const GerbiczOutcome outcome =
+      minus != 0 ? jacobi_checked_squarings(squarer, N.value(), state.value, state.iteration, last, kJacobiCheckEvery,
+                                            options.corrupt_for_tests)
+                 : gerbicz_squarings(squarer, N, state.value, state.iteration, last,
+                                     gerbicz_plan(last - state.iteration), options.corrupt_for_tests);
+  result.check_restarts = outcome.restarts;
+  return outcome.finished;
 }
 
 /// Runs the rounds in the arithmetic the options ask for; the value enters
@@ -71,15 +102,19 @@ bool square_rounds_fft(FftSquaring& fft, ProofState& state, std::uint64_t last, 
 bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options,
                    ProofResult& result) {
   N.reduce(state.value.get_mpz_t());
-  std::unique_ptr<FftSquaring> fft;
-  if (options.arithmetic == Arithmetic::fft || (options.arithmetic == Arithmetic::automatic && N.bits() >= kFftMinBits)) {
-    fft = FftSquaring::create(*N.form());  // nothing for n < 64: GMP squares those
-  }
-  if (!fft) return square_rounds_gmp(N, state, last, minus, options);
-  const bool finished = square_rounds_fft(*fft, state, last, minus, options);
-  result.fft_length = fft->transform_length();
-  result.fft_fallbacks = fft->fallbacks();
-  return finished;
+  if (options.arithmetic == Arithmetic::gmp || (options.arithmetic == Arithmetic::automatic && N.bits() < kFftMinBits))
+    return square_rounds_gmp(N, state, last, minus, options);
+  // The weighted transform where k fits it (k < 2^56), else the padded FFT
+  // with GMP's reduction; neither for n < 64: GMP squares those.
+  auto run = [&](auto& squarer) {
+    const bool finished = square_rounds_fft(squarer, N, state, last, minus, options, result);
+    result.fft_length = squarer.transform_length();
+    result.fft_fallbacks = squarer.fallbacks();
+    return finished;
+  };
+  if (auto weighted = WeightedSquaring::create(*N.form())) return run(*weighted);
+  if (auto fft = FftSquaring::create(*N.form())) return run(*fft);
+  return square_rounds_gmp(N, state, last, minus, options);
 }
 
 std::uint64_t low_64_bits(const mpz_class& value) {

@@ -52,6 +52,10 @@ struct ProofOptions {
   std::optional<ProofState> resume_from;
   std::function<void(const std::string& why)> resume_rejected;
   Arithmetic arithmetic = Arithmetic::automatic;
+  /// Tests only: called with the value at each end of a Gerbicz block (Proth)
+  /// or before each Jacobi check (LLR) of a proof on the FFT; may alter it
+  /// (an injected error) and says so.
+  std::function<bool(std::uint64_t iteration, mpz_class& value)> corrupt_for_tests;
 };
 
 struct ProofResult {
@@ -61,6 +65,7 @@ struct ProofResult {
   std::uint64_t iterations = 0;
   std::size_t fft_length = 0;     ///< 0 when GMP squared
   std::uint64_t fft_fallbacks = 0;  ///< squares the FFT failed to verify, redone by GMP
+  std::uint64_t check_restarts = 0;  ///< on the FFT: failed Gerbicz (Proth) or Jacobi (LLR) checks, redone from the last verified state
 };
 
 /// P for k*2^n-1 as `start` chooses it; nothing when no P up to a bound

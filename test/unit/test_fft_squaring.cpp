@@ -1,9 +1,8 @@
 /// @file test_fft_squaring.cpp
 /// @brief The FFT squaring against GMP's mpz arithmetic (x^2 - m mod N
 /// computed directly): random values, chains of squarings, the edge values
-/// 0, 1, 2 and N-1, both forms k*2^n-1 and k*2^n+1, limb-aligned n; and
-/// the safety net: digits too wide to round correctly must be caught and
-/// redone, never give a wrong square.
+/// 0, 1, 2 and N-1, both forms k*2^n-1 and k*2^n+1, limb-aligned n. The
+/// safety net is in test_squaring_safety.cpp.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -11,33 +10,16 @@
 
 #include "primes/fft_squaring.hpp"
 #include "primes/riesel_proof.hpp"
+#include "squaring_chain.hpp"
 
 namespace {
 
 using namespace tk::primes;
 
-mpz_class value_of(const SpecialForm& form) {
-  mpz_class N = form.k;
-  N <<= static_cast<mp_bitcnt_t>(form.n);
-  return N + form.c;
-}
-
-mpz_class square_minus_directly(const mpz_class& x, unsigned long minus, const mpz_class& N) {
-  mpz_class r = x * x - minus;
-  mpz_mod(r.get_mpz_t(), r.get_mpz_t(), N.get_mpz_t());
-  return r;
-}
+using squaring_test::value_of;
 
 void expect_chain_matches(FftSquaring& fft, const SpecialForm& form, mpz_class x, unsigned long minus, int rounds) {
-  const mpz_class N = value_of(form);
-  fft.load(x);
-  for (int round = 0; round < rounds; ++round) {
-    fft.square_minus(minus);
-    x = square_minus_directly(x, minus, N);
-    mpz_class got;
-    fft.store(got);
-    ASSERT_EQ(got, x) << form.k << "*2^" << form.n << (form.c > 0 ? "+1" : "-1") << " round " << round;
-  }
+  squaring_test::expect_chain_matches(fft, form, x, minus, rounds);
 }
 
 TEST(FftSquaring, MatchesGmpOnRandomValuesOfBothForms) {
@@ -80,37 +62,6 @@ TEST(FftSquaring, LargeNumberPicksALengthAndDigitsThatRoundSafely) {
   random.seed(7);
   expect_chain_matches(*fft, form, random.get_z_range(value_of(form)), 2, 4);
   EXPECT_EQ(fft->fallbacks(), 0u);
-}
-
-TEST(FftSquaring, DigitsTooWideAreCaughtAndRedoneByGmp) {
-  // 30-bit digits at length 4096: coefficients near 2^67, far past a
-  // double's 53 bits, so nearly every square rounds wrongly. Every one must
-  // be caught and redone, and the chain must still equal GMP's.
-  const SpecialForm form{778965587811ull, 40000, -1};
-  auto fft = FftSquaring::create_with(form, 4096, 30);
-  ASSERT_NE(fft, nullptr);
-  gmp_randclass random(gmp_randinit_default);
-  random.seed(11);
-  expect_chain_matches(*fft, form, random.get_z_range(value_of(form)), 2, 10);
-  EXPECT_EQ(fft->fallbacks(), 10u);
-}
-
-TEST(FftSquaring, BorderlineDigitsStillNeverGiveAWrongSquare) {
-  // 23-bit digits at length 8192: errors near 0.5, some squares caught and
-  // some (correctly) kept; whatever the split, the values must be GMP's.
-  const SpecialForm form{3, 90000, 1};
-  auto fft = FftSquaring::create_with(form, 8192, 23);
-  ASSERT_NE(fft, nullptr);
-  gmp_randclass random(gmp_randinit_default);
-  random.seed(12);
-  expect_chain_matches(*fft, form, random.get_z_range(value_of(form)), 0, 30);
-}
-
-TEST(FftSquaring, RefusesFormsItCannotReduce) {
-  EXPECT_EQ(FftSquaring::create(SpecialForm{3, 63, -1}), nullptr);  // n < 64: GMP's job
-  EXPECT_EQ(FftSquaring::create(SpecialForm{4, 1000, -1}), nullptr);  // even k
-  EXPECT_EQ(FftSquaring::create(SpecialForm{3, 1000, 5}), nullptr);   // c other than +-1
-  EXPECT_EQ(FftSquaring::create_with(SpecialForm{3, 10000, -1}, 512, 16), nullptr);  // would wrap
 }
 
 TEST(FftSquaring, ProofsAgreeAcrossArithmetics) {

@@ -16,10 +16,12 @@
 #include "cad/region_distance.hpp"
 #include "cad/segment_geometry.hpp"
 #include "io/error.hpp"
+#include "region_probe.hpp"
 
 namespace {
 
 using namespace tk::cad;
+using probe::Comparison, probe::compare, probe::probe_points;
 constexpr double kPi = std::numbers::pi;
 
 Segment line(Point a, Point b, std::uint32_t entity = 0) {
@@ -389,54 +391,6 @@ std::vector<Segment> star(std::mt19937_64& random, Point c, double radius, int n
   return loop;
 }
 
-struct Comparison {
-  std::size_t points = 0, sign_checked = 0;
-};
-
-Comparison compare(const std::vector<Loop>& loops, const std::vector<Point>& points) {
-  const RegionIndex index(loops);
-  Comparison result;
-  for (const Point& p : points) {
-    const RegionQuery fast = index.query(p), slow = brute_force_query(loops, p);
-    const double tolerance = 1e-12 * std::max(1.0, std::abs(slow.distance));
-    ++result.points;
-    EXPECT_NEAR(std::abs(fast.distance), std::abs(slow.distance), tolerance) << p.x << ' ' << p.y;
-    EXPECT_NEAR(dist(fast.nearest, p), std::abs(fast.distance), 1e-9 * std::max(1.0, std::abs(slow.distance)));
-    EXPECT_LT(fast.element, index.elements().size());
-    if (std::abs(slow.distance) >= 1e-9) {
-      ++result.sign_checked;
-      EXPECT_EQ(fast.inside(), slow.inside()) << p.x << ' ' << p.y << " at " << slow.distance;
-    }
-    if (testing::Test::HasFailure()) break;  // one report is enough
-  }
-  return result;
-}
-
-/// Random points in the loops' box enlarged by 10 %, every vertex, points
-/// on edges, and points a hair off edges.
-std::vector<Point> probe_points(std::mt19937_64& random, const std::vector<Loop>& loops, std::size_t count) {
-  Box box = bounding_box(loops[0].segments[0]);
-  for (const Loop& l : loops)
-    for (const Segment& s : l.segments) {
-      const Box b = bounding_box(s);
-      box = {std::min(box.min_x, b.min_x), std::min(box.min_y, b.min_y), std::max(box.max_x, b.max_x),
-             std::max(box.max_y, b.max_y)};
-    }
-  const double mx = 0.05 * (box.max_x - box.min_x), my = 0.05 * (box.max_y - box.min_y);
-  std::uniform_real_distribution<double> x(box.min_x - mx, box.max_x + mx), y(box.min_y - my, box.max_y + my);
-  std::uniform_real_distribution<double> t(0, 1), off(-1, 1);
-  std::vector<Point> points;
-  for (std::size_t i = 0; i < count; ++i) points.push_back({x(random), y(random)});
-  for (const Loop& l : loops)
-    for (const Segment& s : l.segments) {
-      points.push_back(s.start);
-      points.push_back(point_at(s, t(random)));
-      const Point on = point_at(s, t(random)), tangent = tangent_at(s, 0.5);
-      for (double h : {1e-12, 1e-8, 1e-4})
-        points.push_back({on.x - tangent.y * h * off(random), on.y + tangent.x * h * off(random)});
-    }
-  return points;
-}
 
 TEST(Loops, RandomPartsComeBackWhole) {
   // Stars with arcs, holes and islands, cut into segments that are

@@ -1,0 +1,158 @@
+/// @file region_index_cells.cpp
+/// @brief Each grid cell's window: the elements that may be nearest to one
+/// of its points, found top down so that the build grows as n log n.
+///
+/// An element that is nearest to a point p of a square of half side h
+/// around c lies within d(c) + 2 sqrt(2) h of c (|e - c| <= |e - p| + |p - c|
+/// <= d(p) + sqrt(2) h <= d(c) + 2 sqrt(2) h). Applied to a block of cells
+/// with the box tree, then to its quarters with the block's list only (the
+/// nearest to a quarter's centre is in it), down to the cells, each element
+/// is examined a few times per level instead of once per cell. A block
+/// whose window holds more than kWideWindow elements (deep inside a finely
+/// divided outline, where many are nearly equidistant) is asked again
+/// quarter by quarter; a cell that still has that many is wide: its
+/// leaves keep no list and their queries use the tree.
+#include <algorithm>
+#include <cmath>
+
+#include "cad/region_index_impl.hpp"
+
+namespace tk::cad {
+
+namespace {
+constexpr std::size_t kBlockCells = 8;  // side of the blocks first asked of the tree, in cells
+}
+
+double RegionIndex::Impl::prune(Point c, double half, const std::uint32_t* in, std::size_t count,
+                                std::vector<std::uint32_t>& out) {
+  far2.resize(std::max(far2.size(), count));
+  double nearest2 = kInf;
+  for (std::size_t i = 0; i < count; ++i) nearest2 = std::min(nearest2, far2[i] = distance2(kernels[in[i]], c));
+  const double nearest = std::sqrt(nearest2);
+  const double reach = (nearest + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
+  for (std::size_t i = 0; i < count; ++i)
+    if (far2[i] <= reach * reach) out.push_back(in[i]);
+  return nearest;
+}
+
+/// Cells [x0, x0 + span) x [y0, y0 + span) from `list`, their block's window.
+void RegionIndex::Impl::split_block(std::size_t x0, std::size_t y0, std::size_t span, std::vector<std::uint32_t>& list,
+                                    double nearest) {
+  if (span == 1) {
+    CellWindow& w = windows[y0 * nx + x0];
+    w.first = static_cast<std::uint32_t>(window_elements.size()), w.count = static_cast<std::uint32_t>(list.size());
+    w.nearest = nearest;
+    window_elements.insert(window_elements.end(), list.begin(), list.end());
+    return;
+  }
+  const std::size_t half_span = span / 2;
+  std::vector<std::uint32_t> quarter;
+  for (std::size_t dy = 0; dy < 2; ++dy)
+    for (std::size_t dx = 0; dx < 2; ++dx) {
+      const std::size_t x = x0 + dx * half_span, y = y0 + dy * half_span;
+      if (x >= nx || y >= ny) continue;
+      quarter.clear();
+      const Point c{ox + (double(x) + double(half_span) / 2) * size, oy + (double(y) + double(half_span) / 2) * size};
+      const double d = prune(c, double(half_span) * size / 2, list.data(), list.size(), quarter);
+      split_block(x, y, half_span, quarter, d);
+    }
+}
+
+/// The block's window from the tree; quartered when too wide.
+void RegionIndex::Impl::ask_block(std::size_t x0, std::size_t y0, std::size_t span) {
+  if (x0 >= nx || y0 >= ny) return;
+  const Point c{ox + (double(x0) + double(span) / 2) * size, oy + (double(y0) + double(span) / 2) * size};
+  double best2 = kInf;
+  std::uint32_t best = 0;
+  tree_nearest(c, best2, best);
+  const double nearest = std::sqrt(best2);
+  const double reach = (nearest + std::sqrt(2.0) * double(span) * size) * (1 + 1e-9);
+  std::vector<std::pair<double, std::uint32_t>> found;
+  if (tree_within(c, reach, found, kWideWindow)) {
+    std::vector<std::uint32_t> list;
+    list.reserve(found.size());
+    for (const auto& entry : found) list.push_back(entry.second);
+    split_block(x0, y0, span, list, nearest);
+  } else if (span > 1) {
+    const std::size_t half_span = span / 2;
+    for (std::size_t dy = 0; dy < 2; ++dy)
+      for (std::size_t dx = 0; dx < 2; ++dx) ask_block(x0 + dx * half_span, y0 + dy * half_span, half_span);
+  } else {
+    CellWindow& w = windows[y0 * nx + x0];
+    w.wide = true, w.nearest = nearest;
+  }
+}
+
+void RegionIndex::Impl::build_windows() {
+  windows.assign(nx * ny, CellWindow{});
+  for (std::size_t y = 0; y < ny; y += kBlockCells)
+    for (std::size_t x = 0; x < nx; x += kBlockCells) ask_block(x, y, kBlockCells);
+}
+
+/// The elements of `window` (a list for a square holding this one) that
+/// may be nearest to a point of the square round c of half side `half`
+/// inside `cell`, pruned by refine() from `depth` on;
+/// sorted by distance from c (left in near[]). Empty for a wide cell.
+std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(std::size_t cell, Point c, double half, int depth,
+                                                          const std::uint32_t* window, std::size_t count) {
+  std::vector<std::uint32_t> listed;
+  if (windows[cell].wide) return listed;
+  scratch.assign(window, window + count);
+  ++mark;
+  refine(c, half, 0, scratch.size(), depth, listed);
+  for (std::uint32_t e : listed) near[e] = std::sqrt(distance2(kernels[e], c));
+  std::sort(listed.begin(), listed.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return std::pair{near[a], a} < std::pair{near[b], b}; });
+  return listed;
+}
+
+/// Crossing parity of the segment from `from` to `to` with `elements`
+/// (each counted once): the query's test, with `from` as the reference point.
+bool RegionIndex::Impl::chain_parity(Point from, Point to, const std::vector<std::uint32_t>& elements) {
+  bool odd = false;
+  ++mark;
+  for (const std::uint32_t e : elements) {
+    if (stamp[e] == mark) continue;
+    stamp[e] = mark;
+    const Kernel& k = kernels[e];
+    const Point a = ends[2 * e], b = ends[2 * e + 1];
+    const bool arc = k.side != 0, from_left = left_of(a, b, from);
+    odd ^= segment_parity(k, a, b, arc, k.side > 0, from, to, from_left, arc && in_lens(k, from_left, from));
+  }
+  return odd;
+}
+
+void RegionIndex::Impl::build_inside() {
+  std::vector<std::uint32_t> elements;
+  const auto add_cell = [&](std::size_t cell) {
+    elements.insert(elements.end(), cell_touches.begin() + cell_touch_first[cell], cell_touches.begin() + cell_touch_first[cell + 1]);
+  };
+  const auto add_leaf = [&](std::size_t leaf) {
+    for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m) elements.push_back(covers[m].packed & kElementBits);
+  };
+  // Two neighbouring squares of one size make a rectangle: the segment
+  // joining points of theirs stays in it, so only their elements can cross it.
+  const auto follow = [&](std::size_t from, std::size_t to) {
+    leaves[to].inside = leaves[from].inside != chain_parity(leaves[from].ref, leaves[to].ref, elements);
+  };
+  for (std::size_t y = 0; y < ny; ++y)
+    for (std::size_t x = 0; x < nx; ++x) {
+      const std::size_t cell = y * nx + x, first = coarse[cell].first_leaf, split = coarse[cell].split;
+      if (x == 0) {
+        leaves[first].inside = tree_ray_parity(leaves[first].ref);
+      } else {
+        elements.clear();
+        add_cell(cell - 1), add_cell(cell);
+        follow(coarse[cell - 1].first_leaf, first);
+      }
+      for (std::size_t j = 0; j < split; ++j)
+        for (std::size_t i = j == 0 ? 1 : 0; i < split; ++i) {
+          const std::size_t leaf = first + j * split + i, from = i > 0 ? leaf - 1 : leaf - split;
+          elements.clear();
+          add_leaf(from), add_leaf(leaf);
+          follow(from, leaf);
+        }
+    }
+}
+
+}  // namespace tk::cad

@@ -1,0 +1,222 @@
+/// @file weighted_squaring_setup.cpp
+/// @brief WeightedSquaring's choice of length and digits, its tables, and
+/// the conversions between GMP integers and its digits.
+#include <fftw3.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <ctime>
+#include <vector>
+
+#include "primes/fft_plans.hpp"
+#include "primes/weighted_squaring.hpp"
+#include "primes/weighted_squaring_detail.hpp"
+
+namespace tk::primes {
+
+namespace {
+
+using namespace weighted_detail;
+
+constexpr unsigned kMaxKBits = 56;
+
+// The largest average digit size whose squares round safely at this
+// length. Measured here on random balanced digits of one size (44-bit k,
+// L from 64 to 2^18): the worst rounding error grows 4x per digit bit and
+// about 1.25x per doubled length, and this rule keeps it near 0.05. Mixed
+// sizes (the weights) roughly double it: 0.125 at L = 18432 (n = 171960,
+// 20.3 bits), 0.156 at L = 3584 (n = 36627); 0.4 is what is checked.
+double max_average_bits(std::size_t length) { return 25.0 - 0.31 * std::log2(static_cast<double>(length)); }
+
+bool supported(const SpecialForm& form) {
+  return form.n >= 64 && (form.c == 1 || form.c == -1) && form.k % 2 == 1 && std::bit_width(form.k) <= kMaxKBits;
+}
+
+// Digits above 2^n: the folded value is below about 2^(n + kbits + 2),
+// and its square must fit below digit 2(m + t) - 1, at 2^(2n + e_(2t-1)).
+std::size_t top_digits(const SpecialForm& form, std::size_t low_digits) {
+  const double average = static_cast<double>(form.n) / static_cast<double>(low_digits);
+  const double kbits = std::bit_width(form.k);
+  return static_cast<std::size_t>(std::ceil((kbits + 3.0) / average + 0.5));
+}
+
+std::size_t low_digits_for(std::uint64_t n, double bits) {
+  return static_cast<std::size_t>(std::ceil(static_cast<double>(n) / bits));
+}
+
+mpz_class modulus_of(const SpecialForm& form) {
+  mpz_class N = form.k;
+  N <<= static_cast<mp_bitcnt_t>(form.n);
+  return N + form.c;
+}
+
+bool fast_fft_lengths_contain(std::size_t length) {
+  const auto& lengths = fast_fft_lengths();
+  return std::binary_search(lengths.begin(), lengths.end(), length);
+}
+
+// Which FFTW length is fastest depends on its factors in ways no simple
+// rule captured here (15*2^a and 135*2^a are sometimes faster than the
+// shorter 2^a and 9*2^a, sometimes slower). From this length on, the
+// first few that fit are timed on a few squarings (a few milliseconds, with
+// plans estimated in microseconds), and the fastest is kept.
+constexpr std::size_t kTimeFromLength = 8192;
+constexpr std::size_t kTimedCandidates = 3;
+constexpr int kTimingTurns = 4, kSquaringsPerTurn = 8;
+
+const std::vector<std::size_t>& candidate_lengths() {
+  static const std::vector<std::size_t> lengths = [] {
+    std::vector<std::size_t> all = fast_fft_lengths();
+    for (std::size_t power = 64; power <= (std::size_t{1} << 22); power *= 2)
+      for (std::size_t odd : {15, 27, 135})
+        if (odd * power >= kTimeFromLength) all.push_back(odd * power);
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    return all;
+  }();
+  return lengths;
+}
+
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
+
+double seconds_for_squarings(WeightedSquaring& squarer, int count) {
+  const double start = thread_cpu_seconds();
+  for (int i = 0; i < count; ++i) squarer.square_minus(2);
+  return thread_cpu_seconds() - start;
+}
+
+// The fastest of the candidates: each is timed in short turns, taken in
+// rotation, and judged by its best turn, which other jobs on the machine
+// disturb least (one long turn each picked the slower length at times).
+std::unique_ptr<WeightedSquaring> fastest(std::vector<std::unique_ptr<WeightedSquaring>> candidates, const mpz_class& N) {
+  if (candidates.size() == 1) return std::move(candidates.front());
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(23);
+  const mpz_class x = random.get_z_range(N);
+  std::vector<double> best(candidates.size(), 1e300);
+  for (auto& candidate : candidates) {
+    candidate->load(x);
+    seconds_for_squarings(*candidate, 4);  // caches and pages warm
+  }
+  for (int turn = 0; turn < kTimingTurns; ++turn)
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      best[i] = std::min(best[i], seconds_for_squarings(*candidates[i], kSquaringsPerTurn));
+  const auto winner = std::min_element(best.begin(), best.end()) - best.begin();
+  return std::move(candidates[static_cast<std::size_t>(winner)]);
+}
+
+}  // namespace
+
+std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& form) {
+  if (!supported(form)) return nullptr;
+  std::vector<std::unique_ptr<WeightedSquaring>> candidates;
+  for (std::size_t length : candidate_lengths()) {
+    const bool short_length = length < kTimeFromLength;
+    if (short_length && !fast_fft_lengths_contain(length)) continue;
+    const std::size_t low = low_digits_for(form.n, max_average_bits(length));
+    if (2 * (low + top_digits(form, low)) - 1 > length) continue;
+    candidates.emplace_back(new WeightedSquaring(form, length, low));
+    if (short_length || candidates.size() == kTimedCandidates) break;
+  }
+  if (candidates.empty()) return nullptr;
+  auto chosen = fastest(std::move(candidates), modulus_of(form));
+  chosen->load(0);
+  return chosen;
+}
+
+std::unique_ptr<WeightedSquaring> WeightedSquaring::create_with(const SpecialForm& form, std::size_t length, int digit_bits) {
+  if (!supported(form) || digit_bits < 4 || digit_bits > 40 || length % 2 != 0) return nullptr;
+  const std::size_t low = low_digits_for(form.n, digit_bits);
+  if (2 * (low + top_digits(form, low)) - 1 > length) return nullptr;
+  return std::unique_ptr<WeightedSquaring>(new WeightedSquaring(form, length, low));
+}
+
+WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits)
+    : form_(form), length_(length), low_digits_(low_digits) {
+  digits_ = low_digits + top_digits(form, low_digits);
+  coefficients_ = 2 * digits_ - 1;
+  const std::uint64_t n = form.n, m = low_digits;
+  exponent_.resize(coefficients_ + 1);
+  for (std::size_t j = 0; j <= coefficients_; ++j) exponent_[j] = (n * j + m - 1) / m;  // ceil(n*j/m)
+  bits_.resize(coefficients_);
+  rotation_.resize(coefficients_);
+  output_weight_.resize(coefficients_);
+  input_weight_.resize(digits_);
+  for (std::size_t j = 0; j < coefficients_; ++j) {
+    bits_[j] = static_cast<std::uint8_t>(exponent_[j + 1] - exponent_[j]);
+    max_digit_bits_ = std::max<int>(max_digit_bits_, bits_[j]);
+    rotation_[j] = static_cast<std::uint8_t>(exponent_[j] % 61);
+    // e_j - n*j/m = (e_j*m - n*j)/m, exactly in integers, in [0, 1).
+    const auto excess = static_cast<long double>(exponent_[j] * m - n * j) / static_cast<long double>(m);
+    output_weight_[j] = static_cast<double>(std::exp2(-excess) / static_cast<long double>(length));
+    if (j < digits_) input_weight_[j] = static_cast<double>(std::exp2(excess));
+  }
+  coefficient_.assign(coefficients_, 0);
+  modulus_mod_p_ = mpz_fdiv_ui(modulus_of(form).get_mpz_t(), kP61);
+  high_limbs_ = (exponent_[coefficients_] - n) / 64 + 2;
+  high_.assign(high_limbs_ + 1, 0);
+  quotient_.assign(high_limbs_ + 3, 0);  // zeros past the end for reading two limbs at a time
+  input_ = fftw_alloc_real(length_);
+  output_ = fftw_alloc_real(length_);
+  spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
+  std::fill(input_, input_ + length_, 0.0);
+  plans_ = real_fft_plans(length_);
+}
+
+WeightedSquaring::~WeightedSquaring() {
+  fftw_free(input_);
+  fftw_free(output_);
+  fftw_free(spectrum_);
+}
+
+void WeightedSquaring::load(const mpz_class& x) {
+  mpz_class value;
+  mpz_mod(value.get_mpz_t(), x.get_mpz_t(), modulus_of(form_).get_mpz_t());
+  std::vector<mp_limb_t> limbs(form_.n / 64 + 4, 0);
+  mpz_export(limbs.data(), nullptr, -1, sizeof(mp_limb_t), 0, 0, value.get_mpz_t());
+  for (std::size_t j = 0; j < low_digits_; ++j)
+    coefficient_[j] = static_cast<std::int64_t>(bits_at(limbs.data(), exponent_[j], bits_[j]));
+  std::fill(quotient_.begin(), quotient_.end(), 0);
+  const mpz_class top = value >> static_cast<mp_bitcnt_t>(form_.n);  // below k
+  fold_into_input(static_cast<std::int64_t>(top.get_ui()), 0);
+  value_mod_p_ = mpz_fdiv_ui(value.get_mpz_t(), kP61);
+}
+
+// The digits are balanced (some negative): carried into non-negative
+// digits first, so the value packs into limbs; the last carry (negative
+// for a negative value) is added at the top.
+void WeightedSquaring::store(mpz_class& x) const {
+  std::vector<mp_limb_t> limbs(exponent_[digits_] / 64 + 3, 0);
+  std::int64_t carry = 0;
+  for (std::size_t j = 0; j < digits_; ++j) {
+    const std::int64_t digit = std::llround(input_[j] / input_weight_[j]) + carry;
+    const std::int64_t low = digit & ((std::int64_t{1} << bits_[j]) - 1);
+    carry = digit >> bits_[j];
+    const std::size_t at = exponent_[j] / 64;
+    const unsigned shift = exponent_[j] % 64;
+    limbs[at] |= static_cast<mp_limb_t>(low) << shift;
+    if (shift != 0) limbs[at + 1] |= static_cast<mp_limb_t>(low) >> (64 - shift);
+  }
+  mpz_import(x.get_mpz_t(), limbs.size(), -1, sizeof(mp_limb_t), 0, 0, limbs.data());
+  if (carry != 0) {
+    mpz_class top = carry;
+    top <<= static_cast<mp_bitcnt_t>(exponent_[digits_]);
+    x += top;
+  }
+  const mpz_class N = modulus_of(form_);
+  mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
+}
+
+void WeightedSquaring::square_by_gmp(unsigned long minus) {
+  mpz_class x;
+  store(x);
+  x = x * x - minus;
+  load(x);
+}
+
+}  // namespace tk::primes

@@ -1,0 +1,90 @@
+/// @file test_region_index_shapes.cpp
+/// @brief RegionIndex against brute_force_query on the shapes that made its
+/// build slow (bench_region_build's): a finely divided wavy ring round a
+/// wide empty interior (cells with too many nearly equidistant elements
+/// keep no list), a gear of spikes narrower than its cells, and a long comb
+/// whose inside flags are chained across thousands of cells; also as holes
+/// in a plate, so that the chain passes in and out of the region.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "cad/loops.hpp"
+#include "cad/region_distance.hpp"
+#include "region_probe.hpp"
+
+namespace {
+
+using namespace tk::cad;
+constexpr double kPi = std::numbers::pi;
+
+Loop polygon(const std::vector<Point>& corners) {
+  Loop loop;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    Segment s;
+    s.start = corners[i], s.end = corners[(i + 1) % corners.size()];
+    loop.segments.push_back(s);
+  }
+  return loop;
+}
+
+Loop wavy_ring(std::size_t n, Point c, double radius) {
+  std::vector<Point> v;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * kPi * double(i) / double(n), r = radius * (1 + 0.015 * std::sin(60 * a));
+    v.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+  }
+  return polygon(v);
+}
+
+Loop spiky_gear(std::size_t spikes) {
+  const double root = double(spikes) * 0.5 / (2 * kPi);
+  std::vector<Point> v;
+  for (std::size_t i = 0; i < spikes; ++i) {
+    const double a = 2 * kPi * double(i) / double(spikes), b = 2 * kPi * (double(i) + 0.5) / double(spikes);
+    v.push_back({root * std::cos(a), root * std::sin(a)});
+    v.push_back({(root + 5) * std::cos(b), (root + 5) * std::sin(b)});
+  }
+  return polygon(v);
+}
+
+Loop comb(std::size_t teeth, double y0) {
+  std::vector<Point> v;
+  for (std::size_t k = 0; k < teeth; ++k) {
+    const double x = 2 * double(k);
+    v.insert(v.end(), {{x, y0}, {x, y0 + 10}, {x + 1, y0 + 10}, {x + 1, y0}});
+  }
+  v.insert(v.end(), {{2 * double(teeth), y0 - 5}, {0, y0 - 5}});
+  return polygon(v);
+}
+
+TEST(RegionIndexShapes, WavyRingMatchesBruteForce) {
+  std::mt19937_64 random(24);
+  const std::vector<Loop> loops{wavy_ring(3000, {0, 0}, 100)};
+  const probe::Comparison c = probe::compare(loops, probe::probe_points(random, loops, 5000));
+  EXPECT_GT(c.sign_checked, 5000u);
+}
+
+TEST(RegionIndexShapes, SpikyGearMatchesBruteForce) {
+  std::mt19937_64 random(25);
+  const std::vector<Loop> loops{spiky_gear(1000)};
+  probe::compare(loops, probe::probe_points(random, loops, 5000));
+}
+
+TEST(RegionIndexShapes, LongCombMatchesBruteForce) {
+  std::mt19937_64 random(26);
+  const std::vector<Loop> loops{comb(600, 0)};
+  probe::compare(loops, probe::probe_points(random, loops, 5000));
+}
+
+TEST(RegionIndexShapes, CombsAndRingsAsHolesMatchBruteForce) {
+  std::mt19937_64 random(27);
+  std::vector<Loop> loops{polygon({{-20, -150}, {1300, -150}, {1300, 150}, {-20, 150}}), comb(600, 20), comb(300, -60)};
+  for (int i = 0; i < 5; ++i) loops.push_back(wavy_ring(200, {100 + 220.0 * i, -110}, 20));
+  probe::compare(loops, probe::probe_points(random, loops, 5000));
+}
+
+}  // namespace
