@@ -215,6 +215,7 @@ b,15,composite,bpsw,factor 3"
 }
 
 @test "--progress keeps stdout data only" {
+  skip_volume_when_sanitized
   seq 1 200000 > many.txt
   mrtest --progress many.txt 2> err.txt > out.jsonl
   [ "$(wc -l < out.jsonl)" -eq 200000 ]

@@ -213,6 +213,7 @@ for r in map(json.loads, sys.stdin):
 # root, so many are composite): every format gives the same records and
 # verdicts, and the verdicts are PARI's (every member must be prime).
 @test "sieve's NewPGen, ABC, ABCD, CSV and JSON Lines output piped into riesel: same verdicts, PARI's" {
+  skip_volume_when_sanitized
   need_gp
   set -o pipefail
   forms=("twin --k 1:30000 --pmax 1e5" "sg --k 1:2000 --pmax 1e4" "cc1 --length 3 --k 1:30000 --pmax 1e5"
