@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages the toolkit builds, tests and benchmarks with.
+# Installs the Debian packages the toolkit builds, tests, packages and
+# benchmarks with: setup-deps.sh [build|test|deb|bench]. `make demo` needs
+# only the build tier.
 # Idempotent: packages already installed are skipped, and apt-get runs only
 # when something is missing. Uses sudo when not root.
 set -euo pipefail
@@ -10,8 +12,14 @@ build_pkgs=(g++ cmake make pkg-config libcli11-dev libgmp-dev libeigen3-dev
             libboost-math-dev scdoc)
 # Tests: unit tests, CLI tests, the PARI/GP and ezdxf oracles, sanitizer runtime.
 # linuxcnc-uspace ships rs274, LinuxCNC's own interpreter: the oracle for every G-code program.
+# ccache: the builds reuse earlier compiles. dpkg-dev, file and man-db let
+# test/bats/toolkit_deb.bats build and check the package; it runs lintian
+# only where the deb tier installed it (~130 packages, minutes of apt).
 test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp python3 python3-ezdxf python3-scipy parallel fuzzylite
-           linuxcnc-uspace)
+           linuxcnc-uspace ccache dpkg-dev file man-db)
+# The Debian package (`make deb`): dpkg-shlibdeps and dpkg-deb, file for
+# CPack's stripping, lintian to check the result, man to check the pages.
+deb_pkgs=(dpkg-dev file lintian man-db)
 # Benchmarks: peers timed in the same run (never runtime dependencies).
 bench_pkgs=(libflint-dev primesieve libfuzzylite-dev libgsl-dev libboost-dev)
 
@@ -19,8 +27,9 @@ want=("${build_pkgs[@]}")
 case "${1:-build}" in
   build) ;;
   test)  want+=("${test_pkgs[@]}") ;;
+  deb)   want+=("${deb_pkgs[@]}") ;;
   bench) want+=("${test_pkgs[@]}" "${bench_pkgs[@]}") ;;
-  *) echo "usage: $0 [build|test|bench]" >&2; exit 2 ;;
+  *) echo "usage: $0 [build|test|deb|bench]" >&2; exit 2 ;;
 esac
 
 missing=()

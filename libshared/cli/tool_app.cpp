@@ -9,16 +9,13 @@
 #include <cstring>
 #include <new>
 
+#include "cli/build_info.hpp"
 #include "io/error.hpp"
-
-#ifndef TOOLKIT_VERSION
-#define TOOLKIT_VERSION "0.0.0"
-#endif
 
 namespace tk::cli {
 
 std::string version_text(const std::string& name) {
-  return name + " (toolkit) " TOOLKIT_VERSION;
+  return name + " (toolkit) " + toolkit_version() + " (revision " + toolkit_revision() + ")";
 }
 
 ToolApp::ToolApp(std::string name, std::string description, std::string footer)

@@ -55,7 +55,8 @@ class ToolApp {
   CommonOptions common_;
 };
 
-/// "name (toolkit) X.Y.Z" as --version prints it.
+/// "name (toolkit) X.Y.Z (revision R)" as --version prints it; R is the
+/// git revision the build came from, so a result in a log traces to a build.
 std::string version_text(const std::string& name);
 
 }  // namespace tk::cli

@@ -20,10 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-[[noreturn]] void fail(const std::string& path, const std::string& what, int error = errno) {
-  throw Error("cannot " + what + ": " + std::strerror(error), Location{path, 0});
-}
-
 // The rename itself is durable once the directory is synced.
 void sync_directory_of(const std::string& path) {
   const std::string directory = fs::path(path).parent_path().string();
@@ -80,20 +76,20 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), target_(path_
   const bool exists = ::stat(target_.c_str(), &existing) == 0;
   if (exists && !S_ISREG(existing.st_mode)) {  // a device or a pipe: nothing to rename
     file_ = std::fopen(target_.c_str(), "w");
-    if (!file_) fail(path_, "write");
+    if (!file_) throw errno_error(path_, "write", errno);
     return;
   }
   remove_stale_temporaries(target_);
   temporary_ = temporary_name(target_, ::getpid());
   const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) fail(path_, "write");
+  if (fd < 0) throw errno_error(path_, "write", errno);
   if (exists) ::fchmod(fd, existing.st_mode & 07777);  // the replacement keeps the file's permissions
   file_ = ::fdopen(fd, "w");
   if (!file_) {
     const int saved = errno;
     ::close(fd);
     ::unlink(temporary_.c_str());
-    fail(path_, "write", saved);
+    throw errno_error(path_, "write", saved);
   }
 }
 
@@ -112,13 +108,13 @@ void AtomicFile::commit() {
   const bool closed = std::fclose(file) == 0;
   if (!written || !closed) {
     if (!temporary_.empty()) ::unlink(temporary_.c_str());
-    fail(path_, "write", written ? errno : error);
+    throw errno_error(path_, "write", written ? errno : error);
   }
   if (temporary_.empty()) return;
   if (std::rename(temporary_.c_str(), target_.c_str()) != 0) {
     const int saved = errno;
     ::unlink(temporary_.c_str());
-    fail(path_, "rename into place", saved);
+    throw errno_error(path_, "rename into place", saved);
   }
   sync_directory_of(target_);
 }
@@ -127,30 +123,30 @@ void write_all_synced(int fd, const std::string& path, std::string_view bytes) {
   for (std::size_t done = 0; done < bytes.size();) {
     const ssize_t wrote = ::write(fd, bytes.data() + done, bytes.size() - done);
     if (wrote < 0 && errno == EINTR) continue;
-    if (wrote <= 0) fail(path, "write", errno);
+    if (wrote <= 0) throw errno_error(path, "write", errno);
     done += static_cast<std::size_t>(wrote);
   }
-  if (::fsync(fd) != 0) fail(path, "sync", errno);
+  if (::fsync(fd) != 0) throw errno_error(path, "sync", errno);
 }
 
 void write_file_atomically(const std::string& path, std::string_view bytes) {
   AtomicFile file(path);
   if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), file.stream()) != bytes.size())
-    fail(path, "write");
+    throw errno_error(path, "write", errno);
   file.commit();
 }
 
 void write_file_atomically(const std::string& path, std::string_view bytes, const std::string& temporary) {
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail(temporary, "create");
+  if (fd < 0) throw errno_error(temporary, "create", errno);
   try {
     write_all_synced(fd, temporary, bytes);
   } catch (const Error&) {
     ::close(fd);
     throw;
   }
-  if (::close(fd) != 0) fail(temporary, "close");
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) fail(path, "rename into place");
+  if (::close(fd) != 0) throw errno_error(temporary, "close", errno);
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) throw errno_error(path, "rename into place", errno);
   sync_directory_of(path);
 }
 

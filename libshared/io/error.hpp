@@ -41,6 +41,9 @@ class UsageError : public Error {
   using Error::Error;
 };
 
+/// The error of a failed system call on `path`: "cannot WHAT: strerror(error)".
+Error errno_error(const std::string& path, const std::string& what, int error);
+
 /// Throws Error(message) unless `ok`: how the library checks its settings.
 inline void require(bool ok, const std::string& message) {
   if (!ok) throw Error(message);

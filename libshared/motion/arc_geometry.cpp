@@ -11,10 +11,6 @@
 
 namespace tk::motion {
 
-namespace {
-constexpr double kTwoPi = 2 * std::numbers::pi;
-}
-
 ArcGeometry arc_geometry(const Motion& m) {
   ArcGeometry g;
   g.a0 = m.axis0;
@@ -59,7 +55,6 @@ Vec3 ArcGeometry::tangent(double phi) const {
 double arc_sweep(const Motion& arc) { return arc_geometry(arc).sweep; }
 
 void check_arc_radii(double start_radius, double end_radius, bool inches) {
-  constexpr double kMmPerInch = 25.4;
   const double tolerance = inches ? 0.0005 * kMmPerInch : 0.005;
   if (std::min(start_radius, end_radius) < tolerance)
     throw Error(fmt::format("zero-radius arc (radius {:g} mm at the start, {:g} mm at the end)", start_radius, end_radius));

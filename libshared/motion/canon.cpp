@@ -17,8 +17,6 @@ namespace tk::motion {
 
 namespace {
 
-constexpr double kMmPerInch = 25.4;
-
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 /// Commands that neither move nor time anything here: counted, not run.

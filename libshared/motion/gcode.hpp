@@ -12,11 +12,15 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace tk::motion {
+
+inline constexpr double kMmPerInch = 25.4;
+inline constexpr double kTwoPi = 2 * std::numbers::pi;
 
 struct Vec3 {
   double x = 0, y = 0, z = 0;
@@ -192,7 +196,7 @@ class GcodeInterpreter {
   double synchronised_speed(GcodeBlock& block) const;
   void arc(GcodeBlock& block, Motion& motion) const;
   void warn(const std::string& message) const;
-  double unit() const { return inches_ ? 25.4 : 1.0; }  ///< mm per program unit
+  double unit() const { return inches_ ? kMmPerInch : 1.0; }  ///< mm per program unit
 
   InterpreterOptions options_;
   std::function<void(const std::string&)> warn_;

@@ -4,6 +4,7 @@
 /// moves (G33), dwells, and arcs in centre (I/J/K) and radius (R) format.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -13,13 +14,6 @@
 #include "motion/gcode_block.hpp"
 
 namespace tk::motion {
-
-namespace {
-
-constexpr double kMmPerInch = 25.4;
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
 
 Motion dwell_at(const Vec3& position, double seconds, std::size_t source_line) {
   Motion dwell;
@@ -354,7 +348,7 @@ void GcodeInterpreter::arc(GcodeBlock& block, Motion& motion) const {
     const double half = std::min(half_chord, std::abs(radius));  // a chord within tolerance of 2R: a half circle
     // The centre lies right of the chord (from start to end) for G2 with
     // R > 0 and G3 with R < 0, which makes the arc 180 degrees or less.
-    const double side = motion.clockwise == (radius > 0) ? -kPi / 2 : kPi / 2;
+    const double side = motion.clockwise == (radius > 0) ? -std::numbers::pi / 2 : std::numbers::pi / 2;
     const double direction = std::atan2(end1 - start1, end0 - start0) + side;
     const double distance = std::sqrt(radius * radius - half * half);
     centre0 = (start0 + end0) / 2 + distance * std::cos(direction);

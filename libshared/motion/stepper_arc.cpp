@@ -14,12 +14,6 @@
 
 namespace tk::motion {
 
-namespace {
-
-constexpr double kTwoPi = 2 * std::numbers::pi;
-
-}  // namespace
-
 double Stepper::run_arc(const Motion& motion, Chunk& out) {
   const ArcGeometry g = arc_geometry(motion);
   if (!(g.r_start > 0) || !(g.r_end > 0)) throw Error("arc of zero radius");

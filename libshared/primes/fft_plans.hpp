@@ -10,6 +10,10 @@
 
 namespace tk::primes {
 
+/// A square whose worst rounding error passes this is redone by GMP: the
+/// error of a correct rounding is far below it at the digit sizes chosen.
+inline constexpr double kMaxRoundoff = 0.4;
+
 /// Out-of-place real -> half spectrum and back (unnormalised); executed
 /// on any arrays allocated by fftw_alloc_*, as the squarers' are.
 struct RealFftPlans {

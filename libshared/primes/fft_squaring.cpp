@@ -13,10 +13,6 @@ namespace {
 
 __extension__ typedef unsigned __int128 u128;
 
-// A square whose worst rounding error passes this is redone by GMP: the
-// error of a correct rounding is far below it at the digit sizes chosen.
-constexpr double kMaxRoundoff = 0.4;
-
 // Largest digit size whose squares round safely at this length. Digits
 // are balanced (|d| <= 2^(b-1)), so a coefficient of the square sums about
 // L/2 products of random sign. Measured here on random digits: the worst
@@ -49,14 +45,14 @@ std::size_t bits_of(const SpecialForm& form) {
   return mpz_sizeinbase(N.get_mpz_t(), 2);
 }
 
-bool supported(const SpecialForm& form) {
+bool fits_fft_squaring(const SpecialForm& form) {
   return form.n >= 64 && (form.c == 1 || form.c == -1) && form.k % 2 == 1;
 }
 
 }  // namespace
 
 std::unique_ptr<FftSquaring> FftSquaring::create(const SpecialForm& form) {
-  if (!supported(form)) return nullptr;
+  if (!fits_fft_squaring(form)) return nullptr;
   const std::size_t bits = bits_of(form);
   for (std::size_t length : fast_fft_lengths())
     for (int b = 8; b <= max_digit_bits(length); ++b)
@@ -65,7 +61,7 @@ std::unique_ptr<FftSquaring> FftSquaring::create(const SpecialForm& form) {
 }
 
 std::unique_ptr<FftSquaring> FftSquaring::create_with(const SpecialForm& form, std::size_t length, int digit_bits) {
-  if (!supported(form) || digit_bits < 8 || digit_bits > 30 || length % 2 != 0) return nullptr;
+  if (!fits_fft_squaring(form) || digit_bits < 8 || digit_bits > 30 || length % 2 != 0) return nullptr;
   if (2 * digits_for(bits_of(form), digit_bits) - 1 > length) return nullptr;
   return std::unique_ptr<FftSquaring>(new FftSquaring(form, length, digit_bits));
 }

@@ -23,20 +23,16 @@ namespace tk::primes {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw Error(fmt::format("cannot {}: {}", what, std::strerror(errno)), Location{path, 0});
-}
-
 int open_append(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDWR | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) fail(path, "open for appending");
+  if (fd < 0) throw errno_error(path, "open for appending", errno);
   return fd;
 }
 
 
 std::uint64_t file_size(int fd, const std::string& path) {
   struct stat status {};
-  if (::fstat(fd, &status) != 0) fail(path, "read the size of");
+  if (::fstat(fd, &status) != 0) throw errno_error(path, "read the size of", errno);
   return static_cast<std::uint64_t>(status.st_size);
 }
 
@@ -47,7 +43,7 @@ std::string read_at(int fd, const std::string& path, std::uint64_t offset, std::
   while (done < length) {
     const ssize_t got = ::pread(fd, bytes.data() + done, length - done, static_cast<off_t>(offset + done));
     if (got < 0 && errno == EINTR) continue;
-    if (got < 0) fail(path, "read");
+    if (got < 0) throw errno_error(path, "read", errno);
     if (got == 0) break;
     done += static_cast<std::size_t>(got);
   }

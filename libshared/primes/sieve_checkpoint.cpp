@@ -71,10 +71,6 @@ class Reader {
   const std::string& path_;
 };
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw Error(fmt::format("cannot {} the checkpoint: {}", what, std::strerror(errno)), Location{path, 0});
-}
-
 }  // namespace
 
 std::string checkpoint_identity(const SieveSpec& spec, unsigned shard_index, unsigned shard_count) {
@@ -111,14 +107,14 @@ std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const st
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (!file) {
     if (errno == ENOENT) return std::nullopt;
-    fail(path, "open");
+    throw errno_error(path, "open the checkpoint", errno);
   }
   std::string bytes;
   char chunk[65536];
   for (std::size_t got; (got = std::fread(chunk, 1, sizeof chunk, file)) > 0;) bytes.append(chunk, got);
   const bool read_error = std::ferror(file) != 0;
   std::fclose(file);
-  if (read_error) fail(path, "read");
+  if (read_error) throw errno_error(path, "read the checkpoint", errno);
 
   Reader whole(bytes, bytes.size(), path);
   const bool version1 = bytes.compare(0, kMagicVersion1.size(), kMagicVersion1) == 0;

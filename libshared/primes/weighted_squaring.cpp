@@ -20,15 +20,6 @@ namespace {
 
 using namespace weighted_detail;
 
-// A square whose worst rounding error passes this is redone by GMP.
-constexpr double kMaxRoundoff = 0.4;
-
-// Rounds to the nearest integer for |v| < 2^51 without a library call.
-inline double round_to_integer(double v) {
-  constexpr double shifter = 6755399441055744.0;  // 1.5 * 2^52
-  return (v + shifter) - shifter;
-}
-
 }  // namespace
 
 void WeightedSquaring::square_minus(unsigned long minus) {

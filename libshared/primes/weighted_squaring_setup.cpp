@@ -29,7 +29,7 @@ constexpr unsigned kMaxKBits = 56;
 // 20.3 bits), 0.156 at L = 3584 (n = 36627); 0.4 is what is checked.
 double max_average_bits(std::size_t length) { return 25.0 - 0.31 * std::log2(static_cast<double>(length)); }
 
-bool supported(const SpecialForm& form) {
+bool fits_weighted_squaring(const SpecialForm& form) {
   return form.n >= 64 && (form.c == 1 || form.c == -1) && form.k % 2 == 1 && std::bit_width(form.k) <= kMaxKBits;
 }
 
@@ -113,7 +113,7 @@ std::unique_ptr<WeightedSquaring> fastest(std::vector<std::unique_ptr<WeightedSq
 }  // namespace
 
 std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& form) {
-  if (!supported(form)) return nullptr;
+  if (!fits_weighted_squaring(form)) return nullptr;
   std::vector<std::unique_ptr<WeightedSquaring>> candidates;
   for (std::size_t length : candidate_lengths()) {
     const bool short_length = length < kTimeFromLength;
@@ -130,7 +130,7 @@ std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& fo
 }
 
 std::unique_ptr<WeightedSquaring> WeightedSquaring::create_with(const SpecialForm& form, std::size_t length, int digit_bits) {
-  if (!supported(form) || digit_bits < 4 || digit_bits > 40 || length % 2 != 0) return nullptr;
+  if (!fits_weighted_squaring(form) || digit_bits < 4 || digit_bits > 40 || length % 2 != 0) return nullptr;
   const std::size_t low = low_digits_for(form.n, digit_bits);
   if (2 * (low + top_digits(form, low)) - 1 > length) return nullptr;
   return std::unique_ptr<WeightedSquaring>(new WeightedSquaring(form, length, low));

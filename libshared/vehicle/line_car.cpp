@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <deque>
 #include <limits>
 
@@ -16,7 +17,6 @@ namespace tk::vehicle {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kCommandLimit = 255;
 constexpr double kLostCoverage = 0.1, kFoundCoverage = 0.5;  // excursion hysteresis
 constexpr double kStillMm = 1.0, kStillRad = 0.02;
@@ -161,8 +161,8 @@ double DriveBody::advance(double dt) {
     pose_.y -= r * (std::cos(h0 + turn) - std::cos(h0));
   }
   pose_.heading = h0 + turn;  // kept within (-pi, pi]
-  if (pose_.heading > kPi) pose_.heading -= 2 * kPi;
-  if (pose_.heading <= -kPi) pose_.heading += 2 * kPi;
+  if (pose_.heading > std::numbers::pi) pose_.heading -= 2 * std::numbers::pi;
+  if (pose_.heading <= -std::numbers::pi) pose_.heading += 2 * std::numbers::pi;
   return std::abs(v) * dt;
 }
 
@@ -259,7 +259,7 @@ LapResult run_laps(const Track& track, const CarParameters& car, const LapOption
       break;
     }
     if (std::hypot(pose.x - anchor.x, pose.y - anchor.y) > kStillMm ||
-        std::abs(std::remainder(pose.heading - anchor.heading, 2 * kPi)) > kStillRad) {
+        std::abs(std::remainder(pose.heading - anchor.heading, 2 * std::numbers::pi)) > kStillRad) {
       anchor = pose;
       anchor_t = t;
     } else if (t - anchor_t > options.stop_after_s) {

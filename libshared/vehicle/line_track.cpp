@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "cad/segment_geometry.hpp"
 #include "io/error.hpp"
@@ -17,7 +18,6 @@ namespace tk::vehicle {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 bool within_box(Point a, Point b, Point p) {
   return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
@@ -207,15 +207,15 @@ Track oval_track(double straight_mm, double radius_mm, double line_width_mm) {
   if (!(straight_mm >= 0) || !(radius_mm > 0) || !std::isfinite(straight_mm) || !std::isfinite(radius_mm))
     throw Error("an oval needs straights of at least 0 mm and a positive radius");
   const double half = straight_mm / 2;
-  const int chords = std::max(8, static_cast<int>(std::ceil(kPi * radius_mm / 5.0)));
+  const int chords = std::max(8, static_cast<int>(std::ceil(std::numbers::pi * radius_mm / 5.0)));
   std::vector<Point> v;
   if (half > 0) v.push_back({0, -radius_mm});  // start: middle of the lower straight
   // Right half circle around (half, 0) from -90° to +90°, then the left one around (-half, 0).
   for (int side = 0; side < 2; ++side) {
-    const double cx = side == 0 ? half : -half, a0 = side == 0 ? -kPi / 2 : kPi / 2;
+    const double cx = side == 0 ? half : -half, a0 = side == 0 ? -std::numbers::pi / 2 : std::numbers::pi / 2;
     for (int k = 0; k <= chords; ++k) {
       if (half == 0 && k == chords) continue;  // a circle: the arcs meet, do not repeat the point
-      const double a = a0 + kPi * k / chords;
+      const double a = a0 + std::numbers::pi * k / chords;
       v.push_back({cx + radius_mm * std::cos(a), radius_mm * std::sin(a)});
     }
   }

@@ -40,7 +40,7 @@ near() {
   assert_output --partial "--check"
   run dxf2region --version
   assert_success
-  assert_output --regexp "^dxf2region \(toolkit\) [0-9]+\.[0-9]+"
+  assert_output --regexp '^dxf2region \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
   [ -s "$TOOLKIT_ROOT/man/dxf2region.1" ]
   run grep -c "^\.SH" "$TOOLKIT_ROOT/man/dxf2region.1"
   [ "$output" -ge 8 ]

@@ -54,7 +54,7 @@ print("agree", len(ours))' "$1" "$2"
   assert_output --partial "--variant"
   run fuzzyfeed --version
   assert_success
-  assert_output --regexp "^fuzzyfeed \(toolkit\) [0-9]+\.[0-9]+"
+  assert_output --regexp '^fuzzyfeed \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
   [ -s "$TOOLKIT_ROOT/man/fuzzyfeed.1" ]
   run grep -c "^\.SH" "$TOOLKIT_ROOT/man/fuzzyfeed.1"
   [ "$output" -ge 10 ]

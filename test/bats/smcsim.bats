@@ -20,7 +20,7 @@ setup() {
   done
   run smcsim --version
   assert_success
-  assert_output --regexp "^smcsim \(toolkit\) [0-9]+\.[0-9]+"
+  assert_output --regexp '^smcsim \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
   [ -s "$TOOLKIT_ROOT/man/smcsim.1" ]
 }
 

@@ -24,7 +24,7 @@ four() { printf '%s\n' 10.000 10.002 10.001 10.003; }
   done
   run subtune --version
   assert_success
-  assert_output --regexp "^subtune \(toolkit\) [0-9]+\.[0-9]+"
+  assert_output --regexp '^subtune \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
   run subtune model --help
   assert_success
   assert_output --partial "--residuals"

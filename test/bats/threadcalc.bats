@@ -20,7 +20,7 @@ setup() {
   done
   run threadcalc --version
   assert_success
-  assert_output --regexp "^threadcalc \(toolkit\) [0-9]+\.[0-9]+"
+  assert_output --regexp '^threadcalc \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
 }
 
 @test "the issue's published values: M30x2-6g, M30x2-6H, M6x1-6g, M10x1.5-6g" {

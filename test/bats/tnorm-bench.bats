@@ -67,7 +67,7 @@ print("compared", compared, "worst", worst)' "$2" theirs.fld "$n"
   assert_output --partial "--latency-ms"
   run tnorm-bench --version
   assert_success
-  assert_output --regexp "^tnorm-bench \(toolkit\) [0-9]+\.[0-9]+"
+  assert_output --regexp '^tnorm-bench \(toolkit\) [0-9]+\.[0-9]+\.[0-9]+ \(revision [0-9A-Za-z._-]+\)$'
   run grep -c "^\.SH" "$TOOLKIT_ROOT/man/tnorm-bench.1"
   [ "$output" -ge 8 ]
 }

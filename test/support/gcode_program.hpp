@@ -3,6 +3,8 @@
 /// through the interpreter, and the error it gives.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,6 +27,13 @@ inline std::vector<tk::motion::Motion> run(const std::string& program, tk::motio
 inline std::vector<tk::motion::Motion> run(const std::string& program) {
   tk::motion::GcodeInterpreter interpreter;
   return run(program, interpreter);
+}
+
+/// Each coordinate of `actual` within `tolerance` mm of (x, y, z).
+inline void expect_point(const tk::motion::Vec3& actual, double x, double y, double z, double tolerance = 1e-9) {
+  EXPECT_NEAR(actual.x, x, tolerance);
+  EXPECT_NEAR(actual.y, y, tolerance);
+  EXPECT_NEAR(actual.z, z, tolerance);
 }
 
 /// The error message a program gives, "" for none.

@@ -15,6 +15,9 @@
 #include "control/feed_controllers.hpp"
 #include "control/feed_drive_sim.hpp"
 #include "io/error.hpp"
+#include "feed_drive_run.hpp"
+
+using tk::test::run_feed_drive;
 
 namespace {
 
@@ -33,12 +36,6 @@ FeedDriveConfig smooth_config(ControllerKind kind, double offset_mm) {
   return c;
 }
 
-std::vector<FeedDriveSample> run(const FeedDriveConfig& c) {
-  std::vector<FeedDriveSample> out;
-  simulate_feed_drive(c, [&](const FeedDriveSample& s) { out.push_back(s); });
-  return out;
-}
-
 /// m Ṡ = (model error) + F_d − sw Λ sign(S); with the exact model and no cut
 /// the surface moves at exactly ∓Λ/m. S0 = μ e0 = 2 · (−0.1) = −0.2 mm/s.
 TEST(FeedController, SwitchingSignPlusConvergesMinusDiverges) {
@@ -47,7 +44,7 @@ TEST(FeedController, SwitchingSignPlusConvergesMinusDiverges) {
   c.duration_s = 0.3;
   const double rate = c.gains.switching / c.plant.mass_kg, band = c.gains.switching * c.period_s / c.plant.mass_kg;
 
-  const std::vector<FeedDriveSample> good = run(c);
+  const std::vector<FeedDriveSample> good = run_feed_drive(c);
   EXPECT_NEAR(good.front().surface_mm_s, -0.2, 1e-12);
   double worst_after_reaching = 0;
   for (const FeedDriveSample& s : good)
@@ -58,7 +55,7 @@ TEST(FeedController, SwitchingSignPlusConvergesMinusDiverges) {
   EXPECT_NEAR(halfway.surface_mm_s, -0.2 + rate * halfway.t_s, 0.01);
 
   c.gains.switching_sign = -1;
-  const std::vector<FeedDriveSample> bad = run(c);
+  const std::vector<FeedDriveSample> bad = run_feed_drive(c);
   // |S| grows like |S0| + (Λ/m) t: at 0.29 s about 11.8 mm/s.
   const FeedDriveSample& last = bad.back();
   EXPECT_NEAR(last.surface_mm_s, -0.2 - rate * last.t_s, 0.05 * rate * last.t_s);
@@ -76,13 +73,13 @@ TEST(FeedController, SwitchingSignPlusConvergesMinusDiverges) {
 TEST(FeedController, SuperTwistingConvergesWithPlusSign) {
   FeedDriveConfig c = smooth_config(ControllerKind::sta, 0.1);
   c.duration_s = 0.3;
-  const std::vector<FeedDriveSample> good = run(c);
+  const std::vector<FeedDriveSample> good = run_feed_drive(c);
   double worst = 0;
   for (const FeedDriveSample& s : good)
     if (s.t_s > 0.1) worst = std::max(worst, std::abs(s.surface_mm_s));
   EXPECT_LT(worst, 0.01);
   c.gains.switching_sign = -1;
-  const std::vector<FeedDriveSample> bad = run(c);
+  const std::vector<FeedDriveSample> bad = run_feed_drive(c);
   EXPECT_GT(std::abs(bad.back().surface_mm_s), 1);
 }
 
@@ -123,7 +120,7 @@ TEST(FeedController, PidSampledLoopFollowsTheTriplePoleResponse) {
   c.period_s = 2e-6, c.substeps = 1, c.duration_s = 0.06;
   const double w = 2 * std::numbers::pi * c.gains.pid_bandwidth_hz;
   double worst = 0;
-  for (const FeedDriveSample& s : run(c)) {
+  for (const FeedDriveSample& s : run_feed_drive(c)) {
     const double want = (1 + w * s.t_s - w * w * s.t_s * s.t_s) * std::exp(-w * s.t_s);
     worst = std::max(worst, std::abs(s.x_mm - want));
   }
@@ -155,7 +152,7 @@ TEST(FeedController, EquivalentControlsGiveTheirCharacteristicPolynomials) {
     const double disc = std::sqrt(damping * damping - 4 * m * k.m_hat * lambda);
     const double r1 = (-damping + disc) / (2 * m), r2 = (-damping - disc) / (2 * m);
     double worst = 0;
-    const std::vector<FeedDriveSample> samples = run(c);
+    const std::vector<FeedDriveSample> samples = run_feed_drive(c);
     for (const FeedDriveSample& s : samples) {
       const double want = disc > 0 ? (r2 * std::exp(r1 * s.t_s) - r1 * std::exp(r2 * s.t_s)) / (r2 - r1)
                                    : (1 - r1 * s.t_s) * std::exp(r1 * s.t_s);  // the double root

@@ -15,6 +15,9 @@
 
 #include "control/feed_drive_sim.hpp"
 #include "io/error.hpp"
+#include "feed_drive_run.hpp"
+
+using tk::test::run_feed_drive;
 
 namespace {
 
@@ -79,22 +82,16 @@ FeedDriveConfig smooth_pid() {
   return c;
 }
 
-std::vector<FeedDriveSample> run(const FeedDriveConfig& c) {
-  std::vector<FeedDriveSample> out;
-  simulate_feed_drive(c, [&](const FeedDriveSample& s) { out.push_back(s); });
-  return out;
-}
-
 /// The plant step is exact for a held force, so without the cutting force
 /// splitting the period into 1, 3 or 10 substeps gives the same run.
 TEST(FeedDriveSim, SubstepsChangeNothingWithoutTheCut) {
   FeedDriveConfig c = smooth_pid();
   c.cut.enabled = false;
   c.substeps = 1;
-  const std::vector<FeedDriveSample> one = run(c);
+  const std::vector<FeedDriveSample> one = run_feed_drive(c);
   for (const int substeps : {3, 10}) {
     c.substeps = substeps;
-    const std::vector<FeedDriveSample> many = run(c);
+    const std::vector<FeedDriveSample> many = run_feed_drive(c);
     ASSERT_EQ(many.size(), one.size());
     double worst = 0;
     for (std::size_t i = 0; i < one.size(); ++i) worst = std::max(worst, std::abs(many[i].x_mm - one[i].x_mm));
@@ -103,9 +100,9 @@ TEST(FeedDriveSim, SubstepsChangeNothingWithoutTheCut) {
   // With the cut on they differ (the disturbance is resolved finer).
   c.cut.enabled = true, c.cut.kte_n_mm = 27.7, c.cut.kre_n_mm = 26.6;
   c.substeps = 1;
-  const std::vector<FeedDriveSample> coarse = run(c);
+  const std::vector<FeedDriveSample> coarse = run_feed_drive(c);
   c.substeps = 10;
-  const std::vector<FeedDriveSample> fine = run(c);
+  const std::vector<FeedDriveSample> fine = run_feed_drive(c);
   double worst = 0;
   for (std::size_t i = 0; i < fine.size(); ++i) worst = std::max(worst, std::abs(fine[i].x_mm - coarse[i].x_mm));
   EXPECT_GT(worst, 1e-9);
@@ -116,9 +113,9 @@ TEST(FeedDriveSim, SubstepsChangeNothingWithoutTheCut) {
 TEST(FeedDriveSim, LengthUnitDoesNotChangeAPidRun) {
   FeedDriveConfig c = smooth_pid();
   c.cut.kte_n_mm = 27.7, c.cut.kre_n_mm = 26.6;  // a cutting force worth seeing
-  const std::vector<FeedDriveSample> mm = run(c);
+  const std::vector<FeedDriveSample> mm = run_feed_drive(c);
   c.length_unit_m = 1;
-  const std::vector<FeedDriveSample> m = run(c);
+  const std::vector<FeedDriveSample> m = run_feed_drive(c);
   ASSERT_EQ(mm.size(), m.size());
   double worst_x = 0, worst_f = 0, max_f = 0;
   for (std::size_t i = 0; i < m.size(); ++i) {
@@ -139,12 +136,12 @@ TEST(FeedDriveSim, CoarseEncoderHidesASmallOffset) {
   c.reference = Reference::step(0, 0);
   c.initial_position_mm = 0.2, c.initial_velocity_mm_s = 0;
   c.encoder_mm = 0.5;
-  for (const FeedDriveSample& s : run(c)) {
+  for (const FeedDriveSample& s : run_feed_drive(c)) {
     ASSERT_EQ(s.x_mm, 0.2) << s.t_s;
     ASSERT_EQ(s.force_n, 0) << s.t_s;
   }
   c.encoder_mm = 0;
-  EXPECT_LT(std::abs(run(c).back().x_mm), 1e-3);
+  EXPECT_LT(std::abs(run_feed_drive(c).back().x_mm), 1e-3);
 }
 
 /// The amplifier input saturates at V: |F| ≤ K_t K_a V = 2 · 50 · 10 N.
@@ -153,7 +150,7 @@ TEST(FeedDriveSim, ForceSaturatesAtTheAmplifierLimit) {
   c.cut.enabled = false;
   c.initial_position_mm = 100;  // the PID asks for kN
   c.duration_s = 0.05;
-  const std::vector<FeedDriveSample> samples = run(c);
+  const std::vector<FeedDriveSample> samples = run_feed_drive(c);
   EXPECT_DOUBLE_EQ(samples.front().force_n, -1000);
   for (const FeedDriveSample& s : samples) ASSERT_LE(std::abs(s.force_n), 1000 * (1 + 1e-15));
   const FeedDriveSummary sum = simulate_feed_drive(c);
@@ -221,7 +218,7 @@ TEST(FeedDriveSim, EstimatesAreQuantisedDifferencedAndFiltered) {
       c.encoder_mm = 1e-5;
       if (filtered) c.velocity_filter_hz = 300, c.position_filter_hz = 150;
       c.duration_s = 0.05;
-      const std::vector<FeedDriveSample> s = run(c);
+      const std::vector<FeedDriveSample> s = run_feed_drive(c);
       const double T = c.period_s, q = c.encoder_mm;
       const double av = filtered ? 1 - std::exp(-kTwoPi * 300 * T) : 1, ax = filtered ? 1 - std::exp(-kTwoPi * 150 * T) : 1;
       double previous = std::round(s[0].x_mm / q) * q, v_hat = 0.7, x_hat = previous, worst = 0, moved = 0;
@@ -250,11 +247,11 @@ TEST(FeedDriveSim, CutConvergesAtOrderTwoInTheSubsteps) {
   FeedDriveConfig c = smooth_pid();
   c.period_s = 1e-3, c.cut.feed_mm_min = 108;
   c.substeps = 64;
-  const std::vector<FeedDriveSample> fine = run(c);
+  const std::vector<FeedDriveSample> fine = run_feed_drive(c);
   std::vector<double> errors;
   for (const int n : {2, 4, 8}) {
     c.substeps = n;
-    const std::vector<FeedDriveSample> s = run(c);
+    const std::vector<FeedDriveSample> s = run_feed_drive(c);
     double worst = 0;
     for (std::size_t k = 0; k < s.size(); ++k) worst = std::max(worst, std::abs(s[k].x_mm - fine[k].x_mm));
     errors.push_back(worst);
@@ -272,7 +269,7 @@ TEST(FeedDriveSim, DisturbanceColumnIsTheCuttingForce) {
   c.cut.kte_n_mm = 27.7, c.cut.kre_n_mm = 26.6;
   c.duration_s = 0.01;
   const MillingForce force(c.cut);
-  for (const FeedDriveSample& s : run(c)) ASSERT_NEAR(s.disturbance_n, force.at(s.t_s), 1e-12 * 60) << s.t_s;
+  for (const FeedDriveSample& s : run_feed_drive(c)) ASSERT_NEAR(s.disturbance_n, force.at(s.t_s), 1e-12 * 60) << s.t_s;
 }
 
 }  // namespace

@@ -15,6 +15,8 @@
 
 using namespace tk::motion;
 
+using gcode_test::expect_point;
+
 namespace {
 
 std::vector<Motion> canon(const std::string& stream, CanonInterpreter& interpreter) {
@@ -33,12 +35,6 @@ std::string canon_error(const std::string& stream, InterpreterOptions options = 
     return e.what();
   }
   return {};
-}
-
-void expect_point(const Vec3& p, double x, double y, double z) {
-  EXPECT_NEAR(p.x, x, 1e-9);
-  EXPECT_NEAR(p.y, y, 1e-9);
-  EXPECT_NEAR(p.z, z, 1e-9);
 }
 
 }  // namespace

@@ -19,26 +19,19 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+#include <numbers>
 
 #include "cad/drawing.hpp"
 #include "cad/dxf_reader.hpp"
 #include "io/error.hpp"
+#include "project_paths.hpp"
 
 using namespace tk::cad;
 using json = nlohmann::json;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kChordTolerance = DxfReadOptions{}.chord_tolerance;
-
-std::filesystem::path project_root() {
-  const char* root = std::getenv("TOOLKIT_ROOT");
-  return root ? std::filesystem::path(root) : std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
-}
-
-/// $TOOLKIT_ROOT/../shared/corpus/dxf (ctest sets TOOLKIT_ROOT).
-std::filesystem::path corpus_folder() { return project_root() / ".." / "shared" / "corpus" / "dxf"; }
 
 std::vector<std::filesystem::path> dxf_files(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
@@ -57,7 +50,7 @@ bool have_ezdxf() {
 /// The oracle's output lines, parsed; fails the test when it does not run.
 std::vector<json> run_oracle(const std::string& arguments) {
   const std::string command =
-      "/usr/bin/python3 '" + (project_root() / "test" / "oracle" / "dxf_entities.py").string() + "' " + arguments;
+      "/usr/bin/python3 '" + (tk::test::project_root() / "test" / "oracle" / "dxf_entities.py").string() + "' " + arguments;
   std::vector<json> lines;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) {
@@ -192,9 +185,9 @@ void compare_entity(const json& e, const std::vector<Segment>& ours, const Drawi
   } else if (type == "ARC" || type == "CIRCLE") {
     const Point centre = xy(e["center_wcs"]);
     const double radius = e["radius"], sign = mirrored(e) ? -1 : 1;
-    double span = 2 * kPi;
+    double span = 2 * std::numbers::pi;
     if (type == "ARC") {
-      span = e["angle_span"].get<double>() * kPi / 180;
+      span = e["angle_span"].get<double>() * std::numbers::pi / 180;
       EXPECT_POINT(ours.front().start, xy(e["start_point"]), tolerance);
       EXPECT_POINT(ours.back().end, xy(e["end_point"]), tolerance);
     } else {
@@ -228,7 +221,7 @@ void compare_entity(const json& e, const std::vector<Segment>& ours, const Drawi
     };
     for (const Segment& s : ours) {
       const double t0 = parameter(s.start), t1 = parameter(s.end);
-      const double t = t0 + std::fmod(t1 - t0 + 4 * kPi, 2 * kPi) / 2;  // the parameter runs upwards
+      const double t = t0 + std::fmod(t1 - t0 + 4 * std::numbers::pi, 2 * std::numbers::pi) / 2;  // the parameter runs upwards
       const Point mid{c.x + std::cos(t) * major.x + std::sin(t) * minor.x,
                       c.y + std::cos(t) * major.y + std::sin(t) * minor.y};
       EXPECT_LE(distance_to_segment(mid, s.start, s.end), kChordTolerance * (1 + 1e-9));
@@ -312,22 +305,22 @@ void compare_file(const std::filesystem::path& file) {
 }  // namespace
 
 TEST(DxfCorpus, EveryFileReadsAsEzdxfReadsIt) {
-  const auto files = dxf_files(corpus_folder());
-  if (files.empty()) GTEST_SKIP() << "no DXF corpus at " << corpus_folder();
+  const auto files = dxf_files(tk::test::corpus_folder("dxf"));
+  if (files.empty()) GTEST_SKIP() << "no DXF corpus at " << tk::test::corpus_folder("dxf");
   if (!have_ezdxf()) GTEST_SKIP() << "/usr/bin/python3 cannot import ezdxf";
   for (const auto& file : files) compare_file(file);
 }
 
 TEST(DxfCorpus, TheToolsFixturesReadAsEzdxfReadsThem) {
-  const auto files = dxf_files(project_root() / "test" / "fixtures" / "dxf");
+  const auto files = dxf_files(tk::test::project_root() / "test" / "fixtures" / "dxf");
   if (files.empty()) GTEST_SKIP() << "no fixtures";
   if (!have_ezdxf()) GTEST_SKIP() << "/usr/bin/python3 cannot import ezdxf";
   for (const auto& file : files) compare_file(file);
 }
 
 TEST(DxfCorpus, TheBinaryFile) {
-  const auto file = corpus_folder() / "ezdxf_bin_dxf_r2000.dxf";
-  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no DXF corpus at " << corpus_folder();
+  const auto file = tk::test::corpus_folder("dxf") / "ezdxf_bin_dxf_r2000.dxf";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << "no DXF corpus at " << tk::test::corpus_folder("dxf");
   const Drawing drawing = read_dxf_file(file.string());
   EXPECT_TRUE(drawing.binary);
   EXPECT_EQ(drawing.version, "AC1015");

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+#include <numbers>
 
 #include "cad/drawing.hpp"
 #include "cad/dxf_reader.hpp"
@@ -18,15 +19,13 @@ using namespace tk::cad;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// A DXF with `body` as its ENTITIES section; the body starts on line 5.
 std::string entities(const std::string& body) { return "0\nSECTION\n2\nENTITIES\n" + body + "0\nENDSEC\n0\nEOF\n"; }
 
 Drawing read(const std::string& text, DxfReadOptions options = {}) { return read_dxf(text, "t.dxf", options); }
 
 /// "file:line: message" of the error reading `text` gives, "" for none.
-std::string error_of(const std::string& text, DxfReadOptions options = {}) {
+std::string dxf_error_of(const std::string& text, DxfReadOptions options = {}) {
   try {
     read_dxf(text, "t.dxf", options);
   } catch (const tk::Error& error) {
@@ -126,7 +125,7 @@ TEST(DxfReader, ArcFromStartToEndAngleCounterClockwise) {
   ASSERT_EQ(d.segments.size(), 1u);
   expect_point(d.segments[0].start, 4, 2);
   expect_point(d.segments[0].end, 1, 5);
-  EXPECT_NEAR(d.segments[0].bulge, std::tan(kPi / 8), 1e-15);
+  EXPECT_NEAR(d.segments[0].bulge, std::tan(std::numbers::pi / 8), 1e-15);
   expect_point(centre(d.segments[0]), 1, 2);
   EXPECT_EQ(d.entities_read.at("ARC"), 1u);
 }
@@ -134,10 +133,10 @@ TEST(DxfReader, ArcFromStartToEndAngleCounterClockwise) {
 TEST(DxfReader, ArcOverHalfATurnIsTwoArcs) {
   const Drawing d = read(entities("0\nARC\n10\n1\n20\n2\n40\n3\n50\n30\n51\n290\n"));
   ASSERT_EQ(d.segments.size(), 2u);
-  expect_point(d.segments[0].start, 1 + 3 * std::cos(kPi / 6), 2 + 3 * std::sin(kPi / 6));
-  expect_point(d.segments[1].end, 1 + 3 * std::cos(290 * kPi / 180), 2 + 3 * std::sin(290 * kPi / 180));
+  expect_point(d.segments[0].start, 1 + 3 * std::cos(std::numbers::pi / 6), 2 + 3 * std::sin(std::numbers::pi / 6));
+  expect_point(d.segments[1].end, 1 + 3 * std::cos(290 * std::numbers::pi / 180), 2 + 3 * std::sin(290 * std::numbers::pi / 180));
   expect_point(d.segments[0].end, d.segments[1].start.x, d.segments[1].start.y, 0);
-  EXPECT_NEAR(sweep(d.segments[0]) + sweep(d.segments[1]), 260 * kPi / 180, 1e-12);
+  EXPECT_NEAR(sweep(d.segments[0]) + sweep(d.segments[1]), 260 * std::numbers::pi / 180, 1e-12);
   EXPECT_LE(d.segments[0].bulge, 1);
   EXPECT_EQ(d.segments[0].entity, d.segments[1].entity);
 }
@@ -146,7 +145,7 @@ TEST(DxfReader, ArcAnglesFollowEzdxf) {
   // Across 0 degrees.
   Drawing d = read(entities("0\nARC\n40\n1\n50\n350\n51\n10\n"));
   ASSERT_EQ(d.segments.size(), 1u);
-  EXPECT_NEAR(sweep(d.segments[0]), 20 * kPi / 180, 1e-12);
+  EXPECT_NEAR(sweep(d.segments[0]), 20 * std::numbers::pi / 180, 1e-12);
   // Equal angles: nothing (but read); equal modulo 360: a full circle.
   d = read(entities("0\nARC\n40\n1\n50\n45\n51\n45\n"));
   EXPECT_TRUE(d.segments.empty());
@@ -182,7 +181,7 @@ TEST(DxfReader, ExtrusionMinusZMirrorsArcCircleAndLwpolyline) {
   // ARC: OCS centre (1,2) is WCS (-1,2); OCS 0..90 ccw is WCS 180..90 clockwise.
   expect_point(d.segments[0].start, -2, 2);
   expect_point(d.segments[0].end, -1, 3);
-  EXPECT_NEAR(d.segments[0].bulge, -std::tan(kPi / 8), 1e-15);
+  EXPECT_NEAR(d.segments[0].bulge, -std::tan(std::numbers::pi / 8), 1e-15);
   expect_point(centre(d.segments[0]), -1, 2);
   // CIRCLE: centre (-4,0), clockwise halves.
   expect_point(d.segments[1].start, -5, 0);
@@ -296,7 +295,7 @@ TEST(DxfReader, FullEllipseIsFlattenedWithinTheTolerance) {
     const double x = (s.end.x - 1) / 2, y = s.end.y - 1;
     EXPECT_NEAR(x * x + y * y, 1, 1e-12);  // semi-axes 2 and 0.5 * 2
     // The curve halfway (in the parameter) strays from the chord by at most the tolerance.
-    const double t = 2 * kPi * (static_cast<double>(i) + 0.5) / n;
+    const double t = 2 * std::numbers::pi * (static_cast<double>(i) + 0.5) / n;
     const Point mid{1 + 2 * std::cos(t), 1 + std::sin(t)};
     const double dx = s.end.x - s.start.x, dy = s.end.y - s.start.y;
     EXPECT_LE(std::abs((mid.x - s.start.x) * dy - (mid.y - s.start.y) * dx) / std::hypot(dx, dy), 0.01);
@@ -469,50 +468,50 @@ TEST(DxfReader, DeepApplicationGroupsAndLongInputsStayCheap) {
 // ---- errors ----------------------------------------------------------------
 
 TEST(DxfReader, ErrorsNameTheLineAtFault) {
-  EXPECT_EQ(error_of(entities("0\nLINE\nxyz\n1\n")), "t.dxf:7: bad group code 'xyz'");
-  EXPECT_EQ(error_of(entities("0\nLINE\n10\nabc\n")), "t.dxf:8: bad number 'abc' for group code 10");
-  EXPECT_EQ(error_of(entities("0\nLINE\n10\n1.5x\n")), "t.dxf:8: bad number '1.5x' for group code 10");
-  EXPECT_EQ(error_of(entities("0\nLINE\n10\n\n")), "t.dxf:8: bad number '' for group code 10");
-  EXPECT_EQ(error_of(entities("0\nARC\n40\n1e400\n")), "t.dxf:8: number out of range '1e400' for group code 40");
-  EXPECT_EQ(error_of(entities("0\nLINE\n20\nnan\n")), "t.dxf:8: bad number 'nan' for group code 20");
-  EXPECT_EQ(error_of(entities("0\nLINE\n20\n-inf\n")), "t.dxf:8: bad number '-inf' for group code 20");
-  EXPECT_EQ(error_of(entities("0\nLWPOLYLINE\n70\n1.5\n")), "t.dxf:8: bad integer '1.5' for group code 70");
-  EXPECT_EQ(error_of(entities("0\nLWPOLYLINE\n70\n99999999999999999999\n")),
+  EXPECT_EQ(dxf_error_of(entities("0\nLINE\nxyz\n1\n")), "t.dxf:7: bad group code 'xyz'");
+  EXPECT_EQ(dxf_error_of(entities("0\nLINE\n10\nabc\n")), "t.dxf:8: bad number 'abc' for group code 10");
+  EXPECT_EQ(dxf_error_of(entities("0\nLINE\n10\n1.5x\n")), "t.dxf:8: bad number '1.5x' for group code 10");
+  EXPECT_EQ(dxf_error_of(entities("0\nLINE\n10\n\n")), "t.dxf:8: bad number '' for group code 10");
+  EXPECT_EQ(dxf_error_of(entities("0\nARC\n40\n1e400\n")), "t.dxf:8: number out of range '1e400' for group code 40");
+  EXPECT_EQ(dxf_error_of(entities("0\nLINE\n20\nnan\n")), "t.dxf:8: bad number 'nan' for group code 20");
+  EXPECT_EQ(dxf_error_of(entities("0\nLINE\n20\n-inf\n")), "t.dxf:8: bad number '-inf' for group code 20");
+  EXPECT_EQ(dxf_error_of(entities("0\nLWPOLYLINE\n70\n1.5\n")), "t.dxf:8: bad integer '1.5' for group code 70");
+  EXPECT_EQ(dxf_error_of(entities("0\nLWPOLYLINE\n70\n99999999999999999999\n")),
             "t.dxf:8: number out of range '99999999999999999999' for group code 70");
-  EXPECT_EQ(error_of(entities("0\nLINE\n2000\nx\n")), "t.dxf:7: bad group code '2000'");
+  EXPECT_EQ(dxf_error_of(entities("0\nLINE\n2000\nx\n")), "t.dxf:7: bad group code '2000'");
   static const char with_nul[] = "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1\0\n";
-  EXPECT_EQ(error_of(std::string(with_nul, sizeof with_nul - 1)),
+  EXPECT_EQ(dxf_error_of(std::string(with_nul, sizeof with_nul - 1)),
             "t.dxf:8: nul byte in a text DXF file");
   // Values only read for the entity types that use them.
-  EXPECT_EQ(error_of(entities("0\nTEXT\n10\nabc\n")), "");
+  EXPECT_EQ(dxf_error_of(entities("0\nTEXT\n10\nabc\n")), "");
 }
 
 TEST(DxfReader, TruncatedAndEmptyFiles) {
-  EXPECT_EQ(error_of(""), "t.dxf: no ENTITIES section");
-  EXPECT_EQ(error_of("\n\n"), "t.dxf: no ENTITIES section");
-  EXPECT_EQ(error_of("0\nSECTION\n2\nHEADER\n0\nENDSEC\n0\nEOF\n"), "t.dxf: no ENTITIES section");
+  EXPECT_EQ(dxf_error_of(""), "t.dxf: no ENTITIES section");
+  EXPECT_EQ(dxf_error_of("\n\n"), "t.dxf: no ENTITIES section");
+  EXPECT_EQ(dxf_error_of("0\nSECTION\n2\nHEADER\n0\nENDSEC\n0\nEOF\n"), "t.dxf: no ENTITIES section");
   // An odd number of lines: a code without its value.
-  EXPECT_EQ(error_of("0\nSECTION\n2\nENTITIES\n0\nLINE\n10"),
+  EXPECT_EQ(dxf_error_of("0\nSECTION\n2\nENTITIES\n0\nLINE\n10"),
             "t.dxf:7: group code 10 without a value at the end of the file");
-  EXPECT_EQ(error_of("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1\n"),
+  EXPECT_EQ(dxf_error_of("0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1\n"),
             "t.dxf:1: the ENTITIES section has no end (ENDSEC): the file is truncated");
-  EXPECT_EQ(error_of("0\nSECTION\n0\nENTITIES\n"),
+  EXPECT_EQ(dxf_error_of("0\nSECTION\n0\nENTITIES\n"),
             "t.dxf:4: expected the section name (group code 2) after SECTION, found group code 0");
   // Without EOF, and ended by EOF without ENDSEC: fine.
-  EXPECT_EQ(error_of("0\nSECTION\n2\nENTITIES\n0\nLINE\n11\n1\n0\nENDSEC\n"), "");
-  EXPECT_EQ(error_of("0\nSECTION\n2\nENTITIES\n0\nLINE\n11\n1\n0\nEOF\n"), "");
+  EXPECT_EQ(dxf_error_of("0\nSECTION\n2\nENTITIES\n0\nLINE\n11\n1\n0\nENDSEC\n"), "");
+  EXPECT_EQ(dxf_error_of("0\nSECTION\n2\nENTITIES\n0\nLINE\n11\n1\n0\nEOF\n"), "");
 }
 
 TEST(DxfReader, LimitsAndOverflow) {
   DxfReadOptions options;
   options.max_segments = 3;
-  EXPECT_EQ(error_of(entities("0\nLWPOLYLINE\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n10\n0\n20\n1\n"), options),
+  EXPECT_EQ(dxf_error_of(entities("0\nLWPOLYLINE\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n10\n0\n20\n1\n"), options),
             "t.dxf:5: more than 3 segments");
-  EXPECT_EQ(error_of(entities("0\nCIRCLE\n10\n1e308\n40\n1e308\n")), "t.dxf:5: coordinates out of range");
-  EXPECT_EQ(error_of(entities("0\nELLIPSE\n10\n1e308\n11\n1e308\n")), "t.dxf:5: coordinates out of range");
+  EXPECT_EQ(dxf_error_of(entities("0\nCIRCLE\n10\n1e308\n40\n1e308\n")), "t.dxf:5: coordinates out of range");
+  EXPECT_EQ(dxf_error_of(entities("0\nELLIPSE\n10\n1e308\n11\n1e308\n")), "t.dxf:5: coordinates out of range");
   // Within the convex hull of its control points a spline cannot overflow, but its weights can.
-  EXPECT_EQ(error_of(entities("0\nSPLINE\n71\n2\n10\n0\n20\n0\n10\n1e308\n20\n1e308\n10\n-1e308\n20\n0\n")), "");
-  EXPECT_EQ(error_of(entities("0\nSPLINE\n71\n2\n41\n1\n41\n1e10\n41\n1\n"
+  EXPECT_EQ(dxf_error_of(entities("0\nSPLINE\n71\n2\n10\n0\n20\n0\n10\n1e308\n20\n1e308\n10\n-1e308\n20\n0\n")), "");
+  EXPECT_EQ(dxf_error_of(entities("0\nSPLINE\n71\n2\n41\n1\n41\n1e10\n41\n1\n"
                               "10\n0\n20\n0\n10\n1e308\n20\n1e308\n10\n-1e308\n20\n0\n")),
             "t.dxf:5: coordinates out of range");
 }
@@ -559,16 +558,16 @@ TEST(DxfReader, BinaryDxfErrorsGiveTheByteOffset) {
   const std::size_t at = b.bytes.size();  // 22 + 10 + 11 + 7 = 50
   b.real(10, std::nan(""));
   b.text(0, "ENDSEC");
-  EXPECT_EQ(error_of(b.bytes), "t.dxf: byte " + std::to_string(at) + ": bad number 'nan' for group code 10");
+  EXPECT_EQ(dxf_error_of(b.bytes), "t.dxf: byte " + std::to_string(at) + ": bad number 'nan' for group code 10");
   BinaryDxf truncated;
   truncated.text(0, "SECTION").text(2, "ENTITIES").text(0, "LINE").code(10).bytes += "abc";
-  EXPECT_EQ(error_of(truncated.bytes), "t.dxf: byte 50: truncated value of group code 10");
+  EXPECT_EQ(dxf_error_of(truncated.bytes), "t.dxf: byte 50: truncated value of group code 10");
   BinaryDxf unterminated;
   unterminated.text(0, "SECTION").code(2).bytes += "ENTI";
-  EXPECT_EQ(error_of(unterminated.bytes), "t.dxf: byte 32: unterminated string value of group code 2");
+  EXPECT_EQ(dxf_error_of(unterminated.bytes), "t.dxf: byte 32: unterminated string value of group code 2");
   BinaryDxf bad_code;
   bad_code.text(0, "SECTION").code(40000);
-  EXPECT_EQ(error_of(bad_code.bytes), "t.dxf: byte 32: bad group code 40000");
+  EXPECT_EQ(dxf_error_of(bad_code.bytes), "t.dxf: byte 32: bad group code 40000");
 }
 
 TEST(DxfReader, BinaryDxfR12OneByteCodes) {

@@ -19,15 +19,11 @@
 
 #include "io/error.hpp"
 #include "machining/feed_override.hpp"
+#include "project_paths.hpp"
 
 namespace {
 
 using namespace tk::machining;
-
-std::filesystem::path project_root() {
-  const char* root = std::getenv("TOOLKIT_ROOT");  // ctest sets it
-  return root ? std::filesystem::path(root) : std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
-}
 
 FeedOverrideParams modified_law() {
   FeedOverrideParams law;  // k = p = 0.1, d = 25, M_z = 60
@@ -159,7 +155,7 @@ void compare_grid_with_oracle(const FeedOverrideParams& base, const std::string&
       out << line;
     }
   }
-  const std::string command = "/usr/bin/python3 '" + (project_root() / "test" / "oracle" / "fuzzyfeed_law.py").string() +
+  const std::string command = "/usr/bin/python3 '" + (tk::test::project_root() / "test" / "oracle" / "fuzzyfeed_law.py").string() +
                               "' grid " + options + " < '" + input.string() + "'";
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr) << command;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <numbers>
 
 #include "io/error.hpp"
 #include "gcode_program.hpp"
@@ -14,11 +15,9 @@ using namespace tk::motion;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 using gcode_test::error_of;
+using gcode_test::expect_point;
 using gcode_test::run;
-
 
 #define EXPECT_ERROR(program, text)                                                          \
   do {                                                                                       \
@@ -26,12 +25,6 @@ using gcode_test::run;
     EXPECT_NE(message_.find(text), std::string::npos) << "program: " << (program) << "\n" \
                                                       << "error: '" << message_ << "'";    \
   } while (0)
-
-void expect_point(const Vec3& actual, double x, double y, double z, double tolerance = 1e-9) {
-  EXPECT_NEAR(actual.x, x, tolerance);
-  EXPECT_NEAR(actual.y, y, tolerance);
-  EXPECT_NEAR(actual.z, z, tolerance);
-}
 
 }  // namespace
 
@@ -209,7 +202,7 @@ TEST(GcodeInterpreter, InverseTime) {
   EXPECT_DOUBLE_EQ(m[0].duration, 30);
   EXPECT_DOUBLE_EQ(m[0].feed, 10.0 / 30);
   EXPECT_DOUBLE_EQ(m[1].duration, 10);
-  EXPECT_NEAR(m[1].feed, 5 * kPi / 10, 1e-12);  // a half circle of radius 5 in 10 s
+  EXPECT_NEAR(m[1].feed, 5 * std::numbers::pi / 10, 1e-12);  // a half circle of radius 5 in 10 s
   EXPECT_ERROR("G93 G1 X10 F2\nX20", "G1 in inverse time mode (G93) without an F word");
   EXPECT_ERROR("G93 G1 X10 F0", "feed rate is zero");
   EXPECT_ERROR("G93 G1 X1 F1\nG94 G1 X2", "feed rate is zero");  // G94 needs a new F
@@ -224,12 +217,12 @@ TEST(GcodeArc, CentreFormatAndArcDistanceModes) {
   EXPECT_EQ(m[1].kind, MotionKind::arc);
   EXPECT_FALSE(m[1].clockwise);
   expect_point(m[1].center, 0, 0, 0);
-  EXPECT_NEAR(arc_sweep(m[1]), kPi / 2, 1e-12);
+  EXPECT_NEAR(arc_sweep(m[1]), std::numbers::pi / 2, 1e-12);
   EXPECT_DOUBLE_EQ(m[1].feed, 1);
   expect_point(m[3].center, 0, 5, 0);  // absolute centre
   expect_point(m[4].center, 0, 5, 0);  // centre relative to the start (0, 15)
   EXPECT_TRUE(m[4].clockwise);
-  EXPECT_NEAR(arc_sweep(m[4]), kPi / 2, 1e-12);
+  EXPECT_NEAR(arc_sweep(m[4]), std::numbers::pi / 2, 1e-12);
 }
 
 TEST(GcodeArc, RadiusFormat) {
@@ -238,10 +231,10 @@ TEST(GcodeArc, RadiusFormat) {
     double centre_y, sweep;
   };
   const double h = std::sqrt(75.0);  // 8.660254: the centre's distance from the chord for R10
-  const Case cases[] = {{"G2 X10 R5", 0, kPi},           {"G2 X10 R-5", 0, kPi},
-                        {"G3 X10 R5", 0, kPi},           {"G2 X10 R10", -h, kPi / 3},
-                        {"G2 X10 R-10", h, 5 * kPi / 3}, {"G3 X10 R10", h, kPi / 3},
-                        {"G3 X10 R-10", -h, 5 * kPi / 3}, {"G2 X10 R4.999", 0, kPi}};
+  const Case cases[] = {{"G2 X10 R5", 0, std::numbers::pi},           {"G2 X10 R-5", 0, std::numbers::pi},
+                        {"G3 X10 R5", 0, std::numbers::pi},           {"G2 X10 R10", -h, std::numbers::pi / 3},
+                        {"G2 X10 R-10", h, 5 * std::numbers::pi / 3}, {"G3 X10 R10", h, std::numbers::pi / 3},
+                        {"G3 X10 R-10", -h, 5 * std::numbers::pi / 3}, {"G2 X10 R4.999", 0, std::numbers::pi}};
   for (const Case& c : cases) {
     const auto m = run(std::string("F100\n") + c.block);
     ASSERT_EQ(m.size(), 1u) << c.block;
@@ -261,13 +254,13 @@ TEST(GcodeArc, FullCirclesTurnsAndHelix) {
   expect_point(m[1].end, 10, 0, 0);
   expect_point(m[1].center, 0, 0, 0);
   EXPECT_EQ(m[1].turns, 0u);
-  EXPECT_NEAR(arc_sweep(m[1]), 2 * kPi, 1e-12);
+  EXPECT_NEAR(arc_sweep(m[1]), 2 * std::numbers::pi, 1e-12);
   EXPECT_EQ(m[2].turns, 2u);
-  EXPECT_NEAR(arc_sweep(m[2]), 6 * kPi, 1e-12);
+  EXPECT_NEAR(arc_sweep(m[2]), 6 * std::numbers::pi, 1e-12);
   // Helix: the normal axis moves linearly; the centre stays at the start's Z.
   expect_point(m[3].end, -10, 0, 5);
   expect_point(m[3].center, 0, 0, 0);
-  EXPECT_NEAR(arc_sweep(m[3]), kPi, 1e-12);
+  EXPECT_NEAR(arc_sweep(m[3]), std::numbers::pi, 1e-12);
   EXPECT_ERROR("F100 G2 X1 I1 P0", "the number of turns must be a positive whole number");
   EXPECT_ERROR("F100 G2 X1 I1 P1.5", "the number of turns must be a positive whole number");
   // An M code taking P owns it: the arc makes one turn.
@@ -281,12 +274,12 @@ TEST(GcodeArc, PlanesG18AndG19) {
   EXPECT_EQ(m[1].axis1, 0);
   EXPECT_EQ(m[1].axis2, 1);
   expect_point(m[1].center, 0, 0, 0);
-  EXPECT_NEAR(arc_sweep(m[1]), kPi / 2, 1e-12);  // clockwise seen from +Y, from +X to +Z
+  EXPECT_NEAR(arc_sweep(m[1]), std::numbers::pi / 2, 1e-12);  // clockwise seen from +Y, from +X to +Z
   EXPECT_EQ(m[3].axis0, 1);
   EXPECT_EQ(m[3].axis1, 2);
   EXPECT_EQ(m[3].axis2, 0);
   expect_point(m[3].center, 0, 0, 0);
-  EXPECT_NEAR(arc_sweep(m[3]), kPi / 2, 1e-12);
+  EXPECT_NEAR(arc_sweep(m[3]), std::numbers::pi / 2, 1e-12);
   // R arcs in G18: from X10 to Z10 the short way round.
   const auto r = run("G18 G0 X10\nG2 X0 Z10 R10 F60");
   expect_point(r[1].center, 0, 0, 0);

@@ -16,15 +16,15 @@
 #include <regex>
 #pragma GCC diagnostic pop
 #include <sstream>
+#include <numbers>
 
 #include "io/error.hpp"
 #include "motion/gcode.hpp"
+#include "project_paths.hpp"
 
 using namespace tk::motion;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void expect_point(const Vec3& actual, const Vec3& expected, double tolerance = 1e-9) {
   EXPECT_NEAR(actual.x, expected.x, tolerance);
@@ -46,19 +46,10 @@ std::vector<Motion> run_file(const std::filesystem::path& file, GcodeInterpreter
   return motions;
 }
 
-/// The corpus folder: $TOOLKIT_ROOT/../shared/corpus/gcode (ctest sets
-/// TOOLKIT_ROOT), or beside this source tree when run by hand.
-std::filesystem::path corpus_folder() {
-  const char* root = std::getenv("TOOLKIT_ROOT");
-  const std::filesystem::path project =
-      root ? std::filesystem::path(root) : std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
-  return project / ".." / "shared" / "corpus" / "gcode";
-}
-
 std::vector<std::filesystem::path> corpus_files() {
   std::vector<std::filesystem::path> files;
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(corpus_folder(), error)) {
+  for (const auto& entry : std::filesystem::directory_iterator(tk::test::corpus_folder("gcode"), error)) {
     const auto extension = entry.path().extension();
     if (extension == ".ngc" || extension == ".gcode") files.push_back(entry.path());
   }
@@ -99,7 +90,7 @@ Vec3 last_programmed_position(const std::filesystem::path& file) {
 
 TEST(GcodeCorpus, EveryProgramRunsToItsLastProgrammedPosition) {
   const auto files = corpus_files();
-  if (files.empty()) GTEST_SKIP() << "no G-code corpus at " << corpus_folder();
+  if (files.empty()) GTEST_SKIP() << "no G-code corpus at " << tk::test::corpus_folder("gcode");
   for (const auto& file : files) {
     SCOPED_TRACE(file.filename().string());
     // Not lenient; tools of no length, so that G43 leaves the last
@@ -127,13 +118,13 @@ TEST(GcodeCorpus, EveryProgramRunsToItsLastProgrammedPosition) {
 }
 
 TEST(GcodeCorpus, ConstructsOfParticularPrograms) {
-  const auto folder = corpus_folder();
+  const auto folder = tk::test::corpus_folder("gcode");
   if (!std::filesystem::exists(folder / "linuxcnc_3dtest.ngc")) GTEST_SKIP() << "no G-code corpus at " << folder;
   // 3dtest: a full circle in each plane, given by I/J/K only.
   GcodeInterpreter dtest;
   int full_circles = 0;
   for (const Motion& m : run_file(folder / "linuxcnc_3dtest.ngc", dtest))
-    if (m.kind == MotionKind::arc && std::abs(arc_sweep(m) - 2 * kPi) < 1e-9) ++full_circles;
+    if (m.kind == MotionKind::arc && std::abs(arc_sweep(m) - 2 * std::numbers::pi) < 1e-9) ++full_circles;
   EXPECT_EQ(full_circles, 3);
   EXPECT_TRUE(dtest.program_ended());
   // tort: helical arcs in all three planes.

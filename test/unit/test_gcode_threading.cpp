@@ -20,8 +20,7 @@ namespace {
 using gcode_test::error_of;
 using gcode_test::run;
 
-
-void expect_point(const Vec3& actual, double x, double y, double z, double tolerance = 1e-12) {
+void expect_exact_point(const Vec3& actual, double x, double y, double z, double tolerance = 1e-12) {
   EXPECT_NEAR(actual.x, x, tolerance);
   EXPECT_NEAR(actual.y, y, tolerance);
   EXPECT_NEAR(actual.z, z, tolerance);
@@ -54,8 +53,8 @@ TEST(GcodeThreading, G33MovesAtKTimesTheSpindleSpeed) {
   EXPECT_EQ(thread.kind, MotionKind::linear);
   EXPECT_TRUE(thread.spindle_synchronised);
   EXPECT_FALSE(m[0].spindle_synchronised);
-  expect_point(thread.start, 10, 0, 2);
-  expect_point(thread.end, 10, 0, -20);
+  expect_exact_point(thread.start, 10, 0, 2);
+  expect_exact_point(thread.end, 10, 0, -20);
   // 2 mm per revolution at 300 rpm: 600 mm/min, 10 mm/s.
   EXPECT_DOUBLE_EQ(thread.feed, 10.0);
   EXPECT_FALSE(thread.inverse_time);
@@ -66,7 +65,7 @@ TEST(GcodeThreading, G33IsModalButEveryBlockNeedsItsK) {
   const auto m = run("S120 M4\nG33 Z-10 K1.5\nZ-20 K3\nG0 X5", interpreter);
   ASSERT_EQ(m.size(), 3u);
   EXPECT_TRUE(m[1].spindle_synchronised);  // no G word: still G33
-  expect_point(m[1].end, 0, 0, -20);
+  expect_exact_point(m[1].end, 0, 0, -20);
   EXPECT_DOUBLE_EQ(m[0].feed, 1.5 * 120 / 60);  // 3 mm/s
   EXPECT_DOUBLE_EQ(m[1].feed, 3.0 * 120 / 60);  // 6 mm/s: each block's own K
   EXPECT_FALSE(m[2].spindle_synchronised);
@@ -94,7 +93,7 @@ TEST(GcodeThreading, KFollowsTheUnitsSDoesNot) {
   const auto m = run("G20 S600 M3\nG33 Z-1 K0.0625");
   ASSERT_EQ(m.size(), 1u);
   EXPECT_DOUBLE_EQ(m[0].feed, 0.0625 * 25.4 * 600 / 60);
-  expect_point(m[0].end, 0, 0, -25.4);
+  expect_exact_point(m[0].end, 0, 0, -25.4);
 }
 
 TEST(GcodeThreading, FeedRateAndFeedModePlayNoPart) {
@@ -163,13 +162,13 @@ TEST(GcodeThreading, DiameterModeHalvesXWords) {
       "G90 G7 G20 X1",    // 1 in diameter: 12.7 mm radius
       interpreter);
   ASSERT_EQ(m.size(), 6u);
-  expect_point(m[0].end, 20, 0, 0);
-  expect_point(m[1].end, 10, 0, -1);
-  expect_point(m[2].end, 15, 4, -1);
-  expect_point(m[3].end, 13, 4, -1);
-  expect_point(m[4].end, 16, 4, -1);
-  expect_point(m[5].end, 12.7, 4, -1);
-  expect_point(interpreter.position(), 12.7, 4, -1);
+  expect_exact_point(m[0].end, 20, 0, 0);
+  expect_exact_point(m[1].end, 10, 0, -1);
+  expect_exact_point(m[2].end, 15, 4, -1);
+  expect_exact_point(m[3].end, 13, 4, -1);
+  expect_exact_point(m[4].end, 16, 4, -1);
+  expect_exact_point(m[5].end, 12.7, 4, -1);
+  expect_exact_point(interpreter.position(), 12.7, 4, -1);
   EXPECT_EQ(error_of("G7 G8"), "G7 and G8 are both in the lathe diameter mode group");
   EXPECT_TRUE(interpreter.unused_words().empty());  // G7 and G8 act
 }
@@ -181,9 +180,9 @@ TEST(GcodeThreading, DiameterModeLeavesArcCentreWordsAndRRadii) {
   // and sqrt(2.5^2 + 5^2) from the end: an error.
   const auto m = run("G18 G90 G7\nG0 X10 Z0\nG2 X20 Z-5 I5 K0 F100");
   ASSERT_EQ(m.size(), 2u);
-  expect_point(m[1].start, 5, 0, 0);
-  expect_point(m[1].end, 10, 0, -5);
-  expect_point(m[1].center, 10, 0, 0);
+  expect_exact_point(m[1].start, 5, 0, 0);
+  expect_exact_point(m[1].end, 10, 0, -5);
+  expect_exact_point(m[1].center, 10, 0, 0);
   // R5 from (5, 0) to (10, -5): a chord of sqrt(50) = 7.07 mm fits a
   // radius of 5 (it would not fit 2.5); the centre lies 5 from both ends.
   const auto r = run("G18 G90 G7\nG0 X10 Z0\nG2 X20 Z-5 R5 F100");
@@ -197,8 +196,8 @@ TEST(GcodeThreading, G33InDiameterMode) {
   // A taper pass from diameter 10 to 12 over Z-10: X radius 5 to 6.
   const auto m = run("G7 S500 M3\nG0 X10 Z0\nG33 X12 Z-10 K1");
   ASSERT_EQ(m.size(), 2u);
-  expect_point(m[1].start, 5, 0, 0);
-  expect_point(m[1].end, 6, 0, -10);
+  expect_exact_point(m[1].start, 5, 0, 0);
+  expect_exact_point(m[1].end, 6, 0, -10);
   EXPECT_DOUBLE_EQ(m[1].feed, 1.0 * 500 / 60);  // K is not halved
 }
 

@@ -10,17 +10,13 @@
 
 #include "primes/number.hpp"
 #include "primes/primality.hpp"
+#include "brute_force_prime.hpp"
 
 using namespace tk::primes;
 
-namespace {
+using tk::test::brute_force_prime;
 
-bool brute_force_prime(std::uint64_t n) {
-  if (n < 2) return false;
-  for (std::uint64_t d = 2; d * d <= n; ++d)
-    if (n % d == 0) return false;
-  return true;
-}
+namespace {
 
 TestOutcome grh_test(const mpz_class& n) {
   TestPlan plan;

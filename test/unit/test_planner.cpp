@@ -16,7 +16,7 @@ namespace {
 
 using namespace tk::motion;
 
-Motion line(Vec3 from, Vec3 to, double feed) {
+Motion feed_line(Vec3 from, Vec3 to, double feed) {
   Motion m;
   m.start = from;
   m.end = to;
@@ -37,7 +37,7 @@ TEST(Planner, OneMoveIsATrapezoidWithTheClosedFormTimes) {
   MachineLimits limits;
   limits.acceleration = 100;
   limits.max_speed = 1000;
-  const auto blocks = plan({line({0, 0, 0}, {10, 0, 0}, 10)}, limits);
+  const auto blocks = plan({feed_line({0, 0, 0}, {10, 0, 0}, 10)}, limits);
   ASSERT_EQ(blocks.size(), 1u);
   const PlannedBlock& b = blocks[0];
   // 0.1 s to reach 10 mm/s over 0.5 mm, 9 mm at 10 mm/s, 0.1 s to stop.
@@ -58,7 +58,7 @@ TEST(Planner, OneMoveIsATrapezoidWithTheClosedFormTimes) {
 TEST(Planner, AShortMoveNeverReachesItsFeedAndPeaksHalfway) {
   MachineLimits limits;
   limits.acceleration = 100;
-  const auto blocks = plan({line({0, 0, 0}, {1, 0, 0}, 100)}, limits);
+  const auto blocks = plan({feed_line({0, 0, 0}, {1, 0, 0}, 100)}, limits);
   ASSERT_EQ(blocks.size(), 1u);
   EXPECT_NEAR(blocks[0].cruise_speed, 10, 1e-12);  // sqrt(a * L)
   EXPECT_NEAR(blocks[0].duration, 0.2, 1e-12);
@@ -68,17 +68,17 @@ TEST(Planner, CollinearBlocksKeepTheirSpeedAndCornersSlowToTheJunctionSpeed) {
   MachineLimits limits;
   limits.acceleration = 100;
   limits.junction_deviation = 0.01;
-  const auto straight = plan({line({0, 0, 0}, {10, 0, 0}, 10), line({10, 0, 0}, {20, 0, 0}, 10)}, limits);
+  const auto straight = plan({feed_line({0, 0, 0}, {10, 0, 0}, 10), feed_line({10, 0, 0}, {20, 0, 0}, 10)}, limits);
   ASSERT_EQ(straight.size(), 2u);
   EXPECT_NEAR(straight[0].exit_speed, 10, 1e-12);
   EXPECT_NEAR(straight[1].entry_speed, 10, 1e-12);
   EXPECT_NEAR(straight[0].duration + straight[1].duration, 2.1, 1e-12);
   // A right angle: sin(45 deg) = 0.7071; v^2 = a * d * s / (1 - s).
-  const auto corner = plan({line({0, 0, 0}, {10, 0, 0}, 10), line({10, 0, 0}, {10, 10, 0}, 10)}, limits);
+  const auto corner = plan({feed_line({0, 0, 0}, {10, 0, 0}, 10), feed_line({10, 0, 0}, {10, 10, 0}, 10)}, limits);
   const double s = std::sqrt(0.5);
   EXPECT_NEAR(corner[0].exit_speed, std::sqrt(100 * 0.01 * s / (1 - s)), 1e-12);
   // Reversal: a full stop.
-  const auto back = plan({line({0, 0, 0}, {10, 0, 0}, 10), line({10, 0, 0}, {0, 0, 0}, 10)}, limits);
+  const auto back = plan({feed_line({0, 0, 0}, {10, 0, 0}, 10), feed_line({10, 0, 0}, {0, 0, 0}, 10)}, limits);
   EXPECT_EQ(back[0].exit_speed, 0);
 }
 
@@ -103,7 +103,7 @@ TEST(Planner, ADwellStopsTheMachineAndAddsItsTime) {
   Motion dwell;
   dwell.kind = MotionKind::dwell;
   dwell.duration = 2.5;
-  const auto blocks = plan({line({0, 0, 0}, {10, 0, 0}, 10), dwell, line({10, 0, 0}, {20, 0, 0}, 10)}, limits);
+  const auto blocks = plan({feed_line({0, 0, 0}, {10, 0, 0}, 10), dwell, feed_line({10, 0, 0}, {20, 0, 0}, 10)}, limits);
   ASSERT_EQ(blocks.size(), 3u);
   EXPECT_EQ(blocks[0].exit_speed, 0);
   EXPECT_EQ(blocks[1].duration, 2.5);
@@ -115,7 +115,7 @@ TEST(Planner, ALongerLookaheadOnlyShortensTheProgram) {
   Vec3 at{};
   for (int i = 0; i < 300; ++i) {
     const Vec3 next{at.x + 0.5, (i % 2) ? 0.0 : 0.05, 0};
-    zigzag.push_back(line(at, next, 50));
+    zigzag.push_back(feed_line(at, next, 50));
     at = next;
   }
   double previous = INFINITY;
@@ -148,14 +148,14 @@ TEST(Planner, AxisLimitsCapSpeedAndAccelerationByTheAxisShare) {
   limits.axis_speed = {10, 1000, 1000};
   limits.axis_acceleration = {100, 1000, 1000};
   const double side = 100 / std::sqrt(2.0);
-  const auto blocks = plan({line({0, 0, 0}, {side, side, 0}, 100)}, limits);
+  const auto blocks = plan({feed_line({0, 0, 0}, {side, side, 0}, 100)}, limits);
   ASSERT_EQ(blocks.size(), 1u);
   EXPECT_NEAR(blocks[0].cruise_speed, 10 * std::sqrt(2.0), 1e-9);
   EXPECT_NEAR(blocks[0].acceleration, 100 * std::sqrt(2.0), 1e-9);
   EXPECT_NEAR(blocks[0].duration, 100 / (10 * std::sqrt(2.0)) + 0.1, 1e-9);
   EXPECT_TRUE(blocks[0].feed_capped);
   // Along Y only, X's limits do not apply.
-  const auto along_y = plan({line({0, 0, 0}, {0, 100, 0}, 100)}, limits);
+  const auto along_y = plan({feed_line({0, 0, 0}, {0, 100, 0}, 100)}, limits);
   EXPECT_NEAR(along_y[0].cruise_speed, 100, 1e-9);
   EXPECT_NEAR(along_y[0].acceleration, 1000, 1e-9);
   EXPECT_FALSE(along_y[0].feed_capped);
@@ -168,7 +168,7 @@ TEST(Planner, RapidsRunAtTheAxisLimit) {
   limits.acceleration = 100;
   limits.rapid_speed = 100;
   limits.axis_speed = {1000, 1000, 5};
-  Motion rapid = line({0, 0, 0}, {0, 0, -10}, 0);
+  Motion rapid = feed_line({0, 0, 0}, {0, 0, -10}, 0);
   rapid.kind = MotionKind::rapid;
   const auto blocks = plan({rapid}, limits);
   EXPECT_NEAR(blocks[0].cruise_speed, 5, 1e-12);

@@ -10,8 +10,11 @@
 
 #include "primes/montgomery64.hpp"
 #include "primes/prime64.hpp"
+#include "brute_force_prime.hpp"
 
 using namespace tk::primes;
+
+using tk::test::brute_force_prime;
 
 namespace {
 
@@ -22,13 +25,6 @@ std::vector<bool> sieve(std::size_t limit) {
     if (prime[i])
       for (std::size_t j = i * i; j <= limit; j += i) prime[j] = false;
   return prime;
-}
-
-bool brute_force_prime(u64 n) {
-  if (n < 2) return false;
-  for (u64 d = 2; d * d <= n; ++d)
-    if (n % d == 0) return false;
-  return true;
 }
 
 u64 naive_powmod(u64 b, u64 e, u64 m) {

@@ -16,7 +16,7 @@ namespace {
 
 using namespace tk::motion;
 
-constexpr std::array<double, 3> kStepsPerMm{200, 160, 400};
+constexpr std::array<double, 3> kEstimateStepsPerMm{200, 160, 400};
 
 double pulses_made(Stepper& stepper, const Motion& motion) {
   double pulses = 0;
@@ -31,13 +31,13 @@ TEST(PulseEstimate, LinesImplyTheStepsBetweenTheirQuantisedEnds) {
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> coordinate(-50, 50);
   for (StepMethod method : {StepMethod::nearest, StepMethod::bresenham, StepMethod::dda}) {
-    Stepper stepper(method, kStepsPerMm);
+    Stepper stepper(method, kEstimateStepsPerMm);
     Vec3 from{};
     for (int line = 0; line < 200; ++line) {
       Motion motion;
       motion.start = from;
       motion.end = Vec3{coordinate(random), coordinate(random), line % 3 == 0 ? coordinate(random) : from.z};
-      EXPECT_EQ(implied_pulses(motion, kStepsPerMm), pulses_made(stepper, motion)) << "line " << line;
+      EXPECT_EQ(implied_pulses(motion, kEstimateStepsPerMm), pulses_made(stepper, motion)) << "line " << line;
       from = motion.end;
     }
   }
@@ -47,7 +47,7 @@ TEST(PulseEstimate, ArcsImplyTheTravelOfEachAxisWithinTheRoundingAtTheExtremes) 
   std::mt19937_64 random(13);
   std::uniform_real_distribution<double> unit(0, 1);
   for (StepMethod method : {StepMethod::nearest, StepMethod::bresenham}) {
-    Stepper stepper(method, kStepsPerMm);
+    Stepper stepper(method, kEstimateStepsPerMm);
     Vec3 from{};
     for (int arc = 0; arc < 150; ++arc) {
       Motion motion;
@@ -61,7 +61,7 @@ TEST(PulseEstimate, ArcsImplyTheTravelOfEachAxisWithinTheRoundingAtTheExtremes) 
       const double end_angle = start_angle + (motion.clockwise ? -sweep : sweep);
       motion.end = Vec3{motion.center.x + radius * std::cos(end_angle), motion.center.y + radius * std::sin(end_angle),
                         from.z + (arc % 3 == 0 ? 4 * unit(random) - 2 : 0)};
-      const double made = pulses_made(stepper, motion), implied = implied_pulses(motion, kStepsPerMm);
+      const double made = pulses_made(stepper, motion), implied = implied_pulses(motion, kEstimateStepsPerMm);
       // A step of rounding at each end and at each extreme of each plane axis.
       const double turns = (sweep + 2 * std::numbers::pi * static_cast<double>(motion.turns)) / std::numbers::pi;
       EXPECT_NEAR(implied, made, 2 * (turns + 3)) << "arc " << arc << " radius " << radius << " sweep " << sweep;
@@ -74,7 +74,7 @@ TEST(PulseEstimate, DwellsImplyNone) {
   Motion dwell;
   dwell.kind = MotionKind::dwell;
   dwell.duration = 5;
-  EXPECT_EQ(implied_pulses(dwell, kStepsPerMm), 0);
+  EXPECT_EQ(implied_pulses(dwell, kEstimateStepsPerMm), 0);
 }
 
 }  // namespace

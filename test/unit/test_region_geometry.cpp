@@ -22,7 +22,6 @@ namespace {
 
 using namespace tk::cad;
 using probe::Comparison, probe::compare, probe::probe_points;
-constexpr double kPi = std::numbers::pi;
 
 Segment line(Point a, Point b, std::uint32_t entity = 0) {
   Segment s;
@@ -43,25 +42,25 @@ TEST(SegmentGeometry, ArcShapeFromBulge) {
   EXPECT_NEAR(half.centre.x, 1, 1e-15);
   EXPECT_NEAR(half.centre.y, 0, 1e-15);
   EXPECT_NEAR(half.radius, 1, 1e-15);
-  EXPECT_NEAR(half.sweep, kPi, 1e-15);
-  EXPECT_NEAR(std::abs(half.start_angle), kPi, 1e-15);
+  EXPECT_NEAR(half.sweep, std::numbers::pi, 1e-15);
+  EXPECT_NEAR(std::abs(half.start_angle), std::numbers::pi, 1e-15);
   // Counter-clockwise from (0,0) to (2,0) about (1,0) passes below.
   const Point middle = point_at(arc({0, 0}, {2, 0}, 1), 0.5);
   EXPECT_NEAR(middle.x, 1, 1e-15);
   EXPECT_NEAR(middle.y, -1, 1e-15);
 
-  const double quarter = std::tan(kPi / 8);
+  const double quarter = std::tan(std::numbers::pi / 8);
   const ArcShape ccw = arc_shape(arc({1, 0}, {0, 1}, quarter));
   EXPECT_NEAR(ccw.centre.x, 0, 1e-15);
   EXPECT_NEAR(ccw.centre.y, 0, 1e-15);
   EXPECT_NEAR(ccw.radius, 1, 1e-15);
-  EXPECT_NEAR(ccw.sweep, kPi / 2, 1e-15);
+  EXPECT_NEAR(ccw.sweep, std::numbers::pi / 2, 1e-15);
   EXPECT_NEAR(ccw.start_angle, 0, 1e-15);
   const ArcShape cw = arc_shape(arc({0, 1}, {1, 0}, -quarter));
   EXPECT_NEAR(cw.centre.x, 0, 1e-15);
   EXPECT_NEAR(cw.centre.y, 0, 1e-15);
-  EXPECT_NEAR(cw.sweep, -kPi / 2, 1e-15);
-  EXPECT_NEAR(cw.start_angle, kPi / 2, 1e-15);
+  EXPECT_NEAR(cw.sweep, -std::numbers::pi / 2, 1e-15);
+  EXPECT_NEAR(cw.start_angle, std::numbers::pi / 2, 1e-15);
   const Point m = point_at(arc({0, 1}, {1, 0}, -quarter), 0.5);
   EXPECT_NEAR(m.x, std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(m.y, std::sqrt(0.5), 1e-15);
@@ -70,19 +69,19 @@ TEST(SegmentGeometry, ArcShapeFromBulge) {
   EXPECT_NEAR(tangent.y, 1, 1e-15);
 
   // Three quarters of a circle: bulge tan(3 pi / 8) > 1, centre right of the chord.
-  const ArcShape major = arc_shape(arc({1, 0}, {0, 1}, -std::tan(3 * kPi / 8)));
+  const ArcShape major = arc_shape(arc({1, 0}, {0, 1}, -std::tan(3 * std::numbers::pi / 8)));
   EXPECT_NEAR(major.centre.x, 0, 1e-14);
   EXPECT_NEAR(major.centre.y, 0, 1e-14);
   EXPECT_NEAR(major.radius, 1, 1e-14);
-  EXPECT_NEAR(bulge_of_sweep(kPi), 1, 1e-15);
+  EXPECT_NEAR(bulge_of_sweep(std::numbers::pi), 1, 1e-15);
   EXPECT_FALSE(is_arc(arc({0, 0}, {1, 0}, 1e-13)));
   EXPECT_TRUE(is_arc(arc({0, 0}, {1, 0}, 1e-11)));
 }
 
 TEST(SegmentGeometry, LengthsBoxesAreasAndFlattening) {
   EXPECT_DOUBLE_EQ(segment_length(line({1, 1}, {4, 5})), 5);
-  EXPECT_NEAR(segment_length(arc({2, 0}, {0, 2}, std::tan(kPi / 8))), kPi, 1e-14);
-  EXPECT_NEAR(segment_length(arc({0, 0}, {2, 0}, -1)), kPi, 1e-14);
+  EXPECT_NEAR(segment_length(arc({2, 0}, {0, 2}, std::tan(std::numbers::pi / 8))), std::numbers::pi, 1e-14);
+  EXPECT_NEAR(segment_length(arc({0, 0}, {2, 0}, -1)), std::numbers::pi, 1e-14);
   EXPECT_NEAR(segment_length(arc({0, 0}, {1, 0}, 1e-10)), 1, 1e-15);
 
   const Box half = bounding_box(arc({0, 0}, {2, 0}, 1));
@@ -90,23 +89,23 @@ TEST(SegmentGeometry, LengthsBoxesAreasAndFlattening) {
   EXPECT_NEAR(half.max_x, 2, 1e-15);
   EXPECT_NEAR(half.min_y, -1, 1e-15);
   EXPECT_NEAR(half.max_y, 0, 1e-15);
-  const Box major = bounding_box(arc({1, 0}, {0, 1}, -std::tan(3 * kPi / 8)));  // via (0,-1), (-1,0)
+  const Box major = bounding_box(arc({1, 0}, {0, 1}, -std::tan(3 * std::numbers::pi / 8)));  // via (0,-1), (-1,0)
   EXPECT_NEAR(major.min_x, -1, 1e-14);
   EXPECT_NEAR(major.min_y, -1, 1e-14);
   EXPECT_NEAR(major.max_x, 1, 1e-14);
   EXPECT_NEAR(major.max_y, 1, 1e-14);
 
-  EXPECT_NEAR(arc_area(arc({0, 0}, {2, 0}, 1)), kPi / 2, 1e-14);
-  EXPECT_NEAR(arc_area(arc({0, 0}, {2, 0}, -1)), -kPi / 2, 1e-14);
+  EXPECT_NEAR(arc_area(arc({0, 0}, {2, 0}, 1)), std::numbers::pi / 2, 1e-14);
+  EXPECT_NEAR(arc_area(arc({0, 0}, {2, 0}, -1)), -std::numbers::pi / 2, 1e-14);
   EXPECT_EQ(arc_area(line({0, 0}, {2, 0})), 0);
   // A unit circle as two arcs encloses pi.
-  EXPECT_NEAR(signed_area({arc({1, 0}, {-1, 0}, 1), arc({-1, 0}, {1, 0}, 1)}), kPi, 1e-14);
+  EXPECT_NEAR(signed_area({arc({1, 0}, {-1, 0}, 1), arc({-1, 0}, {1, 0}, 1)}), std::numbers::pi, 1e-14);
 
-  const Segment quarter = arc({1, 0}, {0, 1}, std::tan(kPi / 8));
+  const Segment quarter = arc({1, 0}, {0, 1}, std::tan(std::numbers::pi / 8));
   const double tolerance = 1e-3;
   std::vector<Point> points;
   flatten(quarter, tolerance, points);
-  const auto expected = static_cast<std::size_t>(std::ceil((kPi / 2) / (2 * std::acos(1 - tolerance))));
+  const auto expected = static_cast<std::size_t>(std::ceil((std::numbers::pi / 2) / (2 * std::acos(1 - tolerance))));
   EXPECT_EQ(points.size(), expected);
   EXPECT_EQ(points.back().x, 0);
   EXPECT_EQ(points.back().y, 1);
@@ -168,7 +167,7 @@ TEST(SegmentGeometry, SubSegmentAndRayParity) {
   const Segment part = sub_segment(s, 0.25, 0.75);
   EXPECT_NEAR(part.start.x, std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(part.end.y, std::sqrt(0.5), 1e-15);
-  EXPECT_NEAR(segment_length(part), kPi / 2, 1e-14);
+  EXPECT_NEAR(segment_length(part), std::numbers::pi / 2, 1e-14);
   const std::vector<Segment> circle = {s, arc({-1, 0}, {1, 0}, 1)};
   const auto inside = [&](Point p) {
     bool odd = false;
@@ -263,7 +262,7 @@ TEST(Loops, SquareWithCircularHole) {
   EXPECT_TRUE(hole.is_hole());
   EXPECT_EQ(hole.parent, 0);
   EXPECT_EQ(hole.segments.size(), 2u);
-  EXPECT_NEAR(hole.area, -4 * kPi, 1e-12);
+  EXPECT_NEAR(hole.area, -4 * std::numbers::pi, 1e-12);
   for (const Segment& s : hole.segments) EXPECT_LT(s.bulge, 0);  // clockwise
   expect_closed(outer);
   expect_closed(hole);
@@ -286,7 +285,7 @@ TEST(Loops, IslandInAHoleAndNesting) {
   EXPECT_NEAR(set.loops[2].area, -100, 1e-9);
   EXPECT_EQ(set.loops[2].parent, 0);
   EXPECT_EQ(set.loops[3].depth, 2);
-  EXPECT_NEAR(set.loops[3].area, 4 * kPi, 1e-9);
+  EXPECT_NEAR(set.loops[3].area, 4 * std::numbers::pi, 1e-9);
   EXPECT_EQ(set.loops[3].parent, 2);
   EXPECT_FALSE(set.loops[3].is_hole());
 }
@@ -360,7 +359,7 @@ TEST(Loops, ManySegmentsChainInOrder) {
   const int n = 100000;
   std::vector<Segment> polygon;
   for (int i = 0; i < n; ++i) {
-    const double a = 2 * kPi * i / n, b = 2 * kPi * (i + 1) / n;
+    const double a = 2 * std::numbers::pi * i / n, b = 2 * std::numbers::pi * (i + 1) / n;
     polygon.push_back(arc({std::cos(a), std::sin(a)}, {std::cos(b), std::sin(b)}, i % 3 ? 0 : 1e-7));
   }
   std::mt19937_64 random(5);
@@ -372,7 +371,7 @@ TEST(Loops, ManySegmentsChainInOrder) {
   const LoopSet set = build_loops(polygon, 1e-9);
   ASSERT_EQ(set.loops.size(), 1u);
   EXPECT_EQ(set.loops[0].segments.size(), std::size_t(n));
-  EXPECT_NEAR(set.loops[0].area, kPi, 1e-6);
+  EXPECT_NEAR(set.loops[0].area, std::numbers::pi, 1e-6);
   expect_closed(set.loops[0]);
 }
 
@@ -383,14 +382,13 @@ std::vector<Segment> star(std::mt19937_64& random, Point c, double radius, int n
   std::uniform_real_distribution<double> r(0.55, 1), bulge(-max_bulge, max_bulge);
   std::vector<Point> corners;
   for (int i = 0; i < n; ++i) {
-    const double a = 2 * kPi * i / n, rr = radius * (i % 2 ? r(random) : 1);
+    const double a = 2 * std::numbers::pi * i / n, rr = radius * (i % 2 ? r(random) : 1);
     corners.push_back({c.x + rr * std::cos(a), c.y + rr * std::sin(a)});
   }
   std::vector<Segment> loop;
   for (int i = 0; i < n; ++i) loop.push_back(arc(corners[i], corners[(i + 1) % n], i % 3 ? bulge(random) : 0));
   return loop;
 }
-
 
 TEST(Loops, RandomPartsComeBackWhole) {
   // Stars with arcs, holes and islands, cut into segments that are
@@ -470,7 +468,7 @@ TEST(RegionIndex, MatchesBruteForceOnStarsWithHolesAndIslands) {
   std::vector<Loop> loops;
   loops.push_back({star(random, {0, 0}, 100, 600, 0.25), 0, -1, 0});
   for (int i = 0; i < 6; ++i) {
-    const double a = 2 * kPi * i / 6;
+    const double a = 2 * std::numbers::pi * i / 6;
     loops.push_back({star(random, {40 * std::cos(a), 40 * std::sin(a)}, 12, 40 + 10 * i, 0.3), 1, 0, 0});
   }
   loops.push_back({circle({40, 0}, 3, 0, false), 2, 1, 0});  // an island in the first hole
@@ -509,9 +507,9 @@ TEST(RegionIndex, MatchesBruteForceNearTheCentreOfAFineCircle) {
   const int n = 3000;
   std::vector<Segment> fine;
   for (int i = 0; i < n; ++i) {
-    const double a = 2 * kPi * i / n, b = 2 * kPi * (i + 1) / n;
+    const double a = 2 * std::numbers::pi * i / n, b = 2 * std::numbers::pi * (i + 1) / n;
     const Point from{10 * std::cos(a), 10 * std::sin(a)}, to{10 * std::cos(b), 10 * std::sin(b)};
-    fine.push_back(arc(from, to, std::tan(kPi / n / 2)));
+    fine.push_back(arc(from, to, std::tan(std::numbers::pi / n / 2)));
   }
   const std::vector<Loop> loops = {{fine, 0, -1, 0}};
   std::mt19937_64 random(3);
@@ -530,7 +528,7 @@ TEST(RegionIndex, MatchesBruteForceWithExtremeBulgesAndFarPoints) {
   const std::vector<Segment> outline = {arc({0, 0}, {100, 0}, 1e-10),  arc({100, 0}, {100, 50}, -3e-9),
                                         arc({100, 50}, {60, 50}, 2.5),  line({60, 50}, {40, 50}),
                                         arc({40, 50}, {0, 50}, -0.8),   arc({0, 50}, {0, 0}, 1e-11)};
-  const std::vector<Segment> hole = {arc({20, 20}, {30, 20}, -std::tan(3 * kPi / 8)), arc({30, 20}, {20, 20}, -1e-6)};
+  const std::vector<Segment> hole = {arc({20, 20}, {30, 20}, -std::tan(3 * std::numbers::pi / 8)), arc({30, 20}, {20, 20}, -1e-6)};
   const std::vector<Loop> loops = {{outline, 0, -1, 0}, {hole, 1, 0, 0}};
   std::vector<Point> points = probe_points(random, loops, 60000);
   std::uniform_real_distribution<double> far(-1e4, 1e4);

@@ -19,7 +19,6 @@
 namespace {
 
 using namespace tk::cad;
-constexpr double kPi = std::numbers::pi;
 
 Loop polygon(const std::vector<Point>& corners) {
   Loop loop;
@@ -34,17 +33,17 @@ Loop polygon(const std::vector<Point>& corners) {
 Loop wavy_ring(std::size_t n, Point c, double radius) {
   std::vector<Point> v;
   for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * kPi * double(i) / double(n), r = radius * (1 + 0.015 * std::sin(60 * a));
+    const double a = 2 * std::numbers::pi * double(i) / double(n), r = radius * (1 + 0.015 * std::sin(60 * a));
     v.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
   }
   return polygon(v);
 }
 
 Loop spiky_gear(std::size_t spikes) {
-  const double root = double(spikes) * 0.5 / (2 * kPi);
+  const double root = double(spikes) * 0.5 / (2 * std::numbers::pi);
   std::vector<Point> v;
   for (std::size_t i = 0; i < spikes; ++i) {
-    const double a = 2 * kPi * double(i) / double(spikes), b = 2 * kPi * (double(i) + 0.5) / double(spikes);
+    const double a = 2 * std::numbers::pi * double(i) / double(spikes), b = 2 * std::numbers::pi * (double(i) + 0.5) / double(spikes);
     v.push_back({root * std::cos(a), root * std::sin(a)});
     v.push_back({(root + 5) * std::cos(b), (root + 5) * std::sin(b)});
   }

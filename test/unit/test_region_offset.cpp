@@ -24,9 +24,7 @@ using tk::cad::MachiningSide;
 using tk::cad::Point;
 using tk::cad::Segment;
 
-constexpr double kPi = std::numbers::pi;
-
-std::vector<Segment> polygon(const std::vector<Point>& points) {
+std::vector<Segment> polygon_segments(const std::vector<Point>& points) {
   std::vector<Segment> out;
   for (std::size_t i = 0; i < points.size(); ++i) out.push_back({points[i], points[(i + 1) % points.size()]});
   return out;
@@ -68,7 +66,7 @@ void expect_at_tool_radius(const Offset& o, double radius) {
 }
 
 TEST(RegionOffset, SquareGrowsByLinesAndCornerArcs) {
-  const Offset o = offset(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1);
+  const Offset o = offset(polygon_segments({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1);
   ASSERT_EQ(o.result.loops.size(), 1u);
   EXPECT_EQ(o.result.polygon_loops, 0u);
   const Loop& loop = o.result.loops[0];
@@ -79,20 +77,20 @@ TEST(RegionOffset, SquareGrowsByLinesAndCornerArcs) {
     ++arcs;
     const tk::cad::ArcShape arc = tk::cad::arc_shape(s);
     EXPECT_NEAR(arc.radius, 1, 1e-9);
-    EXPECT_NEAR(std::abs(arc.sweep), kPi / 2, 1e-9);
+    EXPECT_NEAR(std::abs(arc.sweep), std::numbers::pi / 2, 1e-9);
     // Centred on a corner of the square.
     EXPECT_NEAR(std::fmod(arc.centre.x + 1e-12, 10), 0, 1e-9);
     EXPECT_NEAR(std::fmod(arc.centre.y + 1e-12, 10), 0, 1e-9);
   }
   EXPECT_EQ(arcs, 4);
-  EXPECT_NEAR(loop.area, 100 + 40 * 1 + kPi, 1e-9);  // Steiner
-  EXPECT_NEAR(length(loop), 40 + 2 * kPi, 1e-9);
+  EXPECT_NEAR(loop.area, 100 + 40 * 1 + std::numbers::pi, 1e-9);  // Steiner
+  EXPECT_NEAR(length(loop), 40 + 2 * std::numbers::pi, 1e-9);
   EXPECT_TRUE(o.result.uncut.empty());
   expect_at_tool_radius(o, 1);
 }
 
 TEST(RegionOffset, PocketShrinksWithSharpCornersAndTheRegionIsOutside) {
-  const Offset o = offset(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1, MachiningSide::inside);
+  const Offset o = offset(polygon_segments({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1, MachiningSide::inside);
   ASSERT_EQ(o.result.loops.size(), 1u);
   const Loop& loop = o.result.loops[0];
   ASSERT_EQ(loop.segments.size(), 4u);
@@ -118,16 +116,16 @@ TEST(RegionOffset, DiscGrowsToAConcentricCircle) {
     EXPECT_NEAR(arc.centre.x, 3, 1e-9);
     EXPECT_NEAR(arc.centre.y, -2, 1e-9);
   }
-  EXPECT_NEAR(o.result.loops[0].area, kPi * 49, 1e-7);
+  EXPECT_NEAR(o.result.loops[0].area, std::numbers::pi * 49, 1e-7);
 }
 
 TEST(RegionOffset, HoleShrinksAndVanishesWhenTheToolIsWider) {
-  std::vector<Segment> plate = polygon({{0, 0}, {40, 0}, {40, 40}, {0, 40}});
+  std::vector<Segment> plate = polygon_segments({{0, 0}, {40, 0}, {40, 40}, {0, 40}});
   for (const Segment& s : circle({20, 20}, 5)) plate.push_back(s);
   const Offset grown = offset(plate, 2);
   ASSERT_EQ(grown.result.loops.size(), 2u);
   EXPECT_TRUE(grown.result.loops[1].is_hole());
-  EXPECT_NEAR(grown.result.loops[1].area, -kPi * 9, 1e-7);
+  EXPECT_NEAR(grown.result.loops[1].area, -std::numbers::pi * 9, 1e-7);
   expect_at_tool_radius(grown, 2);
   // A 12 mm tool does not fit the 10 mm bore: the hole goes, all of it uncut.
   const Offset wide = offset(plate, 6);
@@ -141,12 +139,12 @@ TEST(RegionOffset, HoleShrinksAndVanishesWhenTheToolIsWider) {
 
 TEST(RegionOffset, NarrowSlotClosesAndIsReportedUncut) {
   // 60 x 40 with a slot 3 wide and 15 deep from the top: a 4 mm tool does not enter.
-  const Offset o = offset(polygon({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
+  const Offset o = offset(polygon_segments({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
   ASSERT_EQ(o.result.loops.size(), 1u);
   // Steiner for the block, less the dent over the slot's mouth that neither
   // corner arc reaches: twice the integral of 2 - sqrt(4 - u^2), u in 0..1.5.
   const double dent = 2 * (3 - (0.75 * std::sqrt(1.75) + 2 * std::asin(0.75)));
-  EXPECT_NEAR(o.result.loops[0].area, 2400 + 2 * 200 + 4 * kPi - dent, 1e-6);
+  EXPECT_NEAR(o.result.loops[0].area, 2400 + 2 * 200 + 4 * std::numbers::pi - dent, 1e-6);
   ASSERT_FALSE(o.result.uncut.empty());
   for (const tk::cad::UncutSpan& span : o.result.uncut) {
     EXPECT_GE(std::min(span.from.x, span.to.x), 28.5 - 1e-9);
@@ -163,10 +161,10 @@ TEST(RegionOffset, RandomStarsRecoverExactly) {
     const int n = 5 + trial;
     std::vector<Point> points;
     for (int i = 0; i < n; ++i) {
-      const double angle = 2 * kPi * i / n, r = 20 + 15 * unit(random);
+      const double angle = 2 * std::numbers::pi * i / n, r = 20 + 15 * unit(random);
       points.push_back({r * std::cos(angle), r * std::sin(angle)});
     }
-    std::vector<Segment> star = polygon(points);
+    std::vector<Segment> star = polygon_segments(points);
     for (Segment& s : star) s.bulge = unit(random) < 0.3 ? 0.4 * (unit(random) - 0.5) : 0;
     const double radius = 0.5 + 3 * unit(random);
     const Offset o = offset(star, radius);
@@ -177,7 +175,7 @@ TEST(RegionOffset, RandomStarsRecoverExactly) {
 }
 
 TEST(GuardQuery, BarrierIsTheNearestAllowedPoint) {
-  tk::cad::LoopSet set = tk::cad::build_loops(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1e-6);
+  tk::cad::LoopSet set = tk::cad::build_loops(polygon_segments({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1e-6);
   const tk::cad::RegionIndex index(set.loops);
   // Outside machining, R = 2.
   auto a = tk::cad::guard_query(index, {5, -5}, 2, MachiningSide::outside);
@@ -209,7 +207,7 @@ TEST(GuardQuery, BarrierIsTheNearestAllowedPoint) {
 }
 
 TEST(GuardQuery, InASlotNarrowerThanTheToolTheBarrierIsTheContour) {
-  const Offset o = offset(polygon({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
+  const Offset o = offset(polygon_segments({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
   ASSERT_TRUE(o.result.contour);
   // Over the slot's mouth the region's boundary is the two corner arcs (radius 2 about (28.5, 40) and
   // (31.5, 40)), which meet at the dent (30, 40 + sqrt(4 - 1.5^2)). From deep in the slot, and from
@@ -231,7 +229,7 @@ TEST(GuardQuery, InASlotNarrowerThanTheToolTheBarrierIsTheContour) {
 }
 
 TEST(InvasionGuard, LatencyAwareStopFromTheApproachSpeed) {
-  tk::cad::LoopSet set = tk::cad::build_loops(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1e-6);
+  tk::cad::LoopSet set = tk::cad::build_loops(polygon_segments({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1e-6);
   const tk::cad::RegionIndex index(set.loops);
   tk::cad::InvasionGuard guard(index, {1, MachiningSide::outside, 0.1, 0.0});
   // Straight at the bottom edge at 20 mm/s: 2 mm covered during the latency.
@@ -258,7 +256,7 @@ TEST(InvasionGuard, LatencyAwareStopSeesTheWallItIsNotNearestTo) {
   // while the right wall, 1.5 mm away, falls at 19.6 mm/s and is reached within the 0.1 s latency.
   // The distance's own rate (1 - 3.9 x 0.1 > 0) would not stop; the move to where the stop takes
   // effect, (7.5, 8) + 0.1 x 20 x (0.98, 0.196), crosses x = 9.
-  tk::cad::LoopSet set = tk::cad::build_loops(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1e-6);
+  tk::cad::LoopSet set = tk::cad::build_loops(polygon_segments({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1e-6);
   const tk::cad::RegionIndex index(set.loops);
   tk::cad::InvasionGuard guard(index, {1, MachiningSide::inside, 0.1, 0.0});
   const double ux = 1 / std::hypot(1, 0.2), uy = 0.2 / std::hypot(1, 0.2);
@@ -271,7 +269,7 @@ TEST(InvasionGuard, LatencyAwareStopSeesTheWallItIsNotNearestTo) {
 }
 
 TEST(Toolpath, ClimbContourOfASquareIsClockwiseWithCornerArcs) {
-  const Offset o = offset(polygon({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1);
+  const Offset o = offset(polygon_segments({{0, 0}, {10, 0}, {10, 10}, {0, 10}}), 1);
   tk::cad::ToolpathOptions options;
   const std::string gcode = tk::cad::toolpath_gcode(o.result.loops, options);
   std::istringstream lines(gcode);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
+#include <numbers>
 
 #include "io/error.hpp"
 #include "vehicle/lap_svg.hpp"
@@ -16,8 +17,6 @@
 using namespace tk::vehicle;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// An ideal drive: no lag, no deadband.
 CarParameters ideal_car() {
@@ -55,7 +54,7 @@ TEST(VehicleSensor, CoverageClosedForms) {
 
 TEST(VehicleSensor, PositionsAreAheadAndAcross) {
   const CarParameters car;
-  const auto spots = sensor_positions(car, Pose{10, 20, kPi / 2});  // heading +y: left is -x
+  const auto spots = sensor_positions(car, Pose{10, 20, std::numbers::pi / 2});  // heading +y: left is -x
   EXPECT_NEAR(spots[1].x, 10, 1e-12);
   EXPECT_NEAR(spots[1].y, 20 + car.sensor_ahead_mm, 1e-12);
   EXPECT_NEAR(spots[0].x, 10 - car.sensor_spacing_mm, 1e-12);
@@ -96,7 +95,7 @@ TEST(VehicleDrive, DifferentialCommandDrivesTheKinematicCircle) {
   const double vl = 60 * car.mm_per_s_per_unit, vr = 120 * car.mm_per_s_per_unit;
   const double radius = car.wheel_base_mm / 2 * (vr + vl) / (vr - vl), omega = (vr - vl) / car.wheel_base_mm;
   // Centre to the left of the start heading (+x): (0, radius). Half a turn later the car is at (0, 2 radius).
-  const double half_turn = kPi / omega;
+  const double half_turn = std::numbers::pi / omega;
   const int steps = 1000;
   for (int i = 0; i < steps; ++i) {
     body.advance(half_turn / steps);
@@ -104,7 +103,7 @@ TEST(VehicleDrive, DifferentialCommandDrivesTheKinematicCircle) {
   }
   EXPECT_NEAR(body.pose().x, 0, 1e-9);
   EXPECT_NEAR(body.pose().y, 2 * radius, 1e-9);
-  EXPECT_NEAR(std::abs(body.pose().heading), kPi, 1e-9);
+  EXPECT_NEAR(std::abs(body.pose().heading), std::numbers::pi, 1e-9);
 }
 
 TEST(VehicleDrive, DeadbandAndClamp) {
@@ -137,9 +136,9 @@ TEST(VehicleLaps, BangBangCompletesThreeLapsOfTheOval) {
   // No lap faster than the whole centre line at full speed (the axle cuts inside
   // the half circles by sqrt(r^2 + ahead^2) - r at most... bounded by 2 pi * 15 mm a lap).
   const double v_max = (144 - car.deadband_units) * car.mm_per_s_per_unit;
-  for (double lap : r.lap_times_s) EXPECT_GT(lap, (track.length_mm() - 2 * kPi * 15) / v_max);
+  for (double lap : r.lap_times_s) EXPECT_GT(lap, (track.length_mm() - 2 * std::numbers::pi * 15) / v_max);
   EXPECT_NEAR(r.lap_times_s[0] + r.lap_times_s[1] + r.lap_times_s[2], r.total_s, 1e-3);
-  EXPECT_GT(r.distance_mm, 3 * (track.length_mm() - 2 * kPi * 15));
+  EXPECT_GT(r.distance_mm, 3 * (track.length_mm() - 2 * std::numbers::pi * 15));
   EXPECT_EQ(r.excursions, 0);
   EXPECT_LT(r.max_deviation_mm, 20);  // the line never left the sensor bar
   EXPECT_LT(r.max_axle_deviation_mm, 50);

@@ -8,21 +8,16 @@
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
+#include <numbers>
 
 #include "temp_file.hpp"
 #include "io/error.hpp"
 #include "vehicle/line_track.hpp"
+#include "project_paths.hpp"
 
 using namespace tk::vehicle;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-std::filesystem::path project_root() {
-  const char* root = std::getenv("TOOLKIT_ROOT");
-  return root ? std::filesystem::path(root) : std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
-}
 
 using tk::test::TempFile;
 
@@ -44,9 +39,9 @@ TEST(VehicleTrack, OvalLengthIsTwoStraightsPlusCircle) {
   const double straight = 1000, radius = 300;
   const Track track = oval_track(straight, radius);
   // Chords of angle a fall short of their arc by r (a - 2 sin(a/2)) < r a^3 / 24 each.
-  const int chords = static_cast<int>(std::ceil(kPi * radius / 5.0));
-  const double a = kPi / chords, bound = 2 * chords * radius * a * a * a / 24;
-  EXPECT_NEAR(track.length_mm(), 2 * straight + 2 * kPi * radius, bound + 1e-9);
+  const int chords = static_cast<int>(std::ceil(std::numbers::pi * radius / 5.0));
+  const double a = std::numbers::pi / chords, bound = 2 * chords * radius * a * a * a / 24;
+  EXPECT_NEAR(track.length_mm(), 2 * straight + 2 * std::numbers::pi * radius, bound + 1e-9);
   EXPECT_LT(bound, 0.05);  // against a line 19 mm wide
   EXPECT_EQ(track.line_width_mm(), kTapeWidthMm);
 }
@@ -60,7 +55,7 @@ TEST(VehicleTrack, OvalStartsMidStraightHeadingAlongIt) {
   const Point p = track.point_at(500);
   EXPECT_NEAR(p.x, 500, 1e-9);
   EXPECT_NEAR(p.y, -300, 1e-9);
-  const Point q = track.point_at(500 + kPi * 300);
+  const Point q = track.point_at(500 + std::numbers::pi * 300);
   EXPECT_NEAR(q.x, 500, 0.05);  // the chords are a little shorter than the arc
   EXPECT_NEAR(q.y, 300, 1e-3);
   EXPECT_FALSE(track.self_intersection());
@@ -88,21 +83,21 @@ TEST(VehicleTrack, NearestPointOnStraightAndArc) {
 
 TEST(VehicleTrack, CircleWhenStraightsAreZero) {
   const Track track = oval_track(0, 200);
-  const int chords = static_cast<int>(std::ceil(kPi * 200 / 5.0));
-  const double a = kPi / chords;
-  EXPECT_NEAR(track.length_mm(), 2 * kPi * 200, 2 * chords * 200 * a * a * a / 24 + 1e-9);
+  const int chords = static_cast<int>(std::ceil(std::numbers::pi * 200 / 5.0));
+  const double a = std::numbers::pi / chords;
+  EXPECT_NEAR(track.length_mm(), 2 * std::numbers::pi * 200, 2 * chords * 200 * a * a * a / 24 + 1e-9);
   EXPECT_NEAR(track.nearest({0, 0}).distance, 200, 25.0 / (8 * 200));  // chords sag inwards
 }
 
 TEST(VehicleTrack, ReadsCsvFixtureOfKnownLength) {
-  const Track track = read_track((project_root() / "test" / "fixtures" / "tracks" / "rounded_rectangle.csv").string());
+  const Track track = read_track((tk::test::project_root() / "test" / "fixtures" / "tracks" / "rounded_rectangle.csv").string());
   // 1200 x 800 with 200 mm corners: straights 2 (800 + 400), corners 4 x 30 chords of 3 degrees.
-  EXPECT_NEAR(track.length_mm(), 2400 + 120 * 2 * 200 * std::sin(1.5 * kPi / 180), 1e-3);
+  EXPECT_NEAR(track.length_mm(), 2400 + 120 * 2 * 200 * std::sin(1.5 * std::numbers::pi / 180), 1e-3);
   EXPECT_DOUBLE_EQ(track.start().y, -400);
 }
 
 TEST(VehicleTrack, ReadsJsonLinesFixture) {
-  const Track track = read_track((project_root() / "test" / "fixtures" / "tracks" / "bean.jsonl").string());
+  const Track track = read_track((tk::test::project_root() / "test" / "fixtures" / "tracks" / "bean.jsonl").string());
   EXPECT_EQ(track.vertices().size(), 180u);
   EXPECT_FALSE(track.self_intersection());
   EXPECT_NEAR(track.nearest({0, 0}).distance, 250, 1.0);  // the dent's deepest point is 400 - 150 from the centre

@@ -16,16 +16,11 @@
 #include <vector>
 
 #include "threads/iso261.hpp"
+#include "project_paths.hpp"
 
 using namespace tk::threads;
 
 namespace {
-
-std::filesystem::path project_root() {
-  const char* root = std::getenv("TOOLKIT_ROOT");
-  return root ? std::filesystem::path(root)
-              : std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
-}
 
 std::vector<std::string> split_csv(const std::string& line) {
   std::vector<std::string> cells;
@@ -172,7 +167,7 @@ TEST(Iso261Lookup, PitchNotes) {
 // the coarse pitch, "M8x1" for a fine one): every row must be a combination
 // this table lists, and its basic-size columns must agree with the pitch.
 TEST(Iso261Fixture, LimitsFixtureUsesIso261Combinations) {
-  const auto path = project_root() / "test/fixtures/threads/iso965-2_limits.csv";
+  const auto path = tk::test::project_root() / "test/fixtures/threads/iso965-2_limits.csv";
   std::ifstream in(path);
   ASSERT_TRUE(in) << path;
   std::string line;

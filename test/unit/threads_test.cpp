@@ -454,7 +454,7 @@ TEST(ThreadReport, MembersAndSeries) {
 // title with parentheses and a newline stays inside its comment.
 TEST(ThreadProgram, EveryLineLexesWithItsCommentsClosed) {
   ProgramSettings s = m30_program();
-  for (const std::string title : {std::string("M30x2-6g"), std::string("M30 (spare)\n(MSG, x")}) {
+  for (const std::string& title : {std::string("M30x2-6g"), std::string("M30 (spare)\n(MSG, x")}) {
     s.title = title;
     for (ProgramStyle style : {ProgramStyle::g76, ProgramStyle::passes})
       for (const std::string& line : lines_of(thread_program(style, m30_plan(), s))) {
