@@ -47,7 +47,7 @@ build: deps test-deps $(BUILD_DIR)/CMakeCache.txt
 # process leaves on disk, timed by the clock, while the code they read back
 # runs under the sanitizers in the unit tests and the main suites. The
 # sanitizer pass builds only what it runs: the tools and unit_tests, at -O1
-# with line tables only (-g1): 318 s to build instead of 527 s at -O2 -g.
+# with line tables only (-g1): 318-354 s to build, against 527 s at -O2 -g.
 # Tests that only add volume skip themselves there (skip_volume_when_sanitized).
 # Each phase prints its time ("phase ... s") for CI's log.
 test: test-fast test-sanitize

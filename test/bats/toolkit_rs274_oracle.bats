@@ -23,17 +23,12 @@ setup() {
   CORPUS="$TOOLKIT_ROOT/../shared/corpus"
 }
 
-# rs274_run FILE: rs274 -g FILE (test_helper's rs274_g: a HOME per shell).
-rs274_run() {
-  rs274_g "$1"
-}
-
 # rs274_verdict FILE: nothing when rs274 runs FILE cleanly, else one line
 # naming FILE and what rs274 said. Its canonical commands (standard
 # output) stay in FILE.canon.
 rs274_verdict() {
   local status
-  rs274_run "$1" > "$1.canon" 2> "$1.said"
+  rs274_g "$1" > "$1.canon" 2> "$1.said"
   status=$?
   awk -v file="$1" '
     /^ *[0-9]+ N\.\.\.\.\. (MESSAGE|LOG[A-Z]*)\(/ { said = said $0 "|"; next }
@@ -62,7 +57,7 @@ pulse_verdict() {
       if (blocks != lines + 0) print file ": gcode-pulse stopped after " blocks " blocks of " lines + 0
     }' "$1"
 }
-export -f rs274_run rs274_verdict pulse_verdict
+export -f rs274_verdict pulse_verdict
 
 # judge VERDICT LIST: runs VERDICT on every file named in LIST (one a line),
 # two at a time; prints what failed.
@@ -237,7 +232,7 @@ export -f g76_pulse_verdict
 # 4-decimal printing.
 canon_pulse_verdict() {
   local summary
-  [ -e "$1.canon" ] || rs274_run "$1" > "$1.canon" 2> /dev/null
+  [ -e "$1.canon" ] || rs274_g "$1" > "$1.canon" 2> /dev/null
   if ! summary=$(gcode-pulse --canon --summary "$1.canon" 2>&1); then
     echo "$1: rs274 -g | gcode-pulse --canon: $summary"
     return
