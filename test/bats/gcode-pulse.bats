@@ -336,6 +336,7 @@ PY
 # ------------------------------------------------------------ corpus
 
 @test "corpus: every file runs without error with default options (and a tool table) for all four methods" {
+  skip_volume_when_sanitized  # the summaries test below steps the corpus by all four methods
   need_corpus
   [ "$(corpus_files | wc -l)" -eq "$(ls "$CORPUS" | wc -l)" ]
   for method in $METHODS; do
@@ -933,6 +934,7 @@ PY
 # ------------------------------------------------------------ streaming
 
 @test "streaming: 200,000 short G1 lines end where the oracle says" {
+  skip_volume_when_sanitized
   awk 'BEGIN {
     print "G21 G90 G17"; print "G1 F3000"
     for (i = 1; i <= 200000; i++) printf "G1 X%.3f Y%.3f\n", (i % 1000) * 0.01, int(i / 1000) * 0.01 + (i % 7) * 0.005

@@ -40,27 +40,42 @@ setup() {
   TOOLS_MM="$FIXTURES/gcode/linuxcnc/rs274_tools_mm.tbl"
 }
 
-# within_a_step ORACLE_JSON SUMMARY_JSON [path]: final positions within a step
-# (the default 200, 200, 400 steps/mm) plus rs274's 4-decimal printing; with
-# "path", the path lengths within a step too.
-within_a_step() {
+# within_a_step_each ROWS: each row of the file ROWS is
+# "LABEL<tab>path|ends<tab>ORACLE_JSON<tab>SUMMARY_JSON": final positions
+# within a step (the default 200, 200, 400 steps/mm) plus rs274's 4-decimal
+# printing; with "path", the path lengths within a step too. One Python for
+# all rows; prints each row that differs, fails if any does (or ROWS is empty).
+within_a_step_each() {
   py '
 import json, sys
-o, s = json.loads(sys.argv[1]), json.loads(sys.argv[2])
 step = {"x": 1/200, "y": 1/200, "z": 1/400}
-bad = [a for a in "xyz" if abs(o["final_" + a] - s["final_" + a]) > step[a] + 0.0001 * 25.4]
-if len(sys.argv) > 3 and abs(o["path_mm"] - s["path_mm"]) > 1/200:
-    bad.append("path %.6f vs %.6f" % (o["path_mm"], s["path_mm"]))
-if bad:
-    sys.exit("differ: %s\n rs274: %s\n ours: %s" % (bad, sys.argv[1], sys.argv[2]))
-' "$@"
+rows = [line.rstrip("\n").split("\t") for line in open(sys.argv[1]) if line.strip()]
+failed = 0
+for label, mode, oracle, summary in rows:
+    o, s = json.loads(oracle), json.loads(summary)
+    bad = [a for a in "xyz" if abs(o["final_" + a] - s["final_" + a]) > step[a] + 0.0001 * 25.4]
+    if mode == "path" and abs(o["path_mm"] - s["path_mm"]) > 1/200:
+        bad.append("path %.6f vs %.6f" % (o["path_mm"], s["path_mm"]))
+    if bad:
+        failed += 1
+        print("%s differ: %s\n rs274: %s\n ours: %s" % (label, bad, oracle, summary))
+print(len(rows), "compared,", failed, "differ")
+sys.exit(1 if failed or not rows else 0)
+' "$1"
 }
+
+# pair LABEL MODE ORACLE_JSON SUMMARY_JSON >> ROWS: one row for within_a_step_each.
+pair() { printf '%s\t%s\t%s\t%s\n' "$@"; }
 
 @test "every shipped LinuxCNC example rs274 finishes on 3 axes: gcode-pulse --canon ends where rs274 puts the machine" {
   [ -d "$NCFILES" ] || skip "LinuxCNC's examples are not installed"
-  local stepped=0 refused=0 stream oracle summary
-  for stream in "$BATS_FILE_TMPDIR"/ncfiles/*.canon; do
-    oracle=$(/usr/bin/python3 "$ORACLE" "$stream")
+  local stepped=0 refused=0 i stream oracle summary streams oracles
+  streams=("$BATS_FILE_TMPDIR"/ncfiles/*.canon)
+  mapfile -t oracles < <(/usr/bin/python3 "$ORACLE" "${streams[@]}")
+  [ "${#oracles[@]}" -eq "${#streams[@]}" ]
+  : > rows.tsv
+  for i in "${!streams[@]}"; do
+    stream=${streams[i]} oracle=${oracles[i]}
     case "$oracle" in
       *'"status": "incomplete"'*) continue ;;  # rs274 itself stopped on an error
       *'"status": "extra_axes"'*)
@@ -73,10 +88,11 @@ if bad:
         refused=$((refused + 1)) ;;
       *)
         summary=$(gcode-pulse --canon --summary "$stream") || { echo "$stream failed"; false; }
-        within_a_step "$oracle" "$summary" path || { echo "$stream"; false; }
+        pair "$stream" path "$oracle" "$summary" >> rows.tsv
         stepped=$((stepped + 1)) ;;
     esac
   done
+  within_a_step_each rows.tsv
   echo "stepped $stepped, refused $refused (rotary axes, splines)"
   # 48 of the 56 examples of LinuxCNC 2.9 finish in rs274 with this tool
   # table; 3 of those move A or B or use splines.
@@ -84,48 +100,61 @@ if bad:
 }
 
 @test "our interpreter and the canonical path agree on the corpus, the fixtures and LinuxCNC's examples" {
-  local compared=0 program stream oracle ours via_canon path
+  local compared=0 i program stream summary streams=() candidates=() ours=() oracles path
   local programs=("$FIXTURES"/gcode/*.ngc "$FIXTURES"/gcode/linuxcnc/*.ngc)
   [ -d "$TOOLKIT_ROOT/../shared/corpus/gcode" ] && programs+=("$TOOLKIT_ROOT"/../shared/corpus/gcode/*)
   [ -d "$NCFILES" ] && programs+=("$NCFILES"/*.ngc)
   for program in "${programs[@]}"; do
-    ours=$(gcode-pulse --summary --tool-table "$TOOLS_MM" "$program" 2> /dev/null) || continue
+    summary=$(gcode-pulse --summary --tool-table "$TOOLS_MM" "$program" 2> /dev/null) || continue
     stream="$BATS_FILE_TMPDIR/ncfiles/$(basename "$program" .ngc).canon"
     if [[ "$program" != "$NCFILES"/* ]]; then
       # rs274 wants a program end; grbl-style files often have none.
       { cat "$program"; echo; echo M2; } > with_end.ngc
-      canon "$PWD/with_end.ngc" > run.canon
-      stream=run.canon
+      stream="$PWD/run${#streams[@]}.canon"
+      canon "$PWD/with_end.ngc" > "$stream"
     fi
-    oracle=$(/usr/bin/python3 "$ORACLE" "$stream")
-    [[ "$oracle" == *'"status": "ok"'* ]] || continue  # a dialect LinuxCNC reads otherwise (Mach3's G71)
-    via_canon=$(gcode-pulse --canon --summary "$stream")
+    candidates+=("$program") streams+=("$stream") ours+=("$summary")
+  done
+  mapfile -t oracles < <(/usr/bin/python3 "$ORACLE" "${streams[@]}")
+  [ "${#oracles[@]}" -eq "${#streams[@]}" ]
+  : > rows.tsv
+  for i in "${!streams[@]}"; do
+    program=${candidates[i]}
+    [[ "${oracles[i]}" == *'"status": "ok"'* ]] || continue  # a dialect LinuxCNC reads otherwise (Mach3's G71)
+    summary=$(gcode-pulse --canon --summary "${streams[i]}")
     # rs274 alone re-reads the position after a tool change without the new
     # tool offset, so a G43 on an M6's line moves Z on the next move there
     # (LinuxCNC does not, nor do we): compare the ends only.
     path=path
-    grep -qiE 'M0*6.*G43|G43.*M0*6' "$program" && path=""
-    within_a_step "$oracle" "$ours" $path || { echo "$program (our interpreter)"; false; }
-    within_a_step "$oracle" "$via_canon" path || { echo "$program (--canon)"; false; }
+    grep -qiE 'M0*6.*G43|G43.*M0*6' "$program" && path=ends
+    pair "$program (our interpreter)" "$path" "${oracles[i]}" "${ours[i]}" >> rows.tsv
+    pair "$program (--canon)" path "${oracles[i]}" "$summary" >> rows.tsv
     compared=$((compared + 1))
   done
+  within_a_step_each rows.tsv
   echo "compared $compared programs"
   [ "$compared" -ge 20 ]
 }
 
 @test "G43, G43 H, G43.1, G49 and G53 put the machine where LinuxCNC does, after every line" {
-  local program="$FIXTURES/gcode/linuxcnc/tool_length.ngc" lines n oracle ours via_canon
+  local program="$FIXTURES/gcode/linuxcnc/tool_length.ngc" lines n i oracles streams=()
   lines=$(grep -c . "$program")
+  : > rows.tsv
   for n in $(seq 3 $((lines - 1))); do
-    { head -n "$n" "$program"; echo M2; } > prefix.ngc
-    canon "$PWD/prefix.ngc" > run.canon
-    oracle=$(/usr/bin/python3 "$ORACLE" run.canon)
-    [[ "$oracle" == *'"status": "ok"'* ]] || { echo "rs274 did not finish line $n"; cat run.canon; false; }
-    ours=$(gcode-pulse --summary --tool-table "$TOOLS_MM" prefix.ngc)
-    via_canon=$(gcode-pulse --canon --summary run.canon)
-    within_a_step "$oracle" "$ours" path || { echo "after line $n (our interpreter)"; false; }
-    within_a_step "$oracle" "$via_canon" path || { echo "after line $n (--canon)"; false; }
+    { head -n "$n" "$program"; echo M2; } > "prefix$n.ngc"
+    canon "$PWD/prefix$n.ngc" > "run$n.canon"
+    streams+=("run$n.canon")
   done
+  mapfile -t oracles < <(/usr/bin/python3 "$ORACLE" "${streams[@]}")
+  [ "${#oracles[@]}" -eq "${#streams[@]}" ]
+  for i in "${!streams[@]}"; do
+    n=$((i + 3))
+    [[ "${oracles[i]}" == *'"status": "ok"'* ]] || { echo "rs274 did not finish line $n"; cat "run$n.canon"; false; }
+    pair "after line $n (our interpreter)" path "${oracles[i]}" \
+      "$(gcode-pulse --summary --tool-table "$TOOLS_MM" "prefix$n.ngc")" >> rows.tsv
+    pair "after line $n (--canon)" path "${oracles[i]}" "$(gcode-pulse --canon --summary "run$n.canon")" >> rows.tsv
+  done
+  within_a_step_each rows.tsv
 }
 
 @test "G43 without a tool table is refused, not ignored; --lenient skips it with a warning" {

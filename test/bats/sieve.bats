@@ -272,6 +272,7 @@ TABLE
 # ------------------------------------------------------------ threads
 
 @test "-j 1 and -j 2 (and -j 3) write byte-identical output in every format (pmax above 2^20)" {
+  skip_volume_when_sanitized  # the factors/checkpoint test below runs -j 1 and -j 2 under the sanitizers
   # 2.5*10^6 candidates: two segments of the small-prime phase, 5 blocks of large primes.
   args="twin --n 1000 --k 1:2.5e6 --pmax 2e7"
   for format in "" --csv --newpgen --abc --abcd; do

@@ -26,15 +26,24 @@ setup() {
   ORACLE="$TOOLKIT_ROOT/test/oracle"
 }
 
-# regression FILE OPTIONS...: subtune with OPTIONS on FILE, its output through
-# subtune_regression.py with the same options; fails on any mismatch.
-regression() {
-  local file=$1
-  shift
-  subtune "$@" "$file" > out.jsonl || { echo "subtune $* $file failed"; return 1; }
-  run /usr/bin/python3 "$ORACLE/subtune_regression.py" "$@" < out.jsonl
+# regressions < CASES: each line of CASES is "FILE [OPTIONS...]": subtune
+# with OPTIONS on FILE, then one subtune_regression.py run (SciPy starts
+# once, not once per case) checks every output against the same options;
+# fails on any mismatch.
+regressions() {
+  local file options i=0
+  : > cases.txt
+  while read -r file options; do
+    i=$((i + 1))
+    local out="out$i-$(basename "$file").jsonl"
+    # shellcheck disable=SC2086 # the options are separate words
+    subtune $options "$file" > "$out" || { echo "subtune $options $file failed"; return 1; }
+    echo "$out $options" >> cases.txt
+  done
+  [ "$i" -gt 0 ] || { echo "no cases"; return 1; }
+  run /usr/bin/python3 "$ORACLE/subtune_regression.py" --cases cases.txt
   [ "$status" -ne 77 ] || skip "$output"
-  echo "subtune $* $(basename "$file"): $output"
+  echo "$output"
   [ "$status" -eq 0 ]
 }
 
@@ -57,16 +66,12 @@ sys.exit(1 if bad else 0)' "$1" "$2"
 
 @test "(a) three 300-part streams (wear, thermal growth, no drift) x 9 option sets: every part recomputed by SciPy" {
   for file in "$SUB/wear.txt" "$SUB/thermal.csv" "$SUB/flat.jsonl"; do
-    regression "$file"
-    regression "$file" --statistic paper
-    regression "$file" --alternative greater --statistic paper
-    regression "$file" --alternative less
-    regression "$file" --correct-to nominal --nominal 40 --statistic paper
-    regression "$file" --resolution 0.005 --statistic paper
-    regression "$file" --alpha 0.01 --min-parts 6 --statistic paper
-    regression "$file" --lower 39.995 --upper 40.02
-    regression "$file" --min-parts 3 --alpha 0.1
-  done
+    printf "$file %s\n" "" "--statistic paper" "--alternative greater --statistic paper" "--alternative less" \
+      "--correct-to nominal --nominal 40 --statistic paper" "--resolution 0.005 --statistic paper" \
+      "--alpha 0.01 --min-parts 6 --statistic paper" "--lower 39.995 --upper 40.02" "--min-parts 3 --alpha 0.1"
+  done > cases.in
+  regressions < cases.in
+  [ "$(grep -c ' records, ' <<< "$output")" -eq 27 ]
 }
 
 @test "(a) the streams exercise the test: runs restart, both decisions occur, the drifting ones sub-tune more" {
@@ -94,9 +99,8 @@ for name, scale in (("big", 8e5), ("small", 2e-100)):
     with open(name + ".txt", "w") as out:
         for i in range(1, 61):
             out.write(repr((1 + 0.002 * i + random.gauss(0, 0.01)) * scale) + "\n")'
-  regression big.txt
-  regression small.txt
-  regression small.txt --statistic paper
+  printf '%s\n' big.txt small.txt "small.txt --statistic paper" > cases.in
+  regressions < cases.in
 }
 
 @test "(b) t_crit against the printed Student t table (two-sided 5 %, eq. (6)'s df 2(N-1)) for N = 4, 5, 6, 8, 10" {
@@ -107,7 +111,8 @@ for name, scale in (("big", 8e5), ("small", 2e-100)):
   echo "$output"
   assert_success
   # The regression oracle agrees on every record.
-  regression zigzag.txt --statistic paper
+  echo "zigzag.txt --statistic paper" > cases.in
+  regressions < cases.in
 }
 
 @test "(b) t_crit tables: the default slope statistic df N-2 (2.776445 ... 4.302653); eq. (6) one-sided 5 %, two-sided 1 %" {

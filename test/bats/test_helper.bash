@@ -1,7 +1,13 @@
 # Shared set-up for the bats suites: bats-support/bats-assert from Debian's
 # packages, the freshly built tools first on PATH, a scratch directory.
-load '/usr/lib/bats/bats-support/load'
-load '/usr/lib/bats/bats-assert/load'
+# Their files are sourced directly: their load.bash forks a dirname for each
+# of 15 files, and every test loads this helper again (160 ms of a 240 ms
+# trivial test here, measured).
+for bats_library_file in /usr/lib/bats/bats-support/src/*.bash /usr/lib/bats/bats-assert/src/*.bash; do
+  # shellcheck disable=SC1090
+  source "$bats_library_file"
+done
+unset bats_library_file
 
 TOOLKIT_ROOT="${TOOLKIT_ROOT:-$(cd "$BATS_TEST_DIRNAME/../.." && pwd)}"
 TOOLKIT_BIN="${TOOLKIT_BIN:-$TOOLKIT_ROOT/build}"

@@ -52,8 +52,13 @@ setup() {
     ldd "$ROOT/usr/bin/$tool" | awk '$2 == "=>" && $3 ~ /^\// { print $3 }'
   done | sort -u > libraries
   [ -s libraries ]
+  # One dpkg -S for all of them: each call reads dpkg's whole file list (~1 s).
+  while read -r lib; do readlink -f "$lib"; echo "$lib"; done < libraries > paths
+  xargs dpkg -S < paths > owners 2> /dev/null || true
   while read -r lib; do
-    package=$(dpkg -S "$(readlink -f "$lib")" 2> /dev/null || dpkg -S "$lib") || { echo "no package owns $lib"; false; }
+    package=$(awk -F': ' -v real="$(readlink -f "$lib")" -v named="$lib" \
+      '$2 == real || $2 == named { print $1; exit }' owners)
+    [ -n "$package" ] || { echo "no package owns $lib"; false; }
     package=${package%%:*}
     grep -qxF "$package" <<< "$names" || { echo "$package ($lib) not in Depends"; false; }
   done < libraries

@@ -32,6 +32,10 @@ With --lower/--upper or a record's lower/upper fields, in_tolerance says
 whether the size lies in [lower, upper].
 
 Usage: subtune_regression.py [subtune's options] < subtune-output.jsonl
+       subtune_regression.py --cases FILE
+  --cases: each line of FILE is "OUTPUT.jsonl [subtune's options]"; every
+  output is checked in this one process (SciPy starts once), one summary
+  line per case, exit 1 if any case fails.
   options: --field size --alpha 0.05 --statistic slope|paper
            --alternative two-sided|greater|less --min-parts 4
            --resolution 0 --correct-to start|nominal --nominal X
@@ -74,7 +78,7 @@ def t_quantile(upper_tail, df):
 HUGE = 1e8  # a t above this counts as the 'infinite' t of a (numerically) perfect line
 
 
-def parse():
+def parse(args=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--field", default="size")
     p.add_argument("--alpha", type=float, default=0.05)
@@ -87,7 +91,7 @@ def parse():
     p.add_argument("--lower", type=float)
     p.add_argument("--upper", type=float)
     p.add_argument("--rtol", type=float, default=1e-8)
-    return p.parse_args()
+    return p.parse_args(args)
 
 
 class Checker:
@@ -115,15 +119,15 @@ class Checker:
             self.fail(line, field, got, want)
 
 
-def main():
-    o = parse()
+def check(o, stream):
+    """Checks subtune's output on STREAM against options O; returns the exit status."""
     if o.correct_to == "nominal" and o.nominal is None:
         print("subtune_regression.py: --correct-to nominal needs --nominal")
         return 2
     ck = Checker(o.rtol)
     run, sizes, offset = 1, [], 0.0
     records = subtunes = 0
-    for line_no, line in enumerate(sys.stdin, 1):
+    for line_no, line in enumerate(stream, 1):
         if not line.strip():
             continue
         rec = json.loads(line)
@@ -235,6 +239,21 @@ def main():
         print("no records on stdin")
         return 1
     return 1 if ck.errors else 0
+
+
+def main():
+    if sys.argv[1:2] == ["--cases"] and len(sys.argv) == 3:
+        worst = 0
+        with open(sys.argv[2]) as cases:
+            for case in cases:
+                words = case.split()
+                if not words:
+                    continue
+                print(" ".join(words) + ":", end=" ")
+                with open(words[0]) as output:
+                    worst = max(worst, check(parse(words[1:]), output))
+        return worst
+    return check(parse(), sys.stdin)
 
 
 if __name__ == "__main__":
