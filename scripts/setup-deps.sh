@@ -6,10 +6,12 @@
 # when something is missing. Uses sudo when not root.
 set -euo pipefail
 
-# Build and runtime: compiler, CMake, the libraries every tool links.
+# Build and runtime: compiler, CMake, the libraries every tool links; and
+# python3, whose json module examples/demo.sh (`make demo`) and the other
+# examples format the tools' records with (a bare Debian has none).
 build_pkgs=(g++ cmake make pkg-config libcli11-dev libgmp-dev libeigen3-dev
             libfmt-dev nlohmann-json3-dev libprimesieve-dev libfftw3-dev libpolyclipping-dev
-            libboost-math-dev scdoc)
+            libboost-math-dev scdoc python3)
 # Tests: unit tests, CLI tests, the PARI/GP and ezdxf oracles, sanitizer runtime.
 # linuxcnc-uspace ships rs274, LinuxCNC's own interpreter: the oracle for every G-code program.
 # ccache: the builds reuse earlier compiles. dpkg-dev, file and man-db let
