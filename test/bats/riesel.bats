@@ -642,11 +642,13 @@ prime"
   riesel --state st --checkpoint-every 0.1 long.txt > first.out 2> /dev/null 3>&- &
   pid=$!
   wait_for "st/checkpoint-????????????????"
-  # Wait for three quarters of the 36625 iterations, so resuming shows.
+  # Wait for 22000 of the 36625 iterations, so resuming shows; the ~0.3 s
+  # of squarings left cover the polling's delay on a loaded machine (at
+  # 27000 the proof sometimes ended before the kill).
   tries=1200
-  while [ "$(checkpoint_iteration st)" -lt 27000 ]; do
+  while [ "$(checkpoint_iteration st)" -lt 22000 ]; do
     tries=$((tries - 1))
-    [ "$tries" -gt 0 ] || { echo "no checkpoint past 27000"; false; }
+    [ "$tries" -gt 0 ] || { echo "no checkpoint past 22000"; false; }
     sleep 0.05
   done
   first_ms=$(( ($(date +%s%N) - started) / 1000000 ))
@@ -663,11 +665,11 @@ prime"
   assert_success
   run cmp <(no_time < st/lresults.txt) want.lresults
   assert_success
-  # Resumed, not restarted: the last 9625 iterations or so take about a third
-  # of the time the first 27000 took (a restart would take 4/3 of it).
+  # Resumed, not restarted: the last 14625 iterations or so take about two
+  # thirds of the time the first 22000 took (a restart would take 5/3 of it).
   resumed=$(seed_seconds got.out)
-  python3 -c "import sys; sys.exit(0 if 1000 * $resumed < 0.9 * $first_ms else 1)" ||
-    { echo "resumed proof $resumed s; 27000 iterations took $first_ms ms"; false; }
+  python3 -c "import sys; sys.exit(0 if 1000 * $resumed < 1.1 * $first_ms else 1)" ||
+    { echo "resumed proof $resumed s; 22000 iterations took $first_ms ms"; false; }
   # Finished proofs leave no checkpoint behind.
   run saved_checkpoints st
   assert_output ""
