@@ -46,8 +46,9 @@ build: deps test-deps $(BUILD_DIR)/CMakeCache.txt
 # kill loops (*_faults, toolkit_fault_injection): they test what a killed
 # process leaves on disk, timed by the clock, while the code they read back
 # runs under the sanitizers in the unit tests and the main suites. The
-# sanitizer pass builds only what it runs: the tools and unit_tests, at -O1
-# with line tables only (-g1): 318-354 s to build, against 527 s at -O2 -g.
+# sanitizer pass builds only what it runs: the tools and unit_tests, the
+# library at -O1 with line tables only (-g1), their wiring at -O0 under ASan
+# alone (toolkit_compile_as_wiring): 246-249 s to build, against 527 s at -O2 -g.
 # Tests that only add volume skip themselves there (skip_volume_when_sanitized).
 # Each phase prints its time ("phase ... s") for CI's log.
 test: test-fast test-sanitize

@@ -52,7 +52,12 @@ step = {"x": 1/200, "y": 1/200, "z": 1/400}
 rows = [line.rstrip("\n").split("\t") for line in open(sys.argv[1]) if line.strip()]
 failed = 0
 for label, mode, oracle, summary in rows:
-    o, s = json.loads(oracle), json.loads(summary)
+    try:
+        o, s = json.loads(oracle), json.loads(summary)
+    except ValueError:
+        failed += 1
+        print("%s: no summary to compare\n rs274: %s\n ours: %r" % (label, oracle, summary))
+        continue
     bad = [a for a in "xyz" if abs(o["final_" + a] - s["final_" + a]) > step[a] + 0.0001 * 25.4]
     if mode == "path" and abs(o["path_mm"] - s["path_mm"]) > 1/200:
         bad.append("path %.6f vs %.6f" % (o["path_mm"], s["path_mm"]))
