@@ -14,7 +14,9 @@
 #include <vector>
 
 #include "bench_common.hpp"
+#include "primes/fft_plans.hpp"
 #include "primes/fft_squaring.hpp"
+#include "primes/right_angle_transform.hpp"
 #include "primes/riesel_proof.hpp"
 #include "primes/weighted_squaring.hpp"
 
@@ -55,10 +57,38 @@ void compare_squarers(std::uint64_t k, std::uint64_t n, int rounds, int repeats)
   results.report(1.0);
 }
 
+// Microseconds per acyclic square of `length` real points (half of them
+// zero), our right-angle transform against FFTW's real transforms, turns
+// interleaved; medians.
+void compare_transforms(std::size_t length, int rounds, int repeats) {
+  auto ours = RightAngleSquarer::create(length);
+  if (!ours) return;
+  const RealFftPlans* plans = real_fft_plans(length);
+  double* input = fftw_alloc_real(length);
+  double* output = fftw_alloc_real(length);
+  fftw_complex* spectrum = fftw_alloc_complex(length / 2 + 1);
+  for (std::size_t j = 0; j < length; ++j) input[j] = j < length / 2 ? static_cast<double>((j * 7919) % 65536) - 32768.0 : 0.0;
+  bench::Results results("bench_riesel_transform_" + std::to_string(length));
+  for (int r = 0; r < repeats; ++r) {
+    const auto [mine, fftw] = bench::time_interleaved([&] { for (int i = 0; i < rounds; ++i) ours->square(input, output); },
+                                                       [&] { for (int i = 0; i < rounds; ++i) square_by_real_fft(*plans, input, spectrum, output, length); });
+    results.add(mine / rounds * 1e6, fftw / rounds * 1e6);
+  }
+  std::printf("FIGURE transform_%zu us per acyclic square (medians above: ours with %d lanes, FFTW)\n", length, ours->lanes());
+  results.report(1.0);
+  fftw_free(input);
+  fftw_free(output);
+  fftw_free(spectrum);
+}
+
 }  // namespace
 
 int main() {
   const int repeats = bench::repeats({"BENCH_RIESEL_REPEATS", "BENCH_REPEATS"}, 3);
+  if (std::getenv("BENCH_RIESEL_TRANSFORMS")) {
+    for (std::size_t length : {4096, 6144, 9216, 16384, 18432, 36864}) compare_transforms(length, 20000000 / length, 5);
+    return 0;
+  }
   const std::uint64_t k = 778965587811, n = 36627;
   std::printf("bench_riesel: LLR proof of %llu*2^%llu-1 vs PARI ispseudoprime, %d repeats\n",
               static_cast<unsigned long long>(k), static_cast<unsigned long long>(n), repeats);

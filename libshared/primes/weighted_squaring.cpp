@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "primes/fft_plans.hpp"
+#include "primes/right_angle_transform.hpp"
 #include "primes/weighted_passes.hpp"
 #include "primes/weighted_rounding.hpp"
 #include "primes/weighted_squaring_detail.hpp"
@@ -32,7 +33,10 @@ void WeightedSquaring::square_minus(unsigned long minus) {
 }
 
 bool WeightedSquaring::square_and_carry() {
-  square_by_real_fft(*plans_, input_, static_cast<fftw_complex*>(spectrum_), output_, length_);
+  if (right_angle_)
+    right_angle_->square(input_, output_);
+  else
+    square_by_real_fft(*plans_, input_, static_cast<fftw_complex*>(spectrum_), output_, length_);
 
   const RoundedCoefficients rounded =
       round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);

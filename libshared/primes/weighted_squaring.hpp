@@ -27,6 +27,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "primes/modulus.hpp"
@@ -34,16 +35,23 @@
 namespace tk::primes {
 
 struct RealFftPlans;
+class RightAngleSquarer;
 
 class WeightedSquaring {
  public:
   /// Nothing when the form is not k*2^n +- 1 with k odd, k < 2^56, n >= 64,
   /// or N is too large for double precision at every length.
   static std::unique_ptr<WeightedSquaring> create(const SpecialForm& form);
+  /// Which transform squares: our right-angle transform
+  /// (right_angle_transform.hpp) where it has the length, else FFTW's real
+  /// transforms; or FFTW's always.
+  enum class Transform { own_where_planned, fftw };
+
   /// A given transform length and largest digit size, unchecked for
   /// rounding safety (for tests of the checks); nothing when the square
   /// would not fit the length.
-  static std::unique_ptr<WeightedSquaring> create_with(const SpecialForm& form, std::size_t length, int digit_bits);
+  static std::unique_ptr<WeightedSquaring> create_with(const SpecialForm& form, std::size_t length, int digit_bits,
+                                                       Transform transform = Transform::own_where_planned);
 
   WeightedSquaring(const WeightedSquaring&) = delete;
   WeightedSquaring& operator=(const WeightedSquaring&) = delete;
@@ -55,12 +63,14 @@ class WeightedSquaring {
   void square_minus(unsigned long minus);
 
   std::size_t transform_length() const { return length_; }
+  /// "right-angle, 8 lanes" or "FFTW": which transform squares.
+  std::string transform_name() const;
   int digit_bits() const { return max_digit_bits_; }  ///< the largest s_j
   double worst_roundoff() const { return worst_roundoff_; }
   std::uint64_t fallbacks() const { return fallbacks_; }
 
  private:
-  WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits);
+  WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits, Transform transform);
 
   bool square_and_carry();  ///< transforms; the square's digits into low_/high_; false when a check fails
   void divide_and_fold(unsigned long minus);
@@ -86,7 +96,8 @@ class WeightedSquaring {
   double* input_ = nullptr;   ///< FFTW-aligned, length_, zero past digits_
   double* output_ = nullptr;  ///< FFTW-aligned, length_
   void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex
-  const RealFftPlans* plans_ = nullptr;
+  const RealFftPlans* plans_ = nullptr;                ///< FFTW's, where right_angle_ is not used
+  std::unique_ptr<RightAngleSquarer> right_angle_;
   std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded (below 2^n: the fold's input)
   std::int64_t low_carry_ = 0;       ///< floor(L / 2^n) of those below 2^n, moved into H
   std::uint64_t value_mod_p_ = 0;    ///< the input's value mod 2^61-1

@@ -1,0 +1,29 @@
+/// @file right_angle_kernels.hpp
+/// @brief RightAngleSquarer's passes, compiled once per SIMD width.
+#pragma once
+
+#include <cstddef>
+
+#include "primes/right_angle_transform.hpp"
+
+namespace tk::primes::right_angle {
+
+/// Everything one square reads and writes.
+struct Arrays {
+  double* re;
+  double* im;
+  const double* twiddle_re;
+  const double* twiddle_im;
+  const double* theta_cos;
+  const double* theta_sin;
+  std::size_t half;
+  const RightAngleSquarer::Stage* stages;
+  std::size_t stage_count;
+  std::size_t inner_from;
+  std::size_t inner_block;
+};
+
+void square_avx512(const Arrays& arrays, const double* input, double* output);
+void square_avx2(const Arrays& arrays, const double* input, double* output);
+
+}  // namespace tk::primes::right_angle

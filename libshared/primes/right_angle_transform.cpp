@@ -1,0 +1,126 @@
+/// @file right_angle_transform.cpp
+/// @brief RightAngleSquarer's plan (which passes, which twiddles) and the
+/// choice of SIMD width at run time.
+#include "primes/right_angle_transform.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <new>
+
+#include "primes/right_angle_kernels.hpp"
+
+namespace tk::primes {
+
+namespace {
+
+// Passes on blocks of up to this many points run one block at a time, so
+// a block (16 bytes a point) and its twiddles stay in a 48 KB L1 cache.
+constexpr std::size_t kInnerBlockPoints = 1024;
+
+bool cpu_has(RightAngleSquarer::Simd simd) {
+  switch (simd) {
+    case RightAngleSquarer::Simd::avx512:
+      return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("fma");
+    case RightAngleSquarer::Simd::avx2: return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    case RightAngleSquarer::Simd::best: return cpu_has(RightAngleSquarer::Simd::avx512) || cpu_has(RightAngleSquarer::Simd::avx2);
+  }
+  return false;
+}
+
+int lanes_of(RightAngleSquarer::Simd simd) {
+  if (simd == RightAngleSquarer::Simd::best) simd = cpu_has(RightAngleSquarer::Simd::avx512) ? RightAngleSquarer::Simd::avx512 : RightAngleSquarer::Simd::avx2;
+  return simd == RightAngleSquarer::Simd::avx512 ? 8 : 4;
+}
+
+// Radix-3 passes first (on the largest blocks), then one radix-2 pass if
+// the power of two left is an odd power of 4 over the lanes, then radix-4
+// passes down to blocks of one vector, which LanePasses finishes.
+std::vector<RightAngleSquarer::Stage> plan(std::size_t half, int lanes) {
+  std::vector<RightAngleSquarer::Stage> stages;
+  if (half % static_cast<std::size_t>(lanes) != 0) return stages;
+  std::size_t rest = half / static_cast<std::size_t>(lanes), block = half, twiddles = 0;
+  auto add = [&](int radix) {
+    stages.push_back({radix, block, twiddles});
+    twiddles += static_cast<std::size_t>(radix - 1) * (block / static_cast<std::size_t>(radix));
+    block /= static_cast<std::size_t>(radix);
+    rest /= static_cast<std::size_t>(radix);
+  };
+  while (rest % 3 == 0) add(3);
+  int twos = 0;
+  for (std::size_t r = rest; r % 2 == 0; r /= 2) ++twos;
+  if ((std::size_t{1} << twos) != rest) return {};
+  if (twos % 2 == 1) add(2);
+  while (rest > 1) add(4);
+  return stages;
+}
+
+std::size_t twiddle_count(const std::vector<RightAngleSquarer::Stage>& stages) {
+  std::size_t count = 0;
+  for (const auto& s : stages) count += static_cast<std::size_t>(s.radix - 1) * (s.block / static_cast<std::size_t>(s.radix));
+  return count;
+}
+
+// Whether L/2 = lanes * 3^b * 2^c with at least one pass.
+bool plannable(std::size_t length, int lanes) {
+  return length % 2 == 0 && length / 2 >= 4 * static_cast<std::size_t>(lanes) && !plan(length / 2, lanes).empty();
+}
+
+}  // namespace
+
+bool RightAngleSquarer::supports(std::size_t length) {
+  return cpu_has(Simd::best) && plannable(length, lanes_of(Simd::best));
+}
+
+std::unique_ptr<RightAngleSquarer> RightAngleSquarer::create(std::size_t length, Simd simd) {
+  if (!cpu_has(simd) || !plannable(length, lanes_of(simd))) return nullptr;
+  const int lanes = lanes_of(simd);
+  return std::unique_ptr<RightAngleSquarer>(new RightAngleSquarer(length / 2, lanes, plan(length / 2, lanes)));
+}
+
+RightAngleSquarer::RightAngleSquarer(std::size_t half, int lanes, std::vector<Stage> stages)
+    : half_(half), lanes_(lanes), stages_(std::move(stages)) {
+  inner_from_ = 0;
+  while (inner_from_ < stages_.size() && stages_[inner_from_].block > kInnerBlockPoints) ++inner_from_;
+  inner_block_ = inner_from_ < stages_.size() ? stages_[inner_from_].block : static_cast<std::size_t>(lanes);
+  const std::size_t twiddles = twiddle_count(stages_);
+  const std::size_t total = 4 * half + 2 * twiddles;
+  buffer_ = static_cast<double*>(std::aligned_alloc(64, ((total * sizeof(double) + 63) / 64) * 64));
+  if (!buffer_) throw std::bad_alloc();
+  re_ = buffer_;
+  im_ = re_ + half;
+  theta_cos_ = im_ + half;
+  theta_sin_ = theta_cos_ + half;
+  twiddle_re_ = theta_sin_ + half;
+  twiddle_im_ = twiddle_re_ + twiddles;
+  const long double pi = 3.141592653589793238462643383279502884L;
+  for (std::size_t j = 0; j < half; ++j) {
+    const long double angle = pi * static_cast<long double>(j) / static_cast<long double>(2 * half);
+    theta_cos_[j] = static_cast<double>(std::cos(angle));
+    theta_sin_[j] = static_cast<double>(std::sin(angle));
+  }
+  for (const Stage& stage : stages_) {
+    const std::size_t part = stage.block / static_cast<std::size_t>(stage.radix);
+    for (int t = 1; t < stage.radix; ++t)
+      for (std::size_t j = 0; j < part; ++j) {
+        // e^(-2*pi*i*j*t/B), the angle reduced exactly first
+        const std::size_t turn = (j * static_cast<std::size_t>(t)) % stage.block;
+        const long double angle = -2 * pi * static_cast<long double>(turn) / static_cast<long double>(stage.block);
+        const std::size_t at = stage.twiddles + static_cast<std::size_t>(t - 1) * part + j;
+        twiddle_re_[at] = static_cast<double>(std::cos(angle));
+        twiddle_im_[at] = static_cast<double>(std::sin(angle));
+      }
+  }
+}
+
+RightAngleSquarer::~RightAngleSquarer() { std::free(buffer_); }
+
+void RightAngleSquarer::square(const double* input, double* output) {
+  const right_angle::Arrays arrays{re_,         im_,          twiddle_re_,   twiddle_im_, theta_cos_, theta_sin_,
+                                   half_,       stages_.data(), stages_.size(), inner_from_, inner_block_};
+  if (lanes_ == 8)
+    right_angle::square_avx512(arrays, input, output);
+  else
+    right_angle::square_avx2(arrays, input, output);
+}
+
+}  // namespace tk::primes

@@ -1,0 +1,70 @@
+/// @file right_angle_transform.hpp
+/// @brief The acyclic square of a real sequence by one complex transform of
+/// half its length: the right-angle convolution of Crandall and Fagin
+/// (1994). A real sequence x of length L = 2N taken modulo X^L + 1 is the
+/// complex sequence c_j = (x_j + i*x_(j+N)) * theta^j, theta = e^(i*pi/L),
+/// taken cyclically modulo Z^N - 1; with x zero from N on (the padding) and
+/// the square's 2N - 1 coefficients fitting below L, the negacyclic square
+/// is the acyclic one. The transform is our own: split real and imaginary
+/// arrays, radix-3, radix-4 and radix-2 passes as SIMD over 8 (AVX-512) or
+/// 4 (AVX2) neighbouring butterflies, the last passes and the pointwise
+/// square done in registers, the inner passes one L1-sized block at a time;
+/// the forward passes leave the spectrum in digit-reversed order and the
+/// inverse ones take it so, so no pass reorders.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace tk::primes {
+
+class RightAngleSquarer {
+ public:
+  enum class Simd { best, avx2, avx512 };
+
+  /// Nothing where the CPU lacks the SIMD asked for (AVX2 with FMA at
+  /// least) or L/2 is not 2^a * 3^b with 2^a >= 4 times the SIMD width.
+  static std::unique_ptr<RightAngleSquarer> create(std::size_t length, Simd simd = Simd::best);
+  /// Whether `length` (L) has a transform on this CPU.
+  static bool supports(std::size_t length);
+
+  RightAngleSquarer(const RightAngleSquarer&) = delete;
+  RightAngleSquarer& operator=(const RightAngleSquarer&) = delete;
+  ~RightAngleSquarer();
+
+  /// output[0..L) = L * the acyclic square of input[0..L/2), the same
+  /// scaling as FFTW's unnormalised real transforms give (fft_plans.hpp);
+  /// input[L/2..L) is not read. The arrays may be the same.
+  void square(const double* input, double* output);
+
+  std::size_t length() const { return 2 * half_; }
+  int lanes() const { return lanes_; }
+
+  /// One pass of the transform: a radix-r butterfly on every r points
+  /// `block`/r apart within each block, the twiddles of stage `twiddles`.
+  struct Stage {
+    int radix;
+    std::size_t block;
+    std::size_t twiddles;  ///< offset of its (radix - 1) * block / radix twiddles
+  };
+
+ private:
+  RightAngleSquarer(std::size_t half, int lanes, std::vector<Stage> stages);
+
+  std::size_t half_;  ///< N = L/2 complex points
+  int lanes_;
+  std::vector<Stage> stages_;
+  std::size_t inner_from_ = 0;  ///< stages from here on run one block at a time
+  std::size_t inner_block_ = 0;
+  double* buffer_ = nullptr;  ///< one aligned allocation for all the arrays below
+  double* re_ = nullptr;
+  double* im_ = nullptr;
+  double* twiddle_re_ = nullptr;
+  double* twiddle_im_ = nullptr;
+  double* theta_cos_ = nullptr;  ///< cos(pi*j/L), j < N
+  double* theta_sin_ = nullptr;
+};
+
+}  // namespace tk::primes
