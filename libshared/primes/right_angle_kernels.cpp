@@ -261,15 +261,10 @@ struct LanePasses {
   }
 };
 
+// The passes forward, the pointwise square, the passes back, on a.re/a.im.
 template <class V, class I>
-TK_INLINE void square_with(const Arrays& a, const double* input, double* output) {
+TK_INLINE void passes(const Arrays& a) {
   const std::size_t n = a.half;
-  // c_j = x_j * theta^j: the upper half of the real sequence is zero.
-  for (std::size_t j = 0; j < n; j += kLanes<V>) {
-    const V x = load<V>(input + j);
-    store(a.re + j, x * load<V>(a.theta_cos + j));
-    store(a.im + j, x * load<V>(a.theta_sin + j));
-  }
   for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
   const LanePasses<V, I> lanes;
   for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
@@ -279,6 +274,18 @@ TK_INLINE void square_with(const Arrays& a, const double* input, double* output)
     for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
   }
   for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
+}
+
+template <class V, class I>
+TK_INLINE void square_with(const Arrays& a, const double* input, double* output) {
+  const std::size_t n = a.half;
+  // c_j = x_j * theta^j: the upper half of the real sequence is zero.
+  for (std::size_t j = 0; j < n; j += kLanes<V>) {
+    const V x = load<V>(input + j);
+    store(a.re + j, x * load<V>(a.theta_cos + j));
+    store(a.im + j, x * load<V>(a.theta_sin + j));
+  }
+  passes<V, I>(a);
   // times theta^-j, and 2 for FFTW's scale (L where this transform gives N).
   for (std::size_t j = 0; j < n; j += kLanes<V>) {
     const V r = load<V>(a.re + j), m = load<V>(a.im + j);
@@ -298,5 +305,9 @@ __attribute__((target("avx512f,avx512dq,fma"))) void square_avx512(const Arrays&
 __attribute__((target("avx2,fma"))) void square_avx2(const Arrays& arrays, const double* input, double* output) {
   square_with<v4d, v4i>(arrays, input, output);
 }
+
+__attribute__((target("avx512f,avx512dq,fma"))) void passes_avx512(const Arrays& arrays) { passes<v8d, v8i>(arrays); }
+
+__attribute__((target("avx2,fma"))) void passes_avx2(const Arrays& arrays) { passes<v4d, v4i>(arrays); }
 
 }  // namespace tk::primes::right_angle

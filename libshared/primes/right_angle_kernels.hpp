@@ -25,5 +25,8 @@ struct Arrays {
 
 void square_avx512(const Arrays& arrays, const double* input, double* output);
 void square_avx2(const Arrays& arrays, const double* input, double* output);
+/// The transform, pointwise square and inverse alone, on arrays.re/im.
+void passes_avx512(const Arrays& arrays);
+void passes_avx2(const Arrays& arrays);
 
 }  // namespace tk::primes::right_angle

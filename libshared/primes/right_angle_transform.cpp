@@ -115,12 +115,23 @@ RightAngleSquarer::RightAngleSquarer(std::size_t half, int lanes, std::vector<St
 RightAngleSquarer::~RightAngleSquarer() { std::free(buffer_); }
 
 void RightAngleSquarer::square(const double* input, double* output) {
-  const right_angle::Arrays arrays{re_,         im_,          twiddle_re_,   twiddle_im_, theta_cos_, theta_sin_,
-                                   half_,       stages_.data(), stages_.size(), inner_from_, inner_block_};
+  const right_angle::Arrays arrays = this->arrays();
   if (lanes_ == 8)
     right_angle::square_avx512(arrays, input, output);
   else
     right_angle::square_avx2(arrays, input, output);
+}
+
+void RightAngleSquarer::square_in_place() {
+  const right_angle::Arrays arrays = this->arrays();
+  if (lanes_ == 8)
+    right_angle::passes_avx512(arrays);
+  else
+    right_angle::passes_avx2(arrays);
+}
+
+right_angle::Arrays RightAngleSquarer::arrays() const {
+  return {re_, im_, twiddle_re_, twiddle_im_, theta_cos_, theta_sin_, half_, stages_.data(), stages_.size(), inner_from_, inner_block_};
 }
 
 }  // namespace tk::primes

@@ -20,6 +20,10 @@
 
 namespace tk::primes {
 
+namespace right_angle {
+struct Arrays;
+}
+
 class RightAngleSquarer {
  public:
   enum class Simd { best, avx2, avx512 };
@@ -39,6 +43,16 @@ class RightAngleSquarer {
   /// input[L/2..L) is not read. The arrays may be the same.
   void square(const double* input, double* output);
 
+  /// The same square in place, for callers that weight and unweight
+  /// themselves: real()/imaginary() hold c_j (theta^j and all) before and
+  /// N times the cyclic square after, j < N; the square's coefficient j is
+  /// then Re and its coefficient j + N is Im of that times theta^-j / N.
+  void square_in_place();
+  double* real() { return re_; }
+  double* imaginary() { return im_; }
+  const double* theta_cos() const { return theta_cos_; }  ///< cos(pi*j/L), j < N
+  const double* theta_sin() const { return theta_sin_; }
+
   std::size_t length() const { return 2 * half_; }
   int lanes() const { return lanes_; }
 
@@ -52,6 +66,7 @@ class RightAngleSquarer {
 
  private:
   RightAngleSquarer(std::size_t half, int lanes, std::vector<Stage> stages);
+  right_angle::Arrays arrays() const;
 
   std::size_t half_;  ///< N = L/2 complex points
   int lanes_;

@@ -40,18 +40,28 @@ __attribute__((always_inline)) inline HighCarry carry_body(const std::int64_t* _
   return {low_carry, carry, limb};
 }
 
-template <bool kAdd>
+template <bool kAdd, bool kComplex>
 __attribute__((always_inline)) inline void fold_body(const std::int64_t* __restrict low, const mp_limb_t* __restrict q,
-                                                     const std::uint8_t* __restrict bits, const double* __restrict weight,
-                                                     double* __restrict input, std::size_t low_digits,
-                                                     std::size_t digits, std::int64_t bottom, std::int64_t top) {
+                                                     const std::uint8_t* __restrict bits, const FoldTarget& target,
+                                                     std::size_t low_digits, std::size_t digits, std::int64_t bottom,
+                                                     std::int64_t top) {
+  std::int64_t* __restrict digit_out = target.digits;
+  double* __restrict re = target.re;
+  double* __restrict im = target.im;
+  const double* __restrict re_weight = target.re_weight;
+  const double* __restrict im_weight = target.im_weight;
+  auto write = [&](std::size_t j, std::int64_t digit) {
+    digit_out[j] = digit;
+    const double d = static_cast<double>(digit);
+    re[j] = d * re_weight[j];
+    if constexpr (kComplex) im[j] = d * im_weight[j];
+  };
   std::int64_t carry = bottom;
   auto put = [&](std::size_t j, std::int64_t total) {
     const unsigned s = bits[j];
     const std::int64_t up = (total + (std::int64_t{1} << (s - 1))) >> s;  // balanced: digit in [-2^(s-1), 2^(s-1))
-    const std::int64_t digit = total - (up << s);
     carry = up;
-    input[j] = static_cast<double>(digit) * weight[j];
+    write(j, total - (up << s));
   };
   std::uint64_t position = 0;  // e_j, kept by adding
   for (std::size_t j = 0; j < low_digits; ++j) {
@@ -61,16 +71,17 @@ __attribute__((always_inline)) inline void fold_body(const std::int64_t* __restr
   }
   carry += top;
   for (std::size_t j = low_digits; j + 1 < digits; ++j) put(j, carry);
-  const std::size_t last = digits - 1;  // takes what is left, unbalanced
-  input[last] = static_cast<double>(carry) * weight[last];
+  write(digits - 1, carry);  // the last takes what is left, unbalanced
 }
 
-#define TK_FOLD_ARGS                                                                                            \
-  const std::int64_t *low, const mp_limb_t *q, const std::uint8_t *bits, const double *weight, double *input, \
+#define TK_FOLD_ARGS                                                                                        \
+  const std::int64_t *low, const mp_limb_t *q, const std::uint8_t *bits, const FoldTarget &target,          \
       std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, bool add_quotient
-#define TK_FOLD_CALL(body)                                                                                         \
-  return add_quotient ? body<true>(low, q, bits, weight, input, low_digits, digits, bottom, top)                \
-                      : body<false>(low, q, bits, weight, input, low_digits, digits, bottom, top)
+#define TK_FOLD_ONE(add, complex) fold_body<add, complex>(low, q, bits, target, low_digits, digits, bottom, top)
+#define TK_FOLD_CALL(body)                                                           \
+  if (target.im)                                                                     \
+    return add_quotient ? TK_FOLD_ONE(true, true) : TK_FOLD_ONE(false, true);        \
+  return add_quotient ? TK_FOLD_ONE(true, false) : TK_FOLD_ONE(false, false)
 
 __attribute__((target("avx2,bmi,bmi2"))) HighCarry carry_fast(const std::int64_t* z, const std::uint8_t* bits,
                                                               std::size_t low_digits, std::size_t coefficients,
@@ -85,6 +96,7 @@ __attribute__((target("avx2,bmi,bmi2"))) void fold_fast(TK_FOLD_ARGS) { TK_FOLD_
 void fold_portable(TK_FOLD_ARGS) { TK_FOLD_CALL(fold_body); }
 
 #undef TK_FOLD_ARGS
+#undef TK_FOLD_ONE
 #undef TK_FOLD_CALL
 
 bool cpu_is_fast() {
@@ -100,13 +112,12 @@ HighCarry carry_into_limbs(const std::int64_t* z, const std::uint8_t* bits, std:
                        : carry_portable(z, bits, low_digits, coefficients, high);
 }
 
-void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const double* weight,
-                 double* input, std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top,
-                 bool add_quotient) {
+void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const FoldTarget& target,
+                 std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, bool add_quotient) {
   if (cpu_is_fast())
-    fold_fast(low, q, bits, weight, input, low_digits, digits, bottom, top, add_quotient);
+    fold_fast(low, q, bits, target, low_digits, digits, bottom, top, add_quotient);
   else
-    fold_portable(low, q, bits, weight, input, low_digits, digits, bottom, top, add_quotient);
+    fold_portable(low, q, bits, target, low_digits, digits, bottom, top, add_quotient);
 }
 
 }  // namespace tk::primes

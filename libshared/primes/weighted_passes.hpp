@@ -22,11 +22,21 @@ struct HighCarry {
 HighCarry carry_into_limbs(const std::int64_t* z, const std::uint8_t* bits, std::size_t low_digits,
                            std::size_t coefficients, std::uint64_t* high);
 
-/// input[j] = weight[j] * balanced digits of low[j] + sign * (bits e_j.. of q)
-/// for j < low_digits, plus `bottom` at digit 0 and `top` at digit low_digits;
+/// Where the fold puts the next transform's input: the integer digits,
+/// and each digit times re_weight[j] into re[j] and, for the right-angle
+/// transform (im not null), times im_weight[j] into im[j].
+struct FoldTarget {
+  std::int64_t* digits;
+  double* re;
+  const double* re_weight;
+  double* im = nullptr;
+  const double* im_weight = nullptr;
+};
+
+/// Digit j = the balanced digits of low[j] + sign * (bits e_j.. of q) for
+/// j < low_digits, plus `bottom` at digit 0 and `top` at digit low_digits;
 /// the last of the `digits` takes what is left.
-void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const double* weight,
-                 double* input, std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top,
-                 bool add_quotient);
+void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const FoldTarget& target,
+                 std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, bool add_quotient);
 
 }  // namespace tk::primes

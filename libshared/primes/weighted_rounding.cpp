@@ -7,6 +7,10 @@
 
 #include "primes/weighted_squaring_detail.hpp"
 
+// The vector helpers are always inlined into functions compiled for
+// AVX2 or AVX-512, so no vector crosses a call.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 namespace tk::primes {
 
 namespace {
@@ -16,54 +20,92 @@ using namespace weighted_detail;
 typedef double v4d __attribute__((vector_size(32)));
 typedef std::int64_t v4i __attribute__((vector_size(32)));
 typedef std::uint64_t v4u __attribute__((vector_size(32)));
+typedef double v8d __attribute__((vector_size(64)));
+typedef std::int64_t v8i __attribute__((vector_size(64)));
+typedef std::uint64_t v8u __attribute__((vector_size(64)));
+
+#define TK_INLINE __attribute__((always_inline)) inline
 
 // Adding 1.5*2^52 rounds |v| < 2^51 to an integer, which then sits in the
 // low bits of the sum's representation: subtracting the shifter's bits
 // gives it as an int64 with no conversion instruction.
 constexpr double kShifter = 6755399441055744.0;
 
-template <bool kAvx2>
-__attribute__((always_inline)) inline RoundedCoefficients round_with(const double* __restrict output, const double* __restrict weight,
-                                      const std::uint8_t* __restrict rotation, std::int64_t* __restrict z,
-                                      std::size_t count) {
-  const v4d shifter = {kShifter, kShifter, kShifter, kShifter};
-  std::int64_t shifter_bits;
-  std::memcpy(&shifter_bits, &kShifter, sizeof shifter_bits);
-  const v4i shifter_int = {shifter_bits, shifter_bits, shifter_bits, shifter_bits};
-  const v4d limit = {0x1p51, 0x1p51, 0x1p51, 0x1p51};
-  const v4u p = {kP61, kP61, kP61, kP61};
-  const v4u sixty_one = {61, 61, 61, 61};
-  v4d worst = {0, 0, 0, 0};
-  v4i bad = {0, 0, 0, 0};
-  v4u sum = {0, 0, 0, 0};
-  std::size_t j = 0;
-  for (; j + 4 <= count; j += 4) {
-    v4d value, w;
-    std::memcpy(&value, output + j, sizeof value);
-    std::memcpy(&w, weight + j, sizeof w);
-    value *= w;
-    const v4d moved = value + shifter;
-    const v4d rounded = moved - shifter;
-    const v4d error = value > rounded ? value - rounded : rounded - value;
+template <class V>
+TK_INLINE V load(const double* p) {
+  V v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+// Worst error, out-of-range lanes and the sum mod p, over vectors of
+// values: V doubles, I and U the same lanes as signed and unsigned.
+template <class V, class I, class U>
+struct Rounder {
+  static constexpr std::size_t kLanes = sizeof(V) / sizeof(double);
+  V worst{}, biggest{}, probe{}, zero{}, shifter{}, limit{};
+  I shifter_int{};
+  U sum{}, p{}, sixty_one{};
+
+  TK_INLINE Rounder() {
+    std::int64_t shifter_bits;
+    std::memcpy(&shifter_bits, &kShifter, sizeof shifter_bits);
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      shifter[l] = kShifter;
+      shifter_int[l] = shifter_bits;
+      limit[l] = 0x1p51;
+      p[l] = kP61;
+      sixty_one[l] = 61;
+    }
+  }
+
+  TK_INLINE void add(V value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+    // Only max-like selects (GCC 12 scalarises other double compares at
+    // AVX-512). Values are clamped to +-2^51 so every lane converts to a
+    // sane integer; the largest magnitude and a NaN probe (a NaN or an
+    // infinity times 0 is NaN) say afterwards whether any was out of range.
+    const V magnitude = value > -value ? value : -value;
+    biggest = magnitude > biggest ? magnitude : biggest;
+    probe += value * zero;
+    V clamped = value > -limit ? value : -limit;
+    clamped = clamped < limit ? clamped : limit;
+    const V moved = clamped + shifter;
+    const V rounded = moved - shifter;
+    const V error = clamped > rounded ? clamped - rounded : rounded - clamped;
     worst = error > worst ? error : worst;
-    const v4d magnitude = value > -value ? value : -value;
-    const v4i fits = magnitude < limit;  // all ones where |value| < 2^51 (false for NaN)
-    bad |= ~fits;
-    const v4i zi = (v4i)((v4u)moved - (v4u)shifter_int) & fits;  // unsigned: lanes out of range wrap harmlessly
-    std::memcpy(z + j, &zi, sizeof zi);
-    const v4u residue = (v4u)zi + (p & (v4u)(zi >> 63));
-    const v4u e = {rotation[j], rotation[j + 1], rotation[j + 2], rotation[j + 3]};
-    const v4u term = ((residue << e) & p) + (residue >> (sixty_one - e));
+    const I zi = (I)((U)moved - (U)shifter_int);
+    std::memcpy(z, &zi, sizeof zi);
+    const U residue = (U)zi + (p & (U)(zi >> 63));
+    U e;
+    for (std::size_t l = 0; l < kLanes; ++l) e[l] = rotation[l];
+    const U term = ((residue << e) & p) + (residue >> (sixty_one - e));
     sum += term;
     sum = (sum & p) + (sum >> 61);
   }
-  RoundedCoefficients result;
-  std::uint64_t total = 0;
-  for (int lane = 0; lane < 4; ++lane) {
-    result.worst = std::max(result.worst, worst[lane]);
-    result.out_of_range |= bad[lane] != 0;
-    total = fold61(total + sum[lane]);
+
+  TK_INLINE RoundedCoefficients finish() const {
+    RoundedCoefficients result;
+    std::uint64_t total = 0;
+    for (std::size_t lane = 0; lane < kLanes; ++lane) {
+      result.worst = std::max(result.worst, worst[lane]);
+      result.out_of_range |= !(biggest[lane] < 0x1p51) || probe[lane] != probe[lane];
+      total = fold61(total + sum[lane]);
+    }
+    result.sum = total;
+    return result;
   }
+};
+
+template <class V, class I, class U>
+TK_INLINE RoundedCoefficients round_with(const double* __restrict output, const double* __restrict weight,
+                                         const std::uint8_t* __restrict rotation, std::int64_t* __restrict z,
+                                         std::size_t count) {
+  Rounder<V, I, U> rounder;
+  constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
+  std::size_t j = 0;
+  for (; j + lanes <= count; j += lanes) rounder.add(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j);
+  RoundedCoefficients result = rounder.finish();
+  std::uint64_t total = result.sum;
   for (; j < count; ++j) {  // the last few, one at a time
     const double value = output[j] * weight[j];
     const double rounded = (value + kShifter) - kShifter;
@@ -73,20 +115,59 @@ __attribute__((always_inline)) inline RoundedCoefficients round_with(const doubl
     z[j] = fits ? static_cast<std::int64_t>(rounded) : 0;
     total = fold61(total + times_power61(residue61(z[j]), rotation[j]));
   }
-  (void)kAvx2;
   result.sum = reduce61(total);
   return result;
+}
+
+template <class V, class I, class U>
+TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re, const double* __restrict im,
+                                                     const RightAngleWeights& w, const std::uint8_t* __restrict rotation,
+                                                     std::int64_t* __restrict z, std::size_t half) {
+  Rounder<V, I, U> rounder;
+  for (std::size_t j = 0; j < half; j += Rounder<V, I, U>::kLanes) {
+    const V r = load<V>(re + j), m = load<V>(im + j);
+    rounder.add(r * load<V>(w.a + j) + m * load<V>(w.b + j), rotation + j, z + j);
+    rounder.add(m * load<V>(w.c + j) - r * load<V>(w.d + j), rotation + half + j, z + half + j);
+  }
+  RoundedCoefficients result = rounder.finish();
+  result.sum = reduce61(result.sum);
+  return result;
+}
+
+__attribute__((target("avx512f,avx512dq"))) RoundedCoefficients round_avx512(const double* output, const double* weight,
+                                                                            const std::uint8_t* rotation, std::int64_t* z,
+                                                                            std::size_t count) {
+  return round_with<v8d, v8i, v8u>(output, weight, rotation, z, count);
 }
 
 __attribute__((target("avx2"))) RoundedCoefficients round_avx2(const double* output, const double* weight,
                                                                const std::uint8_t* rotation, std::int64_t* z,
                                                                std::size_t count) {
-  return round_with<true>(output, weight, rotation, z, count);
+  return round_with<v4d, v4i, v4u>(output, weight, rotation, z, count);
 }
 
 RoundedCoefficients round_portable(const double* output, const double* weight, const std::uint8_t* rotation,
                                    std::int64_t* z, std::size_t count) {
-  return round_with<false>(output, weight, rotation, z, count);
+  return round_with<v4d, v4i, v4u>(output, weight, rotation, z, count);
+}
+
+__attribute__((target("avx512f,avx512dq"))) RoundedCoefficients right_angle_avx512(const double* re, const double* im,
+                                                                                  const RightAngleWeights& weights,
+                                                                                  const std::uint8_t* rotation,
+                                                                                  std::int64_t* z, std::size_t half) {
+  return round_right_angle_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half);
+}
+
+__attribute__((target("avx2"))) RoundedCoefficients right_angle_avx2(const double* re, const double* im,
+                                                                     const RightAngleWeights& weights,
+                                                                     const std::uint8_t* rotation, std::int64_t* z,
+                                                                     std::size_t half) {
+  return round_right_angle_with<v4d, v4i, v4u>(re, im, weights, rotation, z, half);
+}
+
+bool has_avx512() {
+  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+  return avx512;
 }
 
 }  // namespace
@@ -94,7 +175,15 @@ RoundedCoefficients round_portable(const double* output, const double* weight, c
 RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint8_t* rotation,
                                        std::int64_t* z, std::size_t count) {
   static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (has_avx512()) return round_avx512(output, weight, rotation, z, count);
   return avx2 ? round_avx2(output, weight, rotation, z, count) : round_portable(output, weight, rotation, z, count);
+}
+
+// Only the right-angle transform's callers come here, and it needs AVX2.
+RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
+                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half) {
+  return has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half)
+                      : right_angle_avx2(re, im, weights, rotation, z, half);
 }
 
 }  // namespace tk::primes

@@ -2,7 +2,8 @@
 /// @brief The first half of WeightedSquaring's carry pass, the part with
 /// no carry: unweight and round the inverse transform's output, track the
 /// worst rounding error, and sum the coefficients times 2^(e_j) modulo
-/// 2^61 - 1. Vectorised (AVX2 where the CPU has it, chosen at run time).
+/// 2^61 - 1. Vectorised (AVX-512 or AVX2 where the CPU has it, chosen at
+/// run time).
 #pragma once
 
 #include <cstddef>
@@ -19,5 +20,20 @@ struct RoundedCoefficients {
 /// z[j] = round(output[j] * weight[j]) for j < count; rotation[j] = e_j mod 61.
 RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint8_t* rotation,
                                        std::int64_t* z, std::size_t count);
+
+/// The right-angle transform's output (RightAngleSquarer::square_in_place),
+/// unweighted and rounded: for j < half, z[j] = round(re*a + im*b) and
+/// z[j + half] = round(im*c - re*d), the weights at j (theta^-j, the
+/// digits' weights and the scale in one). half is a multiple of 8; z and
+/// rotation have 2 * half places (weights zero and rotations zero past the
+/// square's last coefficient).
+struct RightAngleWeights {
+  const double* a;
+  const double* b;
+  const double* c;
+  const double* d;
+};
+RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
+                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half);
 
 }  // namespace tk::primes

@@ -33,13 +33,16 @@ void WeightedSquaring::square_minus(unsigned long minus) {
 }
 
 bool WeightedSquaring::square_and_carry() {
-  if (right_angle_)
-    right_angle_->square(input_, output_);
-  else
+  RoundedCoefficients rounded;
+  if (right_angle_) {
+    right_angle_->square_in_place();
+    const RightAngleWeights weights{round_a_.data(), round_b_.data(), round_c_.data(), round_d_.data()};
+    rounded = round_right_angle(right_angle_->real(), right_angle_->imaginary(), weights, rotation_.data(),
+                                coefficient_.data(), length_ / 2);
+  } else {
     square_by_real_fft(*plans_, input_, static_cast<fftw_complex*>(spectrum_), output_, length_);
-
-  const RoundedCoefficients rounded =
-      round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);
+    rounded = round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);
+  }
   // Carry. Below 2^n the digits need not be normal: the fold's balanced
   // carrying takes the coefficients as they are. Only their carry into
   // 2^n (c_m = floor(L / 2^n)) is needed, for H + c_m: a two-instruction
@@ -105,9 +108,16 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
 }
 
 void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
+  FoldTarget target{digit_.data(), input_, input_weight_.data()};
+  if (right_angle_) {
+    target = {digit_.data(), right_angle_->real(), re_weight_.data(), right_angle_->imaginary(), im_weight_.data()};
+    // The transform works in place: the square's values past the digits go.
+    std::fill(target.re + digits_, target.re + length_ / 2, 0.0);
+    std::fill(target.im + digits_, target.im + length_ / 2, 0.0);
+  }
   // c = -1 adds the quotient, c = +1 subtracts it.
-  fold_digits(coefficient_.data(), quotient_.data(), bits_.data(), input_weight_.data(), input_, low_digits_, digits_,
-              bottom, top, form_.c < 0);
+  fold_digits(coefficient_.data(), quotient_.data(), bits_.data(), target, low_digits_, digits_, bottom, top,
+              form_.c < 0);
 }
 
 }  // namespace tk::primes

@@ -78,6 +78,7 @@ class WeightedSquaring {
   /// `top` times 2^n and `bottom` added, into input_ (and x mod 2^61-1).
   void fold_into_input(std::int64_t top, std::int64_t bottom);
   void square_by_gmp(unsigned long minus);
+  void right_angle_weights();
 
   SpecialForm form_;
   std::size_t length_;
@@ -90,6 +91,10 @@ class WeightedSquaring {
   std::vector<std::uint8_t> rotation_;   ///< e_j mod 61: 2^(e_j) mod 2^61-1 is a rotation
   std::vector<double> input_weight_;     ///< 2^(e_j - nj/m)
   std::vector<double> output_weight_;    ///< its inverse over L
+  // The right-angle transform's: input_weight_ times cos and sin(pi*j/L),
+  // and the rounding's weights (weighted_rounding.hpp).
+  std::vector<double> re_weight_, im_weight_, round_a_, round_b_, round_c_, round_d_;
+  std::vector<std::int64_t> digit_;     ///< the input's digits, for store()
   std::vector<mp_limb_t> high_;          ///< the square's bits from 2^n up
   std::vector<mp_limb_t> quotient_;      ///< high_ / k, zero-padded
   std::size_t high_limbs_ = 0;
@@ -98,7 +103,7 @@ class WeightedSquaring {
   void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex
   const RealFftPlans* plans_ = nullptr;                ///< FFTW's, where right_angle_ is not used
   std::unique_ptr<RightAngleSquarer> right_angle_;
-  std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded (below 2^n: the fold's input)
+  std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded (below 2^n: the fold's input); L places
   std::int64_t low_carry_ = 0;       ///< floor(L / 2^n) of those below 2^n, moved into H
   std::uint64_t value_mod_p_ = 0;    ///< the input's value mod 2^61-1
   std::uint64_t square_mod_p_ = 0;   ///< its square's, from the coefficients

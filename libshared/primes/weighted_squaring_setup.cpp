@@ -165,7 +165,9 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
     output_weight_[j] = static_cast<double>(std::exp2(-excess) / static_cast<long double>(length));
     if (j < digits_) input_weight_[j] = static_cast<double>(std::exp2(excess));
   }
-  coefficient_.assign(coefficients_, 0);
+  coefficient_.assign(length, 0);
+  rotation_.resize(length, 0);
+  digit_.assign(digits_, 0);
   modulus_mod_p_ = mpz_fdiv_ui(modulus_of(form).get_mpz_t(), kP61);
   high_limbs_ = (exponent_[coefficients_] - n) / 64 + 2;
   high_.assign(high_limbs_ + 1, 0);
@@ -175,7 +177,38 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
   std::fill(input_, input_ + length_, 0.0);
   if (transform == Transform::own_where_planned) right_angle_ = RightAngleSquarer::create(length_);
-  if (!right_angle_) plans_ = real_fft_plans(length_);
+  if (right_angle_)
+    right_angle_weights();
+  else
+    plans_ = real_fft_plans(length_);
+}
+
+// The right-angle transform gives N (not L) times the square, times
+// theta^j: its weights fold theta^-j and 2 into the digits' weights.
+void WeightedSquaring::right_angle_weights() {
+  const std::size_t half = length_ / 2;
+  const double* cosine = right_angle_->theta_cos();
+  const double* sine = right_angle_->theta_sin();
+  re_weight_.resize(digits_);
+  im_weight_.resize(digits_);
+  for (std::size_t j = 0; j < digits_; ++j) {
+    re_weight_[j] = input_weight_[j] * cosine[j];
+    im_weight_[j] = input_weight_[j] * sine[j];
+  }
+  round_a_.assign(half, 0.0);
+  round_b_.assign(half, 0.0);
+  round_c_.assign(half, 0.0);
+  round_d_.assign(half, 0.0);
+  for (std::size_t j = 0; j < half; ++j) {
+    if (j < coefficients_) {
+      round_a_[j] = 2 * output_weight_[j] * cosine[j];
+      round_b_[j] = 2 * output_weight_[j] * sine[j];
+    }
+    if (j + half < coefficients_) {
+      round_c_[j] = 2 * output_weight_[j + half] * cosine[j];
+      round_d_[j] = 2 * output_weight_[j + half] * sine[j];
+    }
+  }
 }
 
 WeightedSquaring::~WeightedSquaring() {
@@ -204,7 +237,7 @@ void WeightedSquaring::store(mpz_class& x) const {
   std::vector<mp_limb_t> limbs(exponent_[digits_] / 64 + 3, 0);
   std::int64_t carry = 0;
   for (std::size_t j = 0; j < digits_; ++j) {
-    const std::int64_t digit = std::llround(input_[j] / input_weight_[j]) + carry;
+    const std::int64_t digit = digit_[j] + carry;
     const std::int64_t low = digit & ((std::int64_t{1} << bits_[j]) - 1);
     carry = digit >> bits_[j];
     const std::size_t at = exponent_[j] / 64;
