@@ -1,6 +1,10 @@
 /// @file weighted_passes.cpp
 #include "primes/weighted_passes.hpp"
 
+// GCC 12 warns inside its own AVX-512 intrinsics (their _mm512_undefined).
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <immintrin.h>
+
 #include "primes/weighted_squaring_detail.hpp"
 
 namespace tk::primes {
@@ -40,48 +44,129 @@ __attribute__((always_inline)) inline HighCarry carry_body(const std::int64_t* _
   return {low_carry, carry, limb};
 }
 
-template <bool kAdd, bool kComplex>
-__attribute__((always_inline)) inline void fold_body(const std::int64_t* __restrict low, const mp_limb_t* __restrict q,
-                                                     const std::uint8_t* __restrict bits, const FoldTarget& target,
-                                                     std::size_t low_digits, std::size_t digits, std::int64_t bottom,
-                                                     std::int64_t top) {
-  std::int64_t* __restrict digit_out = target.digits;
-  double* __restrict re = target.re;
-  double* __restrict im = target.im;
-  const double* __restrict re_weight = target.re_weight;
-  const double* __restrict im_weight = target.im_weight;
-  auto write = [&](std::size_t j, std::int64_t digit) {
-    digit_out[j] = digit;
-    const double d = static_cast<double>(digit);
-    re[j] = d * re_weight[j];
-    if constexpr (kComplex) im[j] = d * im_weight[j];
-  };
-  std::int64_t carry = bottom;
-  auto put = [&](std::size_t j, std::int64_t total) {
-    const unsigned s = bits[j];
-    const std::int64_t up = (total + (std::int64_t{1} << (s - 1))) >> s;  // balanced: digit in [-2^(s-1), 2^(s-1))
-    carry = up;
-    write(j, total - (up << s));
-  };
-  std::uint64_t position = 0;  // e_j, kept by adding
+// Three passes, so the serial one is short: the quotient's bits joined
+// to the low coefficients (independent digits), the balanced carry (the
+// only chain: an add, a shift, a subtract), then the digits weighted into
+// the transform's input (vectorised where the CPU converts int64 lanes).
+template <bool kAdd>
+__attribute__((always_inline)) inline void join_quotient(const std::int64_t* __restrict low, const mp_limb_t* __restrict q,
+                                                         const std::uint8_t* __restrict bits, const std::uint64_t* __restrict exponent,
+                                                         std::int64_t* __restrict joined, std::size_t low_digits) {
   for (std::size_t j = 0; j < low_digits; ++j) {
-    const auto quotient = static_cast<std::int64_t>(bits_at(q, position, bits[j]));
-    put(j, (kAdd ? low[j] + quotient : low[j] - quotient) + carry);
-    position += bits[j];
+    const auto quotient = static_cast<std::int64_t>(bits_at(q, exponent[j], bits[j]));
+    joined[j] = kAdd ? low[j] + quotient : low[j] - quotient;
   }
-  carry += top;
-  for (std::size_t j = low_digits; j + 1 < digits; ++j) put(j, carry);
-  write(digits - 1, carry);  // the last takes what is left, unbalanced
 }
 
-#define TK_FOLD_ARGS                                                                                        \
-  const std::int64_t *low, const mp_limb_t *q, const std::uint8_t *bits, const FoldTarget &target,          \
-      std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, bool add_quotient
-#define TK_FOLD_ONE(add, complex) fold_body<add, complex>(low, q, bits, target, low_digits, digits, bottom, top)
-#define TK_FOLD_CALL(body)                                                           \
-  if (target.im)                                                                     \
-    return add_quotient ? TK_FOLD_ONE(true, true) : TK_FOLD_ONE(false, true);        \
-  return add_quotient ? TK_FOLD_ONE(true, false) : TK_FOLD_ONE(false, false)
+// Balanced digits: digit in [-2^(s-1), 2^(s-1)), the rest carried up.
+// Half of 2^s is added before the carry, so the chain is an add and a shift.
+struct Balancer {
+  std::int64_t* __restrict digit;
+  const std::uint8_t* __restrict bits;
+
+  __attribute__((always_inline)) std::int64_t step(std::size_t j, std::int64_t carry) const {
+    const unsigned s = bits[j];
+    const std::int64_t total = digit[j] + (std::int64_t{1} << (s - 1));
+    const std::int64_t up = (total + carry) >> s;
+    digit[j] = total + carry - (up << s) - (std::int64_t{1} << (s - 1));
+    return up;
+  }
+  // Adds `carry` at digit `from` and carries it on until it is absorbed or
+  // reaches `end` (then returned): two or three digits for a carry that
+  // came from another chain.
+  __attribute__((always_inline)) std::int64_t absorb(std::size_t from, std::size_t end, std::int64_t carry) const {
+    for (std::size_t j = from; carry != 0 && j < end; ++j) carry = step(j, carry);
+    return carry;
+  }
+};
+
+// The low digits carry in kChains independent chains over as many
+// stretches, interleaved (one chain is bound by its add-and-shift
+// latency); each chain's last carry is then absorbed at the start of the
+// next stretch. The value is the serial pass's; the digits are as balanced.
+constexpr std::size_t kChains = 4;
+
+__attribute__((always_inline)) inline void balance(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits,
+                                                   std::size_t low_digits, std::size_t digits, std::int64_t bottom,
+                                                   std::int64_t top) {
+  const Balancer balancer{digit, bits};
+  const std::size_t stretch = low_digits / kChains;
+  std::int64_t carry[kChains] = {bottom};
+  for (std::size_t i = 0; i < stretch; ++i)
+    for (std::size_t c = 0; c < kChains; ++c) carry[c] = balancer.step(c * stretch + i, carry[c]);
+  for (std::size_t j = kChains * stretch; j < low_digits; ++j) carry[kChains - 1] = balancer.step(j, carry[kChains - 1]);
+  for (std::size_t c = 1; c < kChains; ++c) {
+    const std::size_t end = c + 1 < kChains ? (c + 1) * stretch : low_digits;
+    carry[c] += balancer.absorb(c * stretch, end, carry[c - 1]);
+  }
+  std::int64_t up = carry[kChains - 1] + top;
+  for (std::size_t j = low_digits; j + 1 < digits; ++j) {  // the top digits hold only what carries in
+    digit[j] = 0;
+    up = balancer.step(j, up);
+  }
+  digit[digits - 1] = up;  // the last takes what is left, unbalanced
+}
+
+__attribute__((always_inline)) inline void weigh(const FoldTarget& target, std::size_t digits) {
+  const std::int64_t* __restrict digit = target.digits;
+  double* __restrict re = target.re;
+  const double* __restrict re_weight = target.re_weight;
+  for (std::size_t j = 0; j < digits; ++j) re[j] = static_cast<double>(digit[j]) * re_weight[j];
+  if (!target.im) return;
+  double* __restrict im = target.im;
+  const double* __restrict im_weight = target.im_weight;
+  for (std::size_t j = 0; j < digits; ++j) im[j] = static_cast<double>(digit[j]) * im_weight[j];
+}
+
+// join_quotient eight digits at a time: the two limbs each digit's bits
+// span gathered, shifted and masked in lanes (the scalar loop spends about
+// fifteen instructions a digit on it).
+template <bool kAdd>
+__attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void join_quotient_avx512(
+    const std::int64_t* __restrict low, const mp_limb_t* __restrict q, const std::uint8_t* __restrict bits,
+    const std::uint64_t* __restrict exponent, std::int64_t* __restrict joined, std::size_t low_digits) {
+  const __m512i one = _mm512_set1_epi64(1), sixty_three = _mm512_set1_epi64(63), sixty_four = _mm512_set1_epi64(64);
+  const auto* limbs = reinterpret_cast<const long long*>(q);
+  std::size_t j = 0;
+  for (; j + 8 <= low_digits; j += 8) {
+    const __m512i e = _mm512_loadu_si512(exponent + j);
+    const __m512i at = _mm512_srli_epi64(e, 6);
+    const __m512i shift = _mm512_and_si512(e, sixty_three);
+    const __m512i below = _mm512_i64gather_epi64(at, limbs, 8);
+    const __m512i above = _mm512_i64gather_epi64(_mm512_add_epi64(at, one), limbs, 8);
+    // a shift by 64 gives 0 in these instructions, as a shift of 0 needs
+    const __m512i word = _mm512_or_si512(_mm512_srlv_epi64(below, shift), _mm512_sllv_epi64(above, _mm512_sub_epi64(sixty_four, shift)));
+    const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits + j)));
+    const __m512i quotient = _mm512_and_si512(word, _mm512_sub_epi64(_mm512_sllv_epi64(one, size), one));
+    const __m512i coefficient = _mm512_loadu_si512(low + j);
+    _mm512_storeu_si512(joined + j, kAdd ? _mm512_add_epi64(coefficient, quotient) : _mm512_sub_epi64(coefficient, quotient));
+  }
+  for (; j < low_digits; ++j) {
+    const auto quotient = static_cast<std::int64_t>(bits_at(q, exponent[j], bits[j]));
+    joined[j] = kAdd ? low[j] + quotient : low[j] - quotient;
+  }
+}
+
+template <bool kAdd, bool kGather = false>
+__attribute__((always_inline)) inline void fold_body(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits,
+                                                     const std::uint64_t* exponent, const FoldTarget& target,
+                                                     std::size_t low_digits, std::size_t digits, std::int64_t bottom,
+                                                     std::int64_t top) {
+  if constexpr (kGather)
+    join_quotient_avx512<kAdd>(low, q, bits, exponent, target.digits, low_digits);
+  else
+    join_quotient<kAdd>(low, q, bits, exponent, target.digits, low_digits);
+  balance(target.digits, bits, low_digits, digits, bottom, top);
+  weigh(target, digits);
+}
+
+#define TK_FOLD_ARGS                                                                                         \
+  const std::int64_t *low, const mp_limb_t *q, const std::uint8_t *bits, const std::uint64_t *exponent,      \
+      const FoldTarget &target, std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, \
+      bool add_quotient
+#define TK_FOLD_CALL(body)                                                                           \
+  return add_quotient ? body<true>(low, q, bits, exponent, target, low_digits, digits, bottom, top) \
+                      : body<false>(low, q, bits, exponent, target, low_digits, digits, bottom, top)
 
 __attribute__((target("avx2,bmi,bmi2"))) HighCarry carry_fast(const std::int64_t* z, const std::uint8_t* bits,
                                                               std::size_t low_digits, std::size_t coefficients,
@@ -92,11 +177,20 @@ HighCarry carry_portable(const std::int64_t* z, const std::uint8_t* bits, std::s
                          std::size_t coefficients, std::uint64_t* high) {
   return carry_body(z, bits, low_digits, coefficients, high);
 }
+template <bool kAdd>
+__attribute__((always_inline)) inline void fold_gathering(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits,
+                                                          const std::uint64_t* exponent, const FoldTarget& target,
+                                                          std::size_t low_digits, std::size_t digits, std::int64_t bottom,
+                                                          std::int64_t top) {
+  fold_body<kAdd, true>(low, q, bits, exponent, target, low_digits, digits, bottom, top);
+}
+__attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void fold_avx512(TK_FOLD_ARGS) {
+  TK_FOLD_CALL(fold_gathering);
+}
 __attribute__((target("avx2,bmi,bmi2"))) void fold_fast(TK_FOLD_ARGS) { TK_FOLD_CALL(fold_body); }
 void fold_portable(TK_FOLD_ARGS) { TK_FOLD_CALL(fold_body); }
 
 #undef TK_FOLD_ARGS
-#undef TK_FOLD_ONE
 #undef TK_FOLD_CALL
 
 bool cpu_is_fast() {
@@ -112,12 +206,16 @@ HighCarry carry_into_limbs(const std::int64_t* z, const std::uint8_t* bits, std:
                        : carry_portable(z, bits, low_digits, coefficients, high);
 }
 
-void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const FoldTarget& target,
-                 std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, bool add_quotient) {
-  if (cpu_is_fast())
-    fold_fast(low, q, bits, target, low_digits, digits, bottom, top, add_quotient);
+void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const std::uint64_t* exponent,
+                 const FoldTarget& target, std::size_t low_digits, std::size_t digits, std::int64_t bottom,
+                 std::int64_t top, bool add_quotient) {
+  static const bool avx512 = __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") && cpu_is_fast();
+  if (avx512)
+    fold_avx512(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
+  else if (cpu_is_fast())
+    fold_fast(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
   else
-    fold_portable(low, q, bits, target, low_digits, digits, bottom, top, add_quotient);
+    fold_portable(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
 }
 
 }  // namespace tk::primes

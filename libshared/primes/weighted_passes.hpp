@@ -36,7 +36,9 @@ struct FoldTarget {
 /// Digit j = the balanced digits of low[j] + sign * (bits e_j.. of q) for
 /// j < low_digits, plus `bottom` at digit 0 and `top` at digit low_digits;
 /// the last of the `digits` takes what is left.
-void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const FoldTarget& target,
-                 std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, bool add_quotient);
+/// exponent[j] = e_j, the bit where digit j starts.
+void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const std::uint64_t* exponent,
+                 const FoldTarget& target, std::size_t low_digits, std::size_t digits, std::int64_t bottom,
+                 std::int64_t top, bool add_quotient);
 
 }  // namespace tk::primes

@@ -116,8 +116,8 @@ void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
     std::fill(target.im + digits_, target.im + length_ / 2, 0.0);
   }
   // c = -1 adds the quotient, c = +1 subtracts it.
-  fold_digits(coefficient_.data(), quotient_.data(), bits_.data(), target, low_digits_, digits_, bottom, top,
-              form_.c < 0);
+  fold_digits(coefficient_.data(), quotient_.data(), bits_.data(), exponent_.data(), target, low_digits_, digits_,
+              bottom, top, form_.c < 0);
 }
 
 }  // namespace tk::primes
