@@ -60,8 +60,8 @@ void compare_squarers(std::uint64_t k, std::uint64_t n, int rounds, int repeats)
 // Microseconds per acyclic square of `length` real points (half of them
 // zero), our right-angle transform against FFTW's real transforms, turns
 // interleaved; medians.
-void compare_transforms(std::size_t length, int rounds, int repeats) {
-  auto ours = RightAngleSquarer::create(length);
+void compare_transforms(std::size_t length, int rounds, int repeats, RightAngleSquarer::Simd simd) {
+  auto ours = RightAngleSquarer::create(length, simd);
   if (!ours) return;
   const RealFftPlans* plans = real_fft_plans(length);
   double* input = fftw_alloc_real(length);
@@ -85,8 +85,9 @@ void compare_transforms(std::size_t length, int rounds, int repeats) {
 
 int main() {
   const int repeats = bench::repeats({"BENCH_RIESEL_REPEATS", "BENCH_REPEATS"}, 3);
-  if (std::getenv("BENCH_RIESEL_TRANSFORMS")) {
-    for (std::size_t length : {4096, 6144, 9216, 16384, 18432, 36864}) compare_transforms(length, 20000000 / length, 5);
+  if (const char* widths = std::getenv("BENCH_RIESEL_TRANSFORMS")) {  // "avx2", else the widest
+    const auto simd = std::string(widths) == "avx2" ? RightAngleSquarer::Simd::avx2 : RightAngleSquarer::Simd::best;
+    for (std::size_t length : {4096, 6144, 9216, 16384, 18432, 36864}) compare_transforms(length, 20000000 / length, 5, simd);
     return 0;
   }
   const std::uint64_t k = 778965587811, n = 36627;

@@ -67,6 +67,8 @@ bool plannable(std::size_t length, int lanes) {
 
 }  // namespace
 
+int RightAngleSquarer::widest_lanes() { return cpu_has(Simd::best) ? lanes_of(Simd::best) : 0; }
+
 bool RightAngleSquarer::supports(std::size_t length) {
   return cpu_has(Simd::best) && plannable(length, lanes_of(Simd::best));
 }

@@ -33,6 +33,8 @@ class RightAngleSquarer {
   static std::unique_ptr<RightAngleSquarer> create(std::size_t length, Simd simd = Simd::best);
   /// Whether `length` (L) has a transform on this CPU.
   static bool supports(std::size_t length);
+  /// The widest SIMD this CPU gives it: 8 (AVX-512), 4 (AVX2) or 0.
+  static int widest_lanes();
 
   RightAngleSquarer(const RightAngleSquarer&) = delete;
   RightAngleSquarer& operator=(const RightAngleSquarer&) = delete;

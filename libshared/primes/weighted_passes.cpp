@@ -210,7 +210,7 @@ void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t
                  const FoldTarget& target, std::size_t low_digits, std::size_t digits, std::int64_t bottom,
                  std::int64_t top, bool add_quotient) {
   static const bool avx512 = __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") && cpu_is_fast();
-  if (avx512)
+  if (avx512 && target.wide)
     fold_avx512(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
   else if (cpu_is_fast())
     fold_fast(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);

@@ -31,6 +31,7 @@ struct FoldTarget {
   const double* re_weight;
   double* im = nullptr;
   const double* im_weight = nullptr;
+  bool wide = true;  ///< AVX-512 where the CPU has it
 };
 
 /// Digit j = the balanced digits of low[j] + sign * (bits e_j.. of q) for

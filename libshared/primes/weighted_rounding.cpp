@@ -181,8 +181,8 @@ RoundedCoefficients round_coefficients(const double* output, const double* weigh
 
 // Only the right-angle transform's callers come here, and it needs AVX2.
 RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
-                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half) {
-  return has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half)
+                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half, bool wide) {
+  return wide && has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half)
                       : right_angle_avx2(re, im, weights, rotation, z, half);
 }
 

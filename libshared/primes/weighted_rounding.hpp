@@ -33,7 +33,8 @@ struct RightAngleWeights {
   const double* c;
   const double* d;
 };
+/// `wide`: AVX-512 where the CPU has it, else AVX2.
 RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
-                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half);
+                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half, bool wide);
 
 }  // namespace tk::primes

@@ -38,7 +38,7 @@ bool WeightedSquaring::square_and_carry() {
     right_angle_->square_in_place();
     const RightAngleWeights weights{round_a_.data(), round_b_.data(), round_c_.data(), round_d_.data()};
     rounded = round_right_angle(right_angle_->real(), right_angle_->imaginary(), weights, rotation_.data(),
-                                coefficient_.data(), length_ / 2);
+                                coefficient_.data(), length_ / 2, wide_);
   } else {
     square_by_real_fft(*plans_, input_, static_cast<fftw_complex*>(spectrum_), output_, length_);
     rounded = round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);
@@ -108,9 +108,9 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
 }
 
 void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
-  FoldTarget target{digit_.data(), input_, input_weight_.data()};
+  FoldTarget target{digit_.data(), input_, input_weight_.data(), nullptr, nullptr, wide_};
   if (right_angle_) {
-    target = {digit_.data(), right_angle_->real(), re_weight_.data(), right_angle_->imaginary(), im_weight_.data()};
+    target = {digit_.data(), right_angle_->real(), re_weight_.data(), right_angle_->imaginary(), im_weight_.data(), wide_};
     // The transform works in place: the square's values past the digits go.
     std::fill(target.re + digits_, target.re + length_ / 2, 0.0);
     std::fill(target.im + digits_, target.im + length_ / 2, 0.0);

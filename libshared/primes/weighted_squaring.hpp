@@ -43,15 +43,16 @@ class WeightedSquaring {
   /// or N is too large for double precision at every length.
   static std::unique_ptr<WeightedSquaring> create(const SpecialForm& form);
   /// Which transform squares: our right-angle transform
-  /// (right_angle_transform.hpp) where it has the length, else FFTW's real
-  /// transforms; or FFTW's always.
-  enum class Transform { own_where_planned, fftw };
+  /// (right_angle_transform.hpp) at the widest SIMD the CPU has, or at AVX2
+  /// width, where it plans the length, else FFTW's real transforms; or
+  /// FFTW's always. TOOLKIT_RIESEL_TRANSFORM=avx2 or fftw sets create()'s.
+  enum class Transform { widest, avx2, fftw };
 
   /// A given transform length and largest digit size, unchecked for
   /// rounding safety (for tests of the checks); nothing when the square
   /// would not fit the length.
   static std::unique_ptr<WeightedSquaring> create_with(const SpecialForm& form, std::size_t length, int digit_bits,
-                                                       Transform transform = Transform::own_where_planned);
+                                                       Transform transform = Transform::widest);
 
   WeightedSquaring(const WeightedSquaring&) = delete;
   WeightedSquaring& operator=(const WeightedSquaring&) = delete;
@@ -103,6 +104,7 @@ class WeightedSquaring {
   void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex
   const RealFftPlans* plans_ = nullptr;                ///< FFTW's, where right_angle_ is not used
   std::unique_ptr<RightAngleSquarer> right_angle_;
+  bool wide_ = true;  ///< the passes may use AVX-512 (where the CPU has it)
   std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded (below 2^n: the fold's input); L places
   std::int64_t low_carry_ = 0;       ///< floor(L / 2^n) of those below 2^n, moved into H
   std::uint64_t value_mod_p_ = 0;    ///< the input's value mod 2^61-1

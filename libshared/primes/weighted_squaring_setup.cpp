@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
+#include <string_view>
 #include <vector>
 
 #include "primes/fft_plans.hpp"
@@ -29,6 +31,15 @@ constexpr unsigned kMaxKBits = 56;
 // sizes (the weights) roughly double it: 0.125 at L = 18432 (n = 171960,
 // 20.3 bits), 0.156 at L = 3584 (n = 36627); 0.4 is what is checked.
 double max_average_bits(std::size_t length) { return 25.0 - 0.31 * std::log2(static_cast<double>(length)); }
+
+// TOOLKIT_RIESEL_TRANSFORM=fftw or avx2 asks for FFTW's transform, or for
+// ours at AVX2 width where the CPU has AVX-512 (tests compare them).
+WeightedSquaring::Transform transform_wanted() {
+  static const char* wanted = std::getenv("TOOLKIT_RIESEL_TRANSFORM");
+  const std::string_view name = wanted ? wanted : "";
+  if (name == "fftw") return WeightedSquaring::Transform::fftw;
+  return name == "avx2" ? WeightedSquaring::Transform::avx2 : WeightedSquaring::Transform::widest;
+}
 
 bool fits_weighted_squaring(const SpecialForm& form) {
   return form.n >= 64 && (form.c == 1 || form.c == -1) && form.k % 2 == 1 && std::bit_width(form.k) <= kMaxKBits;
@@ -116,15 +127,19 @@ std::unique_ptr<WeightedSquaring> fastest(std::vector<std::unique_ptr<WeightedSq
 std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& form) {
   if (!fits_weighted_squaring(form)) return nullptr;
   std::vector<std::unique_ptr<WeightedSquaring>> candidates;
-  const bool own_transform = RightAngleSquarer::supports(4096);  // the CPU has the SIMD it needs
+  const Transform transform = transform_wanted();
+  // Below the timed lengths ours is taken at AVX-512 width only: at AVX2
+  // width it is no faster than FFTW's at 4096 (bench_riesel).
+  const bool own_transform =
+      transform == Transform::avx2 || (transform == Transform::widest && RightAngleSquarer::widest_lanes() == 8);
   for (std::size_t length : candidate_lengths()) {
     const bool short_length = length < kTimeFromLength;
-    // Below the timed lengths: the first our transform plans (from 1.7 to
-    // 2.1 times FFTW's speed at a length, bench_riesel), else FFTW's first.
+    // Below the timed lengths: the first our transform plans (1.45 times
+    // FFTW's speed at 4096 with AVX-512, bench_riesel), else FFTW's first.
     if (short_length && !(own_transform ? RightAngleSquarer::supports(length) : fast_fft_lengths_contain(length))) continue;
     const std::size_t low = low_digits_for(form.n, max_average_bits(length));
     if (2 * (low + top_digits(form, low)) - 1 > length) continue;
-    candidates.emplace_back(new WeightedSquaring(form, length, low, Transform::own_where_planned));
+    candidates.emplace_back(new WeightedSquaring(form, length, low, transform));
     if (short_length || candidates.size() == kTimedCandidates) break;
   }
   if (candidates.empty()) return nullptr;
@@ -176,7 +191,10 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   output_ = fftw_alloc_real(length_);
   spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
   std::fill(input_, input_ + length_, 0.0);
-  if (transform == Transform::own_where_planned) right_angle_ = RightAngleSquarer::create(length_);
+  if (transform != Transform::fftw)
+    right_angle_ = RightAngleSquarer::create(
+        length_, transform == Transform::avx2 ? RightAngleSquarer::Simd::avx2 : RightAngleSquarer::Simd::best);
+  wide_ = right_angle_ ? right_angle_->lanes() == 8 : transform != Transform::avx2;
   if (right_angle_)
     right_angle_weights();
   else

@@ -208,3 +208,31 @@ GP
   run bash -c "printf '5*2^100-1\n51*2^331-1\n3*2^200+1\n' | riesel | json-field res64 | paste -sd' '"
   assert_output "$want"
 }
+
+# The weighted squaring's transforms (libshared/primes/right_angle_transform
+# and FFTW's), each forced with TOOLKIT_RIESEL_TRANSFORM, on composites
+# large enough for several passes: res64 and P/a from PARI's definitions.
+@test "every transform (ours at AVX-512 and AVX2 width, FFTW's) gives PARI's res64 at n = 2500..6000" {
+  oracle_gp > expected.txt <<'GP'
+setrand(2611);
+pick(c) = {
+  my(k, n, N);
+  until(k < 2^n && !ispseudoprime(N) && no_small_factor(N),
+    n = 2500 + random(3501);
+    k = 2*random(2^(random(56))) + 1;
+    N = k*2^n + c);
+  [k, n];
+}
+for(i = 1, 4, [k, n] = pick(-1); P = llr_P(k, n); print(k, "*2^", n, "-1 llr ", P, " ", hex64(llr_residue(k, n, P))));
+for(i = 1, 3, [k, n] = pick(1); a = proth_a(k, n); print(k, "*2^", n, "+1 proth ", a, " ", hex64(proth_residue(k, n, a))));
+GP
+  [ "$(wc -l < expected.txt)" -eq 7 ]
+  shape='import json, sys
+for r in map(json.loads, sys.stdin):
+    print(r["verdict"], r["test"], r.get("P", r.get("a")), r.get("res64"))'
+  for transform in widest avx2 fftw; do
+    cut -d' ' -f1 expected.txt | TOOLKIT_RIESEL_TRANSFORM=$transform riesel -j 2 --arithmetic fft | python3 -c "$shape" > got.txt
+    run diff <(cut -d' ' -f2- expected.txt | sed 's/^/composite /') got.txt
+    assert_success
+  done
+}

@@ -75,6 +75,39 @@ TEST(WeightedSquaring, LargeTwinNumberRoundsSafely) {
   EXPECT_LT(squarer->worst_roundoff(), 0.25);
 }
 
+// Each transform (ours at AVX-512 and AVX2 width, FFTW's) at lengths ours
+// plans with radix-3, radix-2 and radix-4 passes, with the digits create()
+// would choose there: chains against GMP, no square redone.
+TEST(WeightedSquaring, EveryTransformMatchesGmp) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(20261126);
+  struct Case {
+    SpecialForm form;
+    std::size_t length;
+    int digit_bits;
+  };
+  const Case cases[] = {{{778965587811ull, 36627, -1}, 4096, 21},  {{3, 36627, 1}, 6144, 14},
+                        {{16869987339975ull, 60000, -1}, 6144, 21}, {{(1ull << 56) - 5, 90001, 1}, 9216, 21},
+                        {{1, 20000, -1}, 2304, 19},                 {{65537, 4503, 1}, 576, 19}};
+  using Transform = WeightedSquaring::Transform;
+  int own = 0;
+  for (Transform transform : {Transform::widest, Transform::avx2, Transform::fftw})
+    for (const Case& c : cases) {
+      auto squarer = WeightedSquaring::create_with(c.form, c.length, c.digit_bits, transform);
+      ASSERT_NE(squarer, nullptr) << name_of(c.form) << " at " << c.length;
+      if (transform == Transform::fftw) {
+        EXPECT_EQ(squarer->transform_name(), "FFTW");
+      }
+      own += squarer->transform_name() != "FFTW";
+      const mpz_class N = value_of(c.form);
+      expect_chain_matches(*squarer, c.form, random.get_z_range(N), c.form.c < 0 ? 2 : 0, 6);
+      EXPECT_EQ(squarer->fallbacks(), 0u) << name_of(c.form) << " by " << squarer->transform_name();
+      EXPECT_LT(squarer->worst_roundoff(), 0.3) << name_of(c.form) << " by " << squarer->transform_name();
+    }
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "no AVX2: only FFTW's transform ran";
+  EXPECT_EQ(own, 12);  // both of ours, on every case
+}
+
 TEST(WeightedSquaring, RefusesKPast56Bits) {
   EXPECT_EQ(WeightedSquaring::create(SpecialForm{1ull << 57 | 1, 1000, -1}), nullptr);  // the padded FFT's case
 }
