@@ -855,10 +855,10 @@ sys.stdout.buffer.write(bytes(random.randrange(256) for _ in range(4096)))" > ra
   assert_success
 }
 
-@test "bad --shard values are errors with exit 1" {
+@test "bad --shard values are usage errors (exit 2)" {
   for shard in 0/2 3/2 1/0 x 2/x; do
     run riesel --shard "$shard" <<< "97"
-    assert_failure 1
+    assert_failure 2
     assert_output --partial -- "--shard"
   done
 }

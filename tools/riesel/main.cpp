@@ -91,7 +91,9 @@ int main(int argc, char** argv) {
   app.add_flag("--require-proof", require_proof,
                "a number with no LLR or Proth proof (k >= 2^n, n too small, another shape) is an error, not BPSW");
   app.add_flag("--skip-bad", skip_bad, "report malformed records on stderr and go on");
-  app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits")->type_name("BITS");
+  app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits")
+      ->check(CLI::Range(std::size_t{2}, std::size_t{1} << 32))
+      ->type_name("BITS");
   tool.add_threads_option();
   tool.add_input_files();
 

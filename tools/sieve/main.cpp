@@ -55,8 +55,8 @@ tk::primes::SieveSpec spec_from(tk::primes::SieveForm form, const FormOptions& o
 
 void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOptions& o) {
   const tk::primes::SieveSpec spec = spec_from(form, o);
-  if (o.min_rate < 0 || !(o.min_rate == o.min_rate)) throw tk::Error("--min-rate must be a non-negative number");
-  if (!(o.checkpoint_seconds > 0)) throw tk::Error("--checkpoint-every must be a positive number of seconds");
+  if (o.min_rate < 0 || !(o.min_rate == o.min_rate)) throw tk::UsageError("--min-rate must be a non-negative number");
+  if (!(o.checkpoint_seconds > 0)) throw tk::UsageError("--checkpoint-every must be a positive number of seconds");
   tk::primes::SieveRunOptions run;
   run.threads = tool.common().threads;
   std::tie(run.shard_index, run.shard_count) = tk::cli::parse_shard(o.shard, "--shard");
@@ -101,9 +101,9 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
 void run_primes(tk::cli::ToolApp& tool, const std::string& from_text, const std::string& to_text, bool count, bool json) {
   const std::uint64_t from = tk::cli::parse_count(from_text, "A");
   const std::uint64_t to = tk::cli::parse_count(to_text, "B");
-  if (to < from) throw tk::Error(fmt::format("the interval {}..{} is empty: B is below A", from, to));
+  if (to < from) throw tk::UsageError(fmt::format("the interval {}..{} is empty: B is below A", from, to));
   if (to > tk::primes::max_prime_bound())
-    throw tk::Error(fmt::format("B must be at most {}", tk::primes::max_prime_bound()));
+    throw tk::UsageError(fmt::format("B must be at most {}", tk::primes::max_prime_bound()));
   const unsigned threads = tool.common().threads;
   const bool records = json || tool.output_format() == tk::io::OutputFormat::csv;
   if (count) {
