@@ -890,6 +890,24 @@ sys.stdout.buffer.write(bytes(random.randrange(256) for _ in range(4096)))" > ra
   [ "${#lines[@]}" -eq 3 ]
 }
 
+@test "--skip-bad: riesel and mrtest warn alike, in input order, and end with the same summary" {
+  printf '7*2^4-1\n12+\n3*2^11-1\n{"number": NaN}\n3*2^2+1\n' > bad.txt
+  for tool in riesel mrtest; do
+    run --separate-stderr "$tool" -j 2 --skip-bad bad.txt missing.txt
+    assert_failure 1
+    [ "${#lines[@]}" -eq 3 ]
+    printf '%s\n' "$stderr" | sed "s/^$tool: //" > "$tool.err"
+  done
+  diff riesel.err mrtest.err
+  run cat riesel.err
+  assert_line --index 0 --regexp '^bad.txt:2: '
+  assert_line --index 1 --regexp '^bad.txt:4: '
+  assert_line --index 2 --regexp '^missing.txt: cannot open'
+  assert_line --index 3 "skipped 2 bad records"
+  assert_line --index 4 "1 input file was not read"
+  [ "${#lines[@]}" -eq 5 ]
+}
+
 @test "a missing file, a write error and a --state that is a file are reported" {
   run riesel no-such-file.txt
   assert_failure 1
