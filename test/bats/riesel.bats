@@ -357,7 +357,8 @@ for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"], \"a\" in
   assert_success
   [ -z "$output" ]
   assert_equal "$stderr" "riesel: <stdin>:1: 3*2^1-1 cannot be proved: LLR needs n >= 2
-riesel: <stdin>:2: 100003 cannot be proved: it is not k*2^n-1 or k*2^n+1 with k below 2^n"
+riesel: <stdin>:2: 100003 cannot be proved: it is not k*2^n-1 or k*2^n+1 with k below 2^n
+riesel: skipped 2 bad records"
 }
 
 @test "other bases and other c get BPSW and at best probable-prime, unless the value is k*2^n+-1" {
