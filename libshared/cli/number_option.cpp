@@ -22,7 +22,7 @@ bool digits(std::string_view text, std::uint64_t& value) {
 
 std::uint64_t parse_count(std::string_view text, std::string_view option) {
   auto bad = [&](const std::string& why) {
-    return Error(std::string(option) + " '" + std::string(text.substr(0, 40)) + "' " + why);
+    return UsageError(std::string(option) + " '" + std::string(text.substr(0, 40)) + "' " + why);
   };
   const auto not_integer = [&] { return bad("is not a non-negative integer (digits, 1e9, 1.1e9 or 2^40)"); };
   const auto overflow = [&] { return bad("does not fit in 64 bits"); };
@@ -61,20 +61,20 @@ std::uint64_t parse_count(std::string_view text, std::string_view option) {
 
 std::pair<std::uint64_t, std::uint64_t> parse_range(std::string_view text, std::string_view option) {
   const std::size_t colon = text.find(':');
-  if (colon == std::string_view::npos) throw Error(std::string(option) + " '" + std::string(text.substr(0, 40)) + "' is not a range A:B");
+  if (colon == std::string_view::npos) throw UsageError(std::string(option) + " '" + std::string(text.substr(0, 40)) + "' is not a range A:B");
   const std::uint64_t low = parse_count(text.substr(0, colon), option);
   const std::uint64_t high = parse_count(text.substr(colon + 1), option);
-  if (high < low) throw Error(std::string(option) + " range " + std::string(text.substr(0, 80)) + " is empty: its end is below its start");
+  if (high < low) throw UsageError(std::string(option) + " range " + std::string(text.substr(0, 80)) + " is empty: its end is below its start");
   return {low, high};
 }
 
 std::pair<unsigned, unsigned> parse_shard(std::string_view text, std::string_view option) {
   const std::size_t slash = text.find('/');
   const std::string quoted = std::string(option) + " '" + std::string(text.substr(0, 40)) + "'";
-  if (slash == std::string_view::npos) throw Error(quoted + " is not K/N");
+  if (slash == std::string_view::npos) throw UsageError(quoted + " is not K/N");
   const std::uint64_t index = parse_count(text.substr(0, slash), option);
   const std::uint64_t count = parse_count(text.substr(slash + 1), option);
-  if (count == 0 || count > 1000000 || index == 0 || index > count) throw Error(quoted + " needs 1 <= K <= N <= 1000000");
+  if (count == 0 || count > 1000000 || index == 0 || index > count) throw UsageError(quoted + " needs 1 <= K <= N <= 1000000");
   return {static_cast<unsigned>(index - 1), static_cast<unsigned>(count)};
 }
 
@@ -91,7 +91,7 @@ std::optional<double> finite_number(std::string_view part) {
 
 std::vector<double> parse_numbers(std::string_view text, std::string_view option, std::size_t count) {
   const auto bad = [&] {
-    return Error(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' is not " + std::to_string(count) +
+    return UsageError(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' is not " + std::to_string(count) +
                  " finite numbers separated by commas");
   };
   std::vector<double> values;
@@ -108,7 +108,7 @@ std::vector<double> parse_numbers(std::string_view text, std::string_view option
 
 std::vector<double> parse_grid(std::string_view text, std::string_view option, std::size_t max_values) {
   const auto bad = [&](const std::string& why) {
-    return Error(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' " + why);
+    return UsageError(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' " + why);
   };
   std::vector<std::optional<double>> parts;
   for (std::size_t at = 0; at <= text.size();) {

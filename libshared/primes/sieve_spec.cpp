@@ -66,25 +66,29 @@ std::string SieveSpec::candidates_identity() const {
 std::string SieveSpec::identity() const { return candidates_identity() + fmt::format(" pmax={}", p_max); }
 
 void SieveSpec::validate() const {
-  if (n == 0) throw Error("the exponent n must be at least 1");
-  if (n > 0xFFFFFFFFu - kMaxChain) throw Error(fmt::format("the exponent n = {} is above 2^32 - 65", n));
+  // Every parameter is one of sieve's options: a bad one is a usage error naming it.
+  const std::string range_option = parametrised ? "--x" : "--k";
+  if (n == 0) throw UsageError("--n: the exponent n must be at least 1");
+  if (n > 0xFFFFFFFFu - kMaxChain) throw UsageError(fmt::format("--n: the exponent n = {} is above 2^32 - 65", n));
   if ((form == SieveForm::cc1 || form == SieveForm::cc2) && (length < 2 || length > kMaxChain))
-    throw Error(fmt::format("a chain length must be 2 to {}, not {}", kMaxChain, length));
+    throw UsageError(fmt::format("--length: a chain length must be 2 to {}, not {}", kMaxChain, length));
   if (x_max < x_min)
-    throw Error(fmt::format("the {} range {}:{} is empty (its end is below its start)", parametrised ? "x" : "k", x_min, x_max));
-  if (!parametrised && x_min == 0) throw Error("k must start at 1 or more");
-  if (parametrised && c == 0) throw Error("c = 0 makes every k equal to h0");
-  if (static_cast<u128>(c) * x_max + h0 > UINT64_MAX) throw Error("the largest k, h0 + c*x, does not fit in 64 bits");
+    throw UsageError(fmt::format("{}: the range {}:{} is empty (its end is below its start)", range_option, x_min, x_max));
+  if (!parametrised && x_min == 0) throw UsageError("--k: k must start at 1 or more");
+  if (parametrised && c == 0) throw UsageError("--c: c = 0 makes every k equal to h0");
+  if (static_cast<u128>(c) * x_max + h0 > UINT64_MAX)
+    throw UsageError("--h0, --c and --x: the largest k, h0 + c*x, does not fit in 64 bits");
   if (x_max - x_min >= kMaxCandidates)
-    throw Error(fmt::format("{} candidates are more than one run sieves (at most 2^36): split the range", x_max - x_min + 1));
-  if (p_max < 3) throw Error("the sieve bound must be at least 3");
-  if (p_max > kMaxPrime) throw Error("the sieve bound must be below 2^62");
+    throw UsageError(fmt::format("{}: {} candidates are more than one run sieves (at most 2^36): split the range", range_option,
+                                 x_max - x_min + 1));
+  if (p_max < 3) throw UsageError("--pmax: the sieve bound must be at least 3");
+  if (p_max > kMaxPrime) throw UsageError("--pmax: the sieve bound must be below 2^62");
 }
 
 void SieveSpec::check_riesel_condition() const {
   const auto all = members();
   if (std::none_of(all.begin(), all.end(), [](const SieveMember& m) { return m.c == -1; }))
-    throw Error("--riesel-condition is about k*2^e-1 members, and " + form_name() + " has none");
+    throw UsageError("--riesel-condition is about k*2^e-1 members, and " + form_name() + " has none");
   const bool single = x_min == x_max;
   const std::uint64_t k_first = k_at(x_min), k_last = k_at(x_max);
   for (const SieveMember& member : members()) {
@@ -96,16 +100,16 @@ void SieveSpec::check_riesel_condition() const {
     KbncForm odd{k_last, 2, e, -1};
     if (single) make_k_odd(odd);
     if (odd.n < 64 && odd.k >= (std::uint64_t(1) << odd.n))
-      throw Error(fmt::format("riesel condition: k = {} is not below 2^{}", odd.k.get_str(), odd.n));
+      throw UsageError(fmt::format("--riesel-condition: k = {} is not below 2^{}", odd.k.get_str(), odd.n));
     if (!single && !(parametrised && c % 13 == 0))
-      throw Error("riesel condition: (13/N) = -1 for every x needs 13 to divide c");
+      throw UsageError("--riesel-condition: (13/N) = -1 for every x needs 13 to divide c");
     // N mod 13 is the same for every x; (13/N) = (N/13) since 13 = 1 mod 4.
     std::uint64_t power = 1;
     for (std::uint64_t i = 0; i < e % 12; ++i) power = power * 2 % 13;  // 2 has order 12 mod 13
     const std::uint64_t residue = (k_first % 13 * power + 12) % 13;
     const bool non_residue = residue == 2 || residue == 5 || residue == 6 || residue == 7 || residue == 8 || residue == 11;
     if (!non_residue)
-      throw Error(fmt::format("riesel condition: N = k*2^{}-1 is {} mod 13, so (13/N) is not -1: choose another h0", e, residue));
+      throw UsageError(fmt::format("--riesel-condition: N = k*2^{}-1 is {} mod 13, so (13/N) is not -1: choose another h0", e, residue));
   }
 }
 

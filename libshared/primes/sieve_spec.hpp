@@ -41,12 +41,13 @@ struct SieveSpec {
   /// different depths still share.
   std::string candidates_identity() const;
 
-  /// Throws UsageError for impossible parameters and Error for values that
-  /// make every candidate composite (so the run would be pointless).
+  /// Throws UsageError naming the option for an impossible or pointless
+  /// parameter (one that makes every candidate composite, say).
   void validate() const;
   /// The seed's conditions for a Riesel (LLR) proof with D = 13 on every
   /// k*2^e-1 member: k odd, k < 2^e and (13/N) = -1 for every x; the last
-  /// needs 13 | c so that N mod 13 does not depend on x. Throws Error.
+  /// needs 13 | c so that N mod 13 does not depend on x. Throws UsageError
+  /// naming --riesel-condition.
   void check_riesel_condition() const;
 };
 

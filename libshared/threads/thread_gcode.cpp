@@ -91,16 +91,20 @@ double synchronisation_distance(const ProgramSettings& s) {
 }
 
 void validate(const ProgramSettings& s) {
-  require(std::isfinite(s.pitch_mm) && s.pitch_mm > 0, "the program needs a positive pitch");
-  require(std::isfinite(s.length_mm) && s.length_mm > 0 && s.length_mm <= 10000,
-          fmt::format("thread length {} mm is outside (0, 10000]", s.length_mm));
-  require(std::isfinite(s.rpm) && s.rpm >= 1 && s.rpm <= 100000, fmt::format("spindle speed {} rpm is outside 1-100000", s.rpm));
-  require(std::isfinite(s.clearance_mm) && s.clearance_mm > 0 && s.clearance_mm <= 100,
-          fmt::format("clearance {} mm is outside (0, 100]", s.clearance_mm));
-  require(std::isfinite(s.run_in_mm) && s.run_in_mm >= 0 && s.run_in_mm <= 1000,
-          fmt::format("run-in {} mm is outside [0, 1000]", s.run_in_mm));
-  require(std::isfinite(s.acceleration_mm_s2) && s.acceleration_mm_s2 > 0 && s.acceleration_mm_s2 <= 1e6,
-          fmt::format("acceleration {} mm/s^2 is outside (0, 1e6]", s.acceleration_mm_s2));
+  // The settings are threadcalc's options: a bad one is a usage error.
+  const auto check = [](bool ok, const std::string& message) {
+    if (!ok) throw UsageError(message);
+  };
+  check(std::isfinite(s.pitch_mm) && s.pitch_mm > 0, "the program needs a positive pitch");
+  check(std::isfinite(s.length_mm) && s.length_mm > 0 && s.length_mm <= 10000,
+        fmt::format("--length: thread length {} mm is outside (0, 10000]", s.length_mm));
+  check(std::isfinite(s.rpm) && s.rpm >= 1 && s.rpm <= 100000, fmt::format("--rpm: spindle speed {} rpm is outside 1-100000", s.rpm));
+  check(std::isfinite(s.clearance_mm) && s.clearance_mm > 0 && s.clearance_mm <= 100,
+        fmt::format("--clearance: clearance {} mm is outside (0, 100]", s.clearance_mm));
+  check(std::isfinite(s.run_in_mm) && s.run_in_mm >= 0 && s.run_in_mm <= 1000,
+        fmt::format("--run-in: run-in {} mm is outside [0, 1000]", s.run_in_mm));
+  check(std::isfinite(s.acceleration_mm_s2) && s.acceleration_mm_s2 > 0 && s.acceleration_mm_s2 <= 1e6,
+        fmt::format("--accel: acceleration {} mm/s^2 is outside (0, 1e6]", s.acceleration_mm_s2));
 }
 
 std::string thread_program(ProgramStyle style, const TurningPlan& plan, const ProgramSettings& s) {

@@ -32,7 +32,7 @@ double spindle_speed(double cutting_speed_m_min, double diameter_mm, double max_
 /// P·S from rest at the settings' acceleration: v²/2a.
 double synchronisation_distance(const ProgramSettings& settings);
 
-/// Throws tk::Error for a non-positive length or speed, a clearance outside
+/// Throws tk::UsageError naming the option (threadcalc's) for a non-positive length or speed, a clearance outside
 /// (0, 100] mm, and so on. An internal drive line keeps at most a tenth of
 /// the bore's diameter from it on each side, whatever the clearance.
 void validate(const ProgramSettings& settings);

@@ -37,7 +37,7 @@ field() {
 --axis-max-feed 0.001,1,1|--axis-max-feed: must be a number from 0.01 to 1e+12, not 0.001
 --junction-deviation 1e7|--junction-deviation: must be a number from 0 to 1e+06, not 1e7
 --lookahead 100001|--lookahead: must be a whole number from 1 to 100000, not 100001
---start 0,2e6,0|--start: must be three numbers from -1e+06 to 1e+06
+--start 0,2e6,0|--start: must be a number from -1e+06 to 1e+06, not 2e+06
 --max-pulses 0|--max-pulses: must be a whole number from 1 to 1000000000000, not 0
 --max-pulses 1000000000001|--max-pulses: must be a whole number from 1 to 1000000000000
 --svg w.svg --window 0,0,2e6,1|--window needs X0,Y0,X1,Y1 in mm from -1e+06 to 1e+06

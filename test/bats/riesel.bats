@@ -357,7 +357,8 @@ for r in map(json.loads, sys.stdin): print(r[\"verdict\"], r[\"test\"], \"a\" in
   assert_success
   [ -z "$output" ]
   assert_equal "$stderr" "riesel: <stdin>:1: 3*2^1-1 cannot be proved: LLR needs n >= 2
-riesel: <stdin>:2: 100003 cannot be proved: it is not k*2^n-1 or k*2^n+1 with k below 2^n"
+riesel: <stdin>:2: 100003 cannot be proved: it is not k*2^n-1 or k*2^n+1 with k below 2^n
+riesel: skipped 2 bad records"
 }
 
 @test "other bases and other c get BPSW and at best probable-prime, unless the value is k*2^n+-1" {
@@ -855,10 +856,10 @@ sys.stdout.buffer.write(bytes(random.randrange(256) for _ in range(4096)))" > ra
   assert_success
 }
 
-@test "bad --shard values are errors with exit 1" {
+@test "bad --shard values are usage errors (exit 2)" {
   for shard in 0/2 3/2 1/0 x 2/x; do
     run riesel --shard "$shard" <<< "97"
-    assert_failure 1
+    assert_failure 2
     assert_output --partial -- "--shard"
   done
 }
@@ -888,6 +889,24 @@ sys.stdout.buffer.write(bytes(random.randrange(256) for _ in range(4096)))" > ra
   assert_success
   [[ "$stderr" == *"bad.txt:3:"* ]]
   [ "${#lines[@]}" -eq 3 ]
+}
+
+@test "--skip-bad: riesel and mrtest warn alike, in input order, and end with the same summary" {
+  printf '7*2^4-1\n12+\n3*2^11-1\n{"number": NaN}\n3*2^2+1\n' > bad.txt
+  for tool in riesel mrtest; do
+    run --separate-stderr "$tool" -j 2 --skip-bad bad.txt missing.txt
+    assert_failure 1
+    [ "${#lines[@]}" -eq 3 ]
+    printf '%s\n' "$stderr" | sed "s/^$tool: //" > "$tool.err"
+  done
+  diff riesel.err mrtest.err
+  run cat riesel.err
+  assert_line --index 0 --regexp '^bad.txt:2: '
+  assert_line --index 1 --regexp '^bad.txt:4: '
+  assert_line --index 2 --regexp '^missing.txt: cannot open'
+  assert_line --index 3 "skipped 2 bad records"
+  assert_line --index 4 "1 input file was not read"
+  [ "${#lines[@]}" -eq 5 ]
 }
 
 @test "a missing file, a write error and a --state that is a file are reported" {

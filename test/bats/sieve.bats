@@ -709,45 +709,47 @@ expect_error() {
   fi
 }
 
-@test "bad values are errors with exit 1 and one message line" {
-  expect_error 1 "empty" primes 10 5
-  expect_error 1 "empty" twin --n 5 --k 10:1 --pmax 100
-  expect_error 1 "empty" twin --n 5 --h0 15 --c 30 --x 10:1 --pmax 100
-  expect_error 1 "exponent n" twin --n 0 --k 1:10 --pmax 100
-  expect_error 1 "negative" twin --n -1 --k 1:10 --pmax 100
-  expect_error 1 "negative" twin --n 5 --k -1:10 --pmax 100
-  expect_error 1 "negative" twin --n 5 --h0 -15 --c 30 --x 1:10 --pmax 100
-  expect_error 1 "negative" twin --n 5 --h0 15 --c -30 --x 1:10 --pmax 100
-  expect_error 1 "negative" twin --n 5 --k 1:10 --pmax -7
-  expect_error 1 "negative" primes -1 10
-  expect_error 1 "c = 0" twin --n 5 --h0 15 --c 0 --x 1:10 --pmax 100
-  expect_error 1 "chain length" cc1 --length 1 --n 5 --k 1:10 --pmax 100
-  expect_error 1 "chain length" cc2 --length 65 --n 5 --k 1:10 --pmax 100
-  expect_error 1 "at least 3" twin --n 5 --k 1:10 --pmax 2
-  expect_error 1 "k must start at 1" twin --n 5 --k 0:10 --pmax 100
-  expect_error 1 "18446744073709551616" twin --n 5 --k 1:18446744073709551616 --pmax 100
-  expect_error 1 "18446744073709551616" twin --n 5 --k 1:10 --pmax 18446744073709551616
-  expect_error 1 "64 bits" twin --n 1e20 --k 1:10 --pmax 100
-  expect_error 1 "64 bits" twin --n 5 --h0 1 --c 2^40 --x 0:2^30 --pmax 100
-  expect_error 1 "64 bits" primes 1 2^64
-  expect_error 1 "2^32" twin --n 2^40 --k 1:10 --pmax 100
-  expect_error 1 "2^36" twin --n 5 --k 1:2^37 --pmax 100
-  expect_error 1 "not a non-negative integer" twin --n 5 --k 1:10 --pmax abc
-  expect_error 1 "whole number" twin --n 5 --k 1:1.05e1 --pmax 100
-  expect_error 1 "2^40+100" primes 1 2^40+100
-  expect_error 1 "--k" twin --n 5 --k 1-10 --pmax 100
-  expect_error 1 "--shard" twin --n 5 --k 1:10 --pmax 100 --shard 4/3
-  expect_error 1 "--shard" twin --n 5 --k 1:10 --pmax 100 --shard 0/3
-  expect_error 1 "--shard" twin --n 5 --k 1:10 --pmax 100 --shard three
-  expect_error 1 "--checkpoint-every" twin --n 5 --k 1:10 --pmax 100 --checkpoint-every 0
-  expect_error 1 "--min-rate" twin --n 5 --k 1:10 --pmax 100 --min-rate -1
+@test "bad option values are usage errors (exit 2) naming the option; an unwritable file is exit 1" {
+  expect_error 2 "empty" primes 10 5
+  expect_error 2 "empty" twin --n 5 --k 10:1 --pmax 100
+  expect_error 2 "empty" twin --n 5 --h0 15 --c 30 --x 10:1 --pmax 100
+  expect_error 2 "exponent n" twin --n 0 --k 1:10 --pmax 100
+  expect_error 2 "negative" twin --n -1 --k 1:10 --pmax 100
+  expect_error 2 "negative" twin --n 5 --k -1:10 --pmax 100
+  expect_error 2 "negative" twin --n 5 --h0 -15 --c 30 --x 1:10 --pmax 100
+  expect_error 2 "negative" twin --n 5 --h0 15 --c -30 --x 1:10 --pmax 100
+  expect_error 2 "negative" twin --n 5 --k 1:10 --pmax -7
+  expect_error 2 "negative" primes -1 10
+  expect_error 2 "c = 0" twin --n 5 --h0 15 --c 0 --x 1:10 --pmax 100
+  expect_error 2 "chain length" cc1 --length 1 --n 5 --k 1:10 --pmax 100
+  expect_error 2 "chain length" cc2 --length 65 --n 5 --k 1:10 --pmax 100
+  expect_error 2 "at least 3" twin --n 5 --k 1:10 --pmax 2
+  expect_error 2 "k must start at 1" twin --n 5 --k 0:10 --pmax 100
+  expect_error 2 "18446744073709551616" twin --n 5 --k 1:18446744073709551616 --pmax 100
+  expect_error 2 "18446744073709551616" twin --n 5 --k 1:10 --pmax 18446744073709551616
+  expect_error 2 "64 bits" twin --n 1e20 --k 1:10 --pmax 100
+  expect_error 2 "64 bits" twin --n 5 --h0 1 --c 2^40 --x 0:2^30 --pmax 100
+  expect_error 2 "64 bits" primes 1 2^64
+  expect_error 2 "2^32" twin --n 2^40 --k 1:10 --pmax 100
+  expect_error 2 "2^36" twin --n 5 --k 1:2^37 --pmax 100
+  expect_error 2 "not a non-negative integer" twin --n 5 --k 1:10 --pmax abc
+  expect_error 2 "whole number" twin --n 5 --k 1:1.05e1 --pmax 100
+  expect_error 2 "2^40+100" primes 1 2^40+100
+  expect_error 2 "--k" twin --n 5 --k 1-10 --pmax 100
+  expect_error 2 "--shard" twin --n 5 --k 1:10 --pmax 100 --shard 4/3
+  expect_error 2 "--shard" twin --n 5 --k 1:10 --pmax 100 --shard 0/3
+  expect_error 2 "--shard" twin --n 5 --k 1:10 --pmax 100 --shard three
+  expect_error 2 "--pmax" twin --n 5 --k 1:10 --pmax abc
+  expect_error 2 "--n" twin --n 0 --k 1:10 --pmax 100
+  expect_error 2 "--checkpoint-every" twin --n 5 --k 1:10 --pmax 100 --checkpoint-every 0
+  expect_error 2 "--min-rate" twin --n 5 --k 1:10 --pmax 100 --min-rate -1
   expect_error 1 "no-such-dir/f.txt" twin --n 5 --k 1:10 --pmax 100 --factors no-such-dir/f.txt
 }
 
 @test "a decimal number above 2^64-1 is said not to fit in 64 bits" {
-  expect_error 1 "64 bits" twin --n 5 --k 1:18446744073709551616 --pmax 100
-  expect_error 1 "64 bits" twin --n 5 --k 1:10 --pmax 18446744073709551616
-  expect_error 1 "64 bits" primes 1 18446744073709551616
+  expect_error 2 "64 bits" twin --n 5 --k 1:18446744073709551616 --pmax 100
+  expect_error 2 "64 bits" twin --n 5 --k 1:10 --pmax 18446744073709551616
+  expect_error 2 "64 bits" primes 1 18446744073709551616
 }
 
 @test "the smallest edge values are accepted" {
@@ -810,24 +812,24 @@ expect_error() {
   run sieve sg --n 20 --h0 "$sg_h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
   assert_success
   # Proth and cc2 have no k*2^e-1 member for the condition to be about.
-  expect_error 1 "has none" proth --n 20 --h0 "$h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
-  expect_error 1 "has none" cc2 --n 20 --h0 "$h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
+  expect_error 2 "has none" proth --n 20 --h0 "$h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
+  expect_error 2 "has none" cc2 --n 20 --h0 "$h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
   # A residue: the smallest such h0 that is otherwise valid.
   bad_h0=$(gp_lines 'forstep(h = 1, 999, 2, if(kronecker(h*2^20 - 1, 13) == 1 && gcd(h^2*2^40 - 1, 15015) == 1, print(h); break))')
-  expect_error 1 "13" twin --n 20 --h0 "$bad_h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
+  expect_error 2 "13" twin --n 20 --h0 "$bad_h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
   run sieve twin --n 20 --h0 "$bad_h0" --c 30030 --x 0:30 --pmax 1e5
   assert_success
   # k reaching 2^20.
-  expect_error 1 "2^20" twin --n 20 --h0 "$h0" --c 30030 --x 0:40 --pmax 1e5 --riesel-condition
+  expect_error 2 "2^20" twin --n 20 --h0 "$h0" --c 30030 --x 0:40 --pmax 1e5 --riesel-condition
   # 13 does not divide c = 2310.
-  expect_error 1 "13" twin --n 20 --h0 "$h0" --c 2310 --x 0:30 --pmax 1e5 --riesel-condition
+  expect_error 2 "13" twin --n 20 --h0 "$h0" --c 2310 --x 0:30 --pmax 1e5 --riesel-condition
   # Even k: proved as (k/2^t)*2^(20+t)-1, whose k is odd; N mod 13 is the
   # same for every x when 13 | c, whatever the parity of h0 and c.
   even_h0=$(gp_lines 'forstep(h = 0, 999, 2, if(kronecker(h*2^20 - 1, 13) == -1 && gcd(h^2*2^40 - 1, 15015) == 1, print(h); break))')
   run sieve twin --n 20 --h0 "$even_h0" --c 30030 --x 0:30 --pmax 1e5 --riesel-condition
   assert_success
   # A plain range of several k: (13/N) changes with k.
-  expect_error 1 "13" twin --n 20 --k 1:31 --pmax 1e5 --riesel-condition
+  expect_error 2 "13" twin --n 20 --k 1:31 --pmax 1e5 --riesel-condition
 }
 
 # ------------------------------------------------------------ mrtest pipeline

@@ -39,7 +39,7 @@ void expect_bad(const std::string& text, std::size_t max_values = 1000000) {
   try {
     parse_grid(text, "--Lambda", max_values);
     ADD_FAILURE() << "accepted '" << text << "'";
-  } catch (const tk::Error& e) {
+  } catch (const tk::UsageError& e) {  // a bad option value: exit 2
     EXPECT_NE(std::string(e.what()).find("--Lambda"), std::string::npos) << e.what();
   }
 }

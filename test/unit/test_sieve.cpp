@@ -197,12 +197,14 @@ TEST(SieveSpec, ValidationNamesTheProblem) {
   auto message = [](SieveSpec spec) {
     try {
       spec.validate();
-    } catch (const tk::Error& e) {
+    } catch (const tk::UsageError& e) {  // every parameter is an option: exit 2
       return std::string(e.what());
     }
     return std::string("accepted");
   };
   EXPECT_NE(message(plain(SieveForm::twin, 0, 1, 10, 100)).find("exponent"), std::string::npos);
+  EXPECT_EQ(message(plain(SieveForm::twin, 0, 1, 10, 100)).rfind("--n: ", 0), 0u);
+  EXPECT_EQ(message(plain(SieveForm::twin, 5, 1, 10, 2)).rfind("--pmax: ", 0), 0u);
   EXPECT_NE(message(plain(SieveForm::twin, 5, 10, 1, 100)).find("empty"), std::string::npos);
   EXPECT_NE(message(plain(SieveForm::twin, 5, 0, 1, 100)).find("k must start"), std::string::npos);
   EXPECT_NE(message(plain(SieveForm::twin, 5, 1, 10, 2)).find("at least 3"), std::string::npos);
@@ -279,10 +281,11 @@ TEST(NumberOption, PrimeHuntersNotation) {
   EXPECT_EQ(parse_count("0^0", "x"), 1u);
   EXPECT_EQ(parse_count("1e19", "x"), 10000000000000000000u);
   for (const char* bad : {"", "-1", "1e20", "2^64", "1.25e1", "1.5", "abc", "1e", "^3", "1:2", "0x10", "1e-3", "99999999999999999999"})
-    EXPECT_THROW(parse_count(bad, "x"), tk::Error) << bad;
+    EXPECT_THROW(parse_count(bad, "x"), tk::UsageError) << bad;
   EXPECT_EQ(tk::cli::parse_range("1:1e3", "x"), std::make_pair(std::uint64_t(1), std::uint64_t(1000)));
-  EXPECT_THROW(tk::cli::parse_range("5:4", "x"), tk::Error);
-  EXPECT_THROW(tk::cli::parse_range("5", "x"), tk::Error);
+  EXPECT_THROW(tk::cli::parse_range("5:4", "x"), tk::UsageError);
+  EXPECT_THROW(tk::cli::parse_range("5", "x"), tk::UsageError);
+  EXPECT_THROW(tk::cli::parse_shard("4/3", "x"), tk::UsageError);
 }
 
 TEST(NumberOption, CommaSeparatedNumbers) {
@@ -292,10 +295,11 @@ TEST(NumberOption, CommaSeparatedNumbers) {
   EXPECT_EQ(parse_numbers("7", "x", 1), (std::vector<double>{7}));
   for (const char* bad : {"", "1,2", "1,2,3,4", "1,,3", "1,2,", ",1,2", "a,b,c", "nan,1,1", "inf,1,1", "1e999,1,1",
                           "1 ,2,3", "0x10,1,1", "1,2,3 "})
-    EXPECT_THROW(parse_numbers(bad, "--steps-per-mm", 3), tk::Error) << bad;
+    EXPECT_THROW(parse_numbers(bad, "--steps-per-mm", 3), tk::UsageError) << bad;
   try {
     parse_numbers("1,2", "--window", 4);
-  } catch (const tk::Error& e) {
+    ADD_FAILURE() << "accepted '1,2'";
+  } catch (const tk::UsageError& e) {
     EXPECT_STREQ(e.what(), "--window '1,2' is not 4 finite numbers separated by commas");
   }
 }

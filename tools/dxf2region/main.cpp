@@ -27,11 +27,7 @@ namespace {
 
 /// "1,2,3" as numbers; a usage error naming the option otherwise.
 std::vector<double> number_list(const std::string& text, const char* option) {
-  try {
-    return tk::cli::parse_numbers(text, option, std::count(text.begin(), text.end(), ',') + 1);
-  } catch (const tk::Error& e) {
-    throw tk::UsageError(e.what());
-  }
+  return tk::cli::parse_numbers(text, option, std::count(text.begin(), text.end(), ',') + 1);
 }
 
 

@@ -19,14 +19,11 @@
 
 namespace {
 
-/// "X,Y,Z" as three numbers; a usage error naming the option otherwise.
-std::array<double, 3> parse_axes(const std::string& text, const char* option) {
-  try {
-    const std::vector<double> values = tk::cli::parse_numbers(text, option, 3);
-    return {values[0], values[1], values[2]};
-  } catch (const tk::Error& e) {
-    throw tk::UsageError(e.what());
-  }
+/// "X,Y,Z" as three numbers in `range`; a usage error naming the option otherwise.
+std::array<double, 3> parse_axes(const std::string& text, const char* option, tk::motion::SettingRange range) {
+  const std::vector<double> values = tk::cli::parse_numbers(text, option, 3);
+  for (const double value : values) tk::cli::require_range(value, range.low, range.high, option);
+  return {values[0], values[1], values[2]};
 }
 
 }  // namespace
@@ -108,27 +105,15 @@ int main(int argc, char** argv) {
     if (!machine_file.empty()) settings = tk::motion::read_machine_file(machine_file);
     tk::motion::MachineSettings given;
     auto on_command_line = [&](const char* name) { return app.get_option(name)->count() > 0; };
-    if (on_command_line("--steps-per-mm")) given.steps_per_mm = parse_axes(steps, "--steps-per-mm");
-    if (on_command_line("--axis-max-feed")) given.axis_max_feed = parse_axes(axis_max_feed, "--axis-max-feed");
-    if (on_command_line("--axis-accel")) given.axis_accel = parse_axes(axis_accel, "--axis-accel");
-    if (on_command_line("--start")) given.start = parse_axes(start, "--start");
+    if (on_command_line("--steps-per-mm")) given.steps_per_mm = parse_axes(steps, "--steps-per-mm", tk::motion::kStepsPerMmRange);
+    if (on_command_line("--axis-max-feed")) given.axis_max_feed = parse_axes(axis_max_feed, "--axis-max-feed", tk::motion::kFeedRange);
+    if (on_command_line("--axis-accel")) given.axis_accel = parse_axes(axis_accel, "--axis-accel", tk::motion::kAccelRange);
+    if (on_command_line("--start")) given.start = parse_axes(start, "--start", tk::motion::start_range());
     if (on_command_line("--accel")) given.accel = accel;
     if (on_command_line("--rapid")) given.rapid = rapid;
     if (on_command_line("--max-feed")) given.max_feed = max_feed;
     if (on_command_line("--junction-deviation")) given.junction_deviation = junction_deviation;
     if (on_command_line("--lookahead")) given.lookahead = lookahead;
-    try {
-      tk::motion::PulseOptions scratch;
-      given.apply_to(scratch);
-    } catch (const tk::Error& e) {
-      // A bad option value is a usage error, named as the option.
-      std::string message = e.what();
-      const std::size_t space = message.find(' ');
-      std::string name = message.substr(0, space);
-      for (char& c : name)
-        if (c == '_') c = '-';
-      throw tk::UsageError("--" + name + message.substr(space));
-    }
     settings.override_with(given);
     tk::motion::PulseOptions options;
     settings.apply_to(options);

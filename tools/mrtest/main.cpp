@@ -4,12 +4,9 @@
 #include <chrono>
 #include <set>
 
-#include "cli/progress.hpp"
+#include "cli/record_filter.hpp"
 #include "cli/tool_app.hpp"
-#include "concurrency/ordered_pool.hpp"
 #include "io/error.hpp"
-#include "io/record_reader.hpp"
-#include "io/record_writer.hpp"
 #include "primes/candidate.hpp"
 #include "primes/candidate_input.hpp"
 #include "primes/number_expression.hpp"
@@ -19,18 +16,6 @@ namespace {
 
 using tk::Record;
 using tk::primes::Verdict;
-
-struct Job {
-  Record record;
-  tk::Location where;
-};
-
-struct Outcome {
-  Record record;
-  tk::Location where;
-  Verdict verdict = Verdict::unknown;
-  std::optional<tk::Error> error;
-};
 
 // Small numbers travel to the worker threads in batches, so that -j pays
 // one hand-over per batch rather than per number; a number that may take
@@ -117,109 +102,36 @@ int main(int argc, char** argv) {
       else wanted.insert(Verdict::probable_prime);
     }
 
-    tk::io::RecordReader reader(tool.common().inputs, tk::primes::candidate_format_probe(max_bits));
-    tk::io::RecordWriter writer(tool.output_format());
-    writer.declare_fields({"verdict", "test", "witness", "seconds", "members"});
-    tk::cli::Progress progress("mrtest", tool.show_progress());
-    std::uint64_t done = 0, skipped = 0;
-
-    std::uint64_t unreadable = 0;
-    auto report_bad = [&](const tk::Error& error) {
-      if (!skip_bad) throw error;
-      // A file that cannot be read at all (line 0) still fails the run at the end.
-      if (error.where().line == 0) ++unreadable;
-      else ++skipped;
-      tool.warn(error.located_message());
-    };
     // A big number tested while other threads sit idle splits its BPSW over
     // two threads; when every thread has work, splitting would only
     // oversubscribe the cores.
     const unsigned threads = tool.common().threads;
     std::atomic<unsigned> busy{0};
-    auto test_one = [&](Job& job) {
-      Outcome out;
-      out.where = job.where;
-      try {
-        const auto start = std::chrono::steady_clock::now();
-        const tk::primes::Candidate candidate = tk::primes::candidate_from_record(job.record, max_bits);
-        tk::primes::TestPlan job_plan = plan;
-        if (threads > 1 && busy.load() < threads) job_plan.split_bits = tk::primes::kDefaultSplitBits;
-        out.verdict = tk::primes::test_candidate(candidate, job_plan, job.record);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        job.record.erase("seconds");
-        // Keep "members" last: it is the bulky field.
-        Record members;
-        if (job.record.contains("members")) {
-          members = std::move(job.record["members"]);
-          job.record.erase("members");
-        }
-        job.record["seconds"] = std::round(seconds * 1e6) / 1e6;
-        if (!members.is_null()) job.record["members"] = std::move(members);
-        out.record = std::move(job.record);
-      } catch (const tk::Error& e) {
-        out.error = tk::Error(e.what(), job.where);
-      }
-      return out;
-    };
-    auto work = [&](std::vector<Job>& batch) {
-      struct Busy {  // counted while the batch runs, even if it throws
+    tk::cli::RecordFilterSteps<tk::cli::RecordJob, tk::cli::RecordOutcome> steps;
+    steps.work = [&](tk::cli::RecordJob& job) {
+      struct Busy {  // counted while the test runs, even if it throws
         std::atomic<unsigned>& count;
         explicit Busy(std::atomic<unsigned>& c) : count(c) { ++count; }
         ~Busy() { --count; }
       } running(busy);
-      std::vector<Outcome> outcomes;
-      outcomes.reserve(batch.size());
-      for (Job& job : batch) outcomes.push_back(test_one(job));
-      return outcomes;
+      const auto start = std::chrono::steady_clock::now();
+      const tk::primes::Candidate candidate = tk::primes::candidate_from_record(job.record, max_bits);
+      tk::primes::TestPlan job_plan = plan;
+      if (threads > 1 && busy.load() < threads) job_plan.split_bits = tk::primes::kDefaultSplitBits;
+      const Verdict verdict = tk::primes::test_candidate(candidate, job_plan, job.record);
+      tk::cli::set_seconds(job.record, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      tk::cli::RecordOutcome out;
+      out.record = std::move(job.record);
+      out.write = wanted.empty() || wanted.count(verdict);
+      return out;
     };
-    auto emit = [&](std::vector<Outcome>& outcomes) {
-      for (Outcome& out : outcomes) {
-        ++done;
-        progress.update(done, reader.fraction_done());
-        if (out.error) {
-          report_bad(*out.error);
-          continue;
-        }
-        if (!wanted.empty() && !wanted.count(out.verdict)) continue;
-        try {
-          writer.write(out.record);
-        } catch (const tk::Error& e) {
-          throw tk::Error(e.what(), out.where);  // e.g. a field that is not a CSV column
-        }
-      }
-    };
+    steps.slow = [](const tk::cli::RecordJob& job) { return likely_slow(job.record); };
 
-    tk::OrderedPool<std::vector<Job>, std::vector<Outcome>> pool(tool.common().threads, work, emit);
-    // One thread works inline: no hand-over to save, and a slow producer's
-    // numbers come out as they arrive.
-    const std::size_t batch_size = tool.common().threads > 1 ? kBatchSize : 1;
-    std::vector<Job> batch;
-    auto submit_batch = [&] {
-      if (!batch.empty()) pool.submit(std::move(batch));
-      batch.clear();
-    };
-    for (;;) {
-      Job job;
-      try {
-        if (!reader.next(job.record)) break;
-      } catch (const tk::Error& e) {
-        submit_batch();
-        pool.finish();  // results before the bad line are written first
-        report_bad(e);
-        continue;
-      }
-      job.where = reader.where();
-      const bool slow = likely_slow(job.record);
-      batch.push_back(std::move(job));
-      if (slow || batch.size() >= batch_size) submit_batch();
-    }
-    submit_batch();
-    pool.finish();
-    progress.finish();
-    writer.flush();
-    if (skipped) tool.warn("skipped " + std::to_string(skipped) + " bad record" + (skipped == 1 ? "" : "s"));
-    if (unreadable)
-      throw tk::Error(std::to_string(unreadable) + " input file" + (unreadable == 1 ? " was" : "s were") +
-                      " not read");
+    tk::cli::RecordFilterSettings settings;
+    settings.probe = tk::primes::candidate_format_probe(max_bits);
+    settings.fields = {"verdict", "test", "witness", "seconds", "members"};
+    settings.skip_bad = skip_bad;
+    settings.batch_size = kBatchSize;
+    tk::cli::run_record_filter(tool, settings, steps);
   });
 }

@@ -1,24 +1,15 @@
 /// @file main.cpp
 /// @brief riesel: proves k*2^n-1 (Lucas-Lehmer-Riesel) and k*2^n+1 (Proth)
 /// prime or composite, as a pipeline filter that cron can restart.
-#include <csignal>
-
-#include <fmt/format.h>
-
-#include <atomic>
 #include <chrono>
-#include <cmath>
 #include <memory>
 
 #include "cli/number_option.hpp"
 #include "cli/option_checks.hpp"
-#include "cli/progress.hpp"
+#include "cli/record_filter.hpp"
+#include "cli/stop_signals.hpp"
 #include "cli/tool_app.hpp"
-#include "concurrency/ordered_pool.hpp"
 #include "io/error.hpp"
-#include "io/record_reader.hpp"
-#include "io/record_writer.hpp"
-#include "io/stop_signal.hpp"
 #include "primes/candidate.hpp"
 #include "primes/candidate_input.hpp"
 #include "primes/candidate_proof.hpp"
@@ -31,30 +22,16 @@ namespace {
 using tk::Record;
 using tk::primes::Verdict;
 
-std::atomic<int> g_stop_signal{0};
-std::atomic<bool> g_cancel{false};
-
-extern "C" void on_stop_signal(int signal) {
-  g_stop_signal.store(signal);
-  g_cancel.store(true);
-  tk::io::notice_stop_signal(signal);  // a blocked read gives up too
-}
-
-struct Job {
-  Record record;
-  tk::Location where;
+struct Job : tk::cli::RecordJob {
   std::string key;
   std::optional<std::string> finished;  ///< the journal's output line for a record proved before
 };
 
-struct Outcome {
-  Record record;
-  tk::Location where;
+/// `write` is unset when a signal cut the proof short: no verdict.
+struct Outcome : tk::cli::RecordOutcome {
   std::string key;
   bool replayed = false;
-  bool stopped = false;  ///< cut short by a signal: no verdict
   std::vector<std::string> log_lines;
-  std::optional<tk::Error> error;
 };
 
 }  // namespace
@@ -91,7 +68,9 @@ int main(int argc, char** argv) {
   app.add_flag("--require-proof", require_proof,
                "a number with no LLR or Proth proof (k >= 2^n, n too small, another shape) is an error, not BPSW");
   app.add_flag("--skip-bad", skip_bad, "report malformed records on stderr and go on");
-  app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits")->type_name("BITS");
+  app.add_option("--max-bits", max_bits, "refuse numbers larger than this many bits")
+      ->check(CLI::Range(std::size_t{2}, std::size_t{1} << 32))
+      ->type_name("BITS");
   tool.add_threads_option();
   tool.add_input_files();
 
@@ -103,18 +82,14 @@ int main(int argc, char** argv) {
     std::unique_ptr<tk::primes::ProofJournal> journal;
     if (!state_dir.empty())
       journal = std::make_unique<tk::primes::ProofJournal>(state_dir, [&](const std::string& problem) { tool.warn(problem); });
-    struct sigaction action {};
-    action.sa_handler = on_stop_signal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    const tk::cli::StopSignals stop;
 
     tk::primes::ProofPlan plan;
     plan.start = start == "d13" ? tk::primes::LlrStart::d13 : tk::primes::LlrStart::llr;
     plan.require_proof = require_proof;
     plan.options_for = [&](const std::string& member) {
       tk::primes::ProofOptions options;
-      options.cancel = &g_cancel;
+      options.cancel = stop.cancel();
       options.report_every = 1000;
       options.arithmetic = arithmetic == "gmp"   ? tk::primes::Arithmetic::gmp
                            : arithmetic == "fft" ? tk::primes::Arithmetic::fft
@@ -129,7 +104,7 @@ int main(int argc, char** argv) {
       auto last = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
       options.progress = [&, name, last](const tk::primes::ProofState& state) {
         const auto now = std::chrono::steady_clock::now();
-        if (g_cancel.load() || std::chrono::duration<double>(now - *last).count() >= checkpoint_seconds) {
+        if (stop.caught() || std::chrono::duration<double>(now - *last).count() >= checkpoint_seconds) {
           journal->save_checkpoint(name, state);
           *last = now;
         }
@@ -138,18 +113,20 @@ int main(int argc, char** argv) {
       return options;
     };
 
-    tk::io::RecordReader reader(tool.common().inputs, tk::primes::candidate_format_probe(max_bits));
-    tk::io::RecordWriter writer(tool.output_format());
-    writer.declare_fields({"verdict", "test", "P", "a", "res64", "witness", "seconds", "members"});
-    tk::cli::Progress progress("riesel", tool.show_progress());
-    std::uint64_t done = 0;
-
-    auto prove = [&](Job& job) {
+    tk::cli::RecordFilterSteps<Job, Outcome> steps;
+    std::uint64_t index = 0;
+    steps.take = [&](Job& job) {
+      if (index++ % shard_count != shard_slot) return false;
+      // Invalid UTF-8 in a passed-through field must not stop the run: replace it in the key.
+      job.key = "start=" + start + " " + job.record.dump(-1, ' ', false, tk::Record::error_handler_t::replace);
+      if (journal) job.finished = journal->finished(job.key);
+      return true;
+    };
+    steps.work = [&](Job& job) {
       Outcome out;
-      out.where = job.where;
       out.key = job.key;
-      if (g_cancel.load()) {  // stopping: queued records do not start
-        out.stopped = true;
+      if (stop.caught()) {  // stopping: queued records do not start
+        out.write = false;
         return out;
       }
       if (job.finished) {
@@ -157,84 +134,35 @@ int main(int argc, char** argv) {
         out.replayed = true;
         return out;
       }
-      try {
-        const auto started = std::chrono::steady_clock::now();
-        const tk::primes::Candidate candidate = tk::primes::candidate_from_record(job.record, max_bits);
-        auto member_started = started;
-        const Verdict verdict = tk::primes::prove_candidate(candidate, plan, job.record, [&](const tk::primes::MemberProof& proof) {
-          const auto now = std::chrono::steady_clock::now();
-          if (proof.verdict != Verdict::unknown)
-            out.log_lines.push_back(tk::primes::llr_result_line(proof, std::chrono::duration<double>(now - member_started).count()));
-          if (journal && proof.verdict != Verdict::unknown) journal->remove_checkpoint(proof.text + " start=" + start);
-          member_started = now;
-        });
-        if (verdict == Verdict::unknown && !g_cancel.load())  // never write a verdict that was not computed
-          throw tk::Error("the proof stopped without a verdict");
-        out.stopped = verdict == Verdict::unknown;
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-        Record members;
-        if (job.record.contains("members")) {
-          members = std::move(job.record["members"]);
-          job.record.erase("members");
-        }
-        job.record.erase("seconds");
-        job.record["seconds"] = std::round(seconds * 1e6) / 1e6;
-        if (!members.is_null()) job.record["members"] = std::move(members);
-        out.record = std::move(job.record);
-      } catch (const tk::Error& e) {
-        out.error = tk::Error(e.what(), job.where);
-      }
+      const auto started = std::chrono::steady_clock::now();
+      const tk::primes::Candidate candidate = tk::primes::candidate_from_record(job.record, max_bits);
+      auto member_started = started;
+      const Verdict verdict = tk::primes::prove_candidate(candidate, plan, job.record, [&](const tk::primes::MemberProof& proof) {
+        const auto now = std::chrono::steady_clock::now();
+        if (proof.verdict != Verdict::unknown)
+          out.log_lines.push_back(tk::primes::llr_result_line(proof, std::chrono::duration<double>(now - member_started).count()));
+        if (journal && proof.verdict != Verdict::unknown) journal->remove_checkpoint(proof.text + " start=" + start);
+        member_started = now;
+      });
+      if (verdict == Verdict::unknown && !stop.caught())  // never write a verdict that was not computed
+        throw tk::Error("the proof stopped without a verdict");
+      out.write = verdict != Verdict::unknown;  // a signal cut it short: the checkpoint has it
+      tk::cli::set_seconds(job.record, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+      out.record = std::move(job.record);
       return out;
     };
-    auto emit = [&](Outcome& out) {
-      ++done;
-      progress.update(done, reader.fraction_done());
-      if (out.error) {
-        if (!skip_bad) throw *out.error;
-        tool.warn(out.error->located_message());
-        return;
-      }
-      if (out.stopped) return;  // a signal cut it short: the checkpoint has it
+    steps.accept = [&](Outcome& out) {
       if (journal && !out.replayed)
         journal->record_finished(out.key, out.record.dump(-1, ' ', false, tk::Record::error_handler_t::replace),
                                  out.log_lines);
-      writer.write(out.record);
     };
 
-    {
-      tk::OrderedPool<Job, Outcome> pool(tool.common().threads, prove, emit);
-      std::uint64_t index = 0, unreadable = 0;
-      for (;;) {
-        if (g_cancel.load()) break;
-        Job job;
-        try {
-          if (!reader.next(job.record)) break;
-        } catch (const tk::Error& e) {
-          if (g_stop_signal.load()) break;  // the read was interrupted by SIGINT/SIGTERM
-          if (!skip_bad) throw;
-          if (e.where().line == 0) ++unreadable;  // a whole file: still fails the run at the end
-          tool.warn(e.located_message());
-          continue;
-        }
-        if (index++ % shard_count != shard_slot) continue;
-        job.where = reader.where();
-        // Invalid UTF-8 in a passed-through field must not stop the run: replace it in the key.
-        job.key = "start=" + start + " " + job.record.dump(-1, ' ', false, tk::Record::error_handler_t::replace);
-        if (journal) job.finished = journal->finished(job.key);
-        pool.submit(std::move(job));
-      }
-      pool.finish();
-      if (unreadable && !g_stop_signal.load())
-        throw tk::Error(fmt::format("{} input file{} could not be read", unreadable, unreadable == 1 ? "" : "s"));
-    }
-    writer.flush();
-    if (const int signal = g_stop_signal.load()) {
-      progress.finish();
-      std::fflush(stdout);
-      std::fprintf(stderr, "riesel: stopped by signal %d%s\n", signal,
-                   journal ? "; state saved, run again with the same --state to continue" : "");
-      std::signal(signal, SIG_DFL);
-      std::raise(signal);
-    }
+    tk::cli::RecordFilterSettings settings;
+    settings.probe = tk::primes::candidate_format_probe(max_bits);
+    settings.fields = {"verdict", "test", "P", "a", "res64", "witness", "seconds", "members"};
+    settings.skip_bad = skip_bad;
+    settings.stop = &stop;
+    tk::cli::run_record_filter(tool, settings, steps);
+    if (stop.caught()) stop.die("riesel", journal ? "; state saved, run again with the same --state to continue" : "");
   });
 }

@@ -1,13 +1,11 @@
 /// @file main.cpp
 /// @brief sieve: primes in an interval, and the generalized sieve for
 /// twin, Sophie Germain, Cunningham-chain, Riesel and Proth searches.
-#include <csignal>
-
 #include <fmt/format.h>
 
 #include "cli/number_option.hpp"
+#include "cli/stop_signals.hpp"
 #include "cli/tool_app.hpp"
-#include "io/stop_signal.hpp"
 #include "io/error.hpp"
 #include "io/record_writer.hpp"
 #include "primes/generalized_sieve.hpp"
@@ -16,13 +14,6 @@
 #include "primes/sieve_run.hpp"
 
 namespace {
-
-std::atomic<int> g_stop_signal{0};
-
-extern "C" void on_stop_signal(int signal) {
-  g_stop_signal.store(signal);
-  tk::io::notice_stop_signal(signal);  // a blocked read gives up too
-}
 
 struct FormOptions {
   std::string n, k, h0, c, x, pmax, shard = "1/1", factors, checkpoint;
@@ -55,8 +46,8 @@ tk::primes::SieveSpec spec_from(tk::primes::SieveForm form, const FormOptions& o
 
 void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOptions& o) {
   const tk::primes::SieveSpec spec = spec_from(form, o);
-  if (o.min_rate < 0 || !(o.min_rate == o.min_rate)) throw tk::Error("--min-rate must be a non-negative number");
-  if (!(o.checkpoint_seconds > 0)) throw tk::Error("--checkpoint-every must be a positive number of seconds");
+  if (o.min_rate < 0 || !(o.min_rate == o.min_rate)) throw tk::UsageError("--min-rate must be a non-negative number");
+  if (!(o.checkpoint_seconds > 0)) throw tk::UsageError("--checkpoint-every must be a positive number of seconds");
   tk::primes::SieveRunOptions run;
   run.threads = tool.common().threads;
   std::tie(run.shard_index, run.shard_count) = tk::cli::parse_shard(o.shard, "--shard");
@@ -67,27 +58,17 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
   run.min_rate = o.min_rate;
   run.rate_window_seconds = o.rate_window;
   run.progress = tool.show_progress();
-  run.stop_signal = &g_stop_signal;
-
-  struct sigaction action {};
-  action.sa_handler = on_stop_signal;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  const tk::cli::StopSignals stop;
+  run.stop_signal = stop.signal();
 
   tk::primes::GeneralizedSieve sieve(spec);
   const auto outcome = tk::primes::run_sieve(sieve, run, [&](const std::string& text) { tool.warn(text); });
-  if (const int signal = g_stop_signal.load()) {
+  if (stop.caught()) {
     const char* saved = o.checkpoint.empty() ? "; no --checkpoint, so the work is lost" : "; checkpoint saved, continue with --resume";
     if (!sieve.small_primes_done())
-      std::fprintf(stderr, "sieve: stopped by signal %d while the primes up to 2^20 sieved, after %llu of %llu segments%s\n",
-                   signal, static_cast<unsigned long long>(sieve.next_segment()),
-                   static_cast<unsigned long long>((sieve.spec().count() + sieve.kSegmentBits - 1) / sieve.kSegmentBits), saved);
-    else
-      std::fprintf(stderr, "sieve: stopped by signal %d after p = %llu%s\n", signal,
-                   static_cast<unsigned long long>(sieve.sieved_to()), saved);
-    std::signal(signal, SIG_DFL);
-    std::raise(signal);
+      stop.die("sieve", fmt::format(" while the primes up to 2^20 sieved, after {} of {} segments{}", sieve.next_segment(),
+                                    (sieve.spec().count() + sieve.kSegmentBits - 1) / sieve.kSegmentBits, saved));
+    stop.die("sieve", fmt::format(" after p = {}{}", sieve.sieved_to(), saved));
   }
   if (outcome.rate_stopped) tool.warn(fmt::format("removal rate fell below --min-rate: stopped at p = {}", outcome.depth));
   using Format = tk::primes::SieveOutputFormat;
@@ -101,9 +82,9 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
 void run_primes(tk::cli::ToolApp& tool, const std::string& from_text, const std::string& to_text, bool count, bool json) {
   const std::uint64_t from = tk::cli::parse_count(from_text, "A");
   const std::uint64_t to = tk::cli::parse_count(to_text, "B");
-  if (to < from) throw tk::Error(fmt::format("the interval {}..{} is empty: B is below A", from, to));
+  if (to < from) throw tk::UsageError(fmt::format("the interval {}..{} is empty: B is below A", from, to));
   if (to > tk::primes::max_prime_bound())
-    throw tk::Error(fmt::format("B must be at most {}", tk::primes::max_prime_bound()));
+    throw tk::UsageError(fmt::format("B must be at most {}", tk::primes::max_prime_bound()));
   const unsigned threads = tool.common().threads;
   const bool records = json || tool.output_format() == tk::io::OutputFormat::csv;
   if (count) {

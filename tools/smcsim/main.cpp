@@ -66,12 +66,7 @@ const FeedDriveSummary& checked(const FeedDriveSummary& s) {
 
 /// --Lambda, --alpha or --beta: a number or FROM:TO:STEP, each value a usable gain.
 std::vector<double> gain_grid(const std::string& text, const char* option) {
-  std::vector<double> values;
-  try {
-    values = tk::cli::parse_grid(text, option, kMaxSweepPoints);
-  } catch (const tk::Error& e) {
-    throw tk::UsageError(e.what());
-  }
+  const std::vector<double> values = tk::cli::parse_grid(text, option, kMaxSweepPoints);
   for (const double v : values)
     if (const std::string problem = tk::cli::out_of_domain(v, tk::cli::NumberDomain::non_negative); !problem.empty())
       throw tk::UsageError(fmt::format("{}: {}, not {}", option, problem, v));

@@ -227,12 +227,7 @@ void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::O
 ForceErrorModel load_model(const std::string& path, const std::string& coefficient_text) {
   ForceErrorModel m;
   if (!coefficient_text.empty()) {
-    std::vector<double> values;
-    try {
-      values = tk::cli::parse_numbers(coefficient_text, "--coefficients", 6);
-    } catch (const tk::Error& e) {
-      throw tk::UsageError(e.what());
-    }
+    const std::vector<double> values = tk::cli::parse_numbers(coefficient_text, "--coefficients", 6);
     for (std::size_t k = 0; k < 6; ++k) {
       // Millimetres per unit of a, f and their products: ±1e6 keeps y finite
       // for every allowance and feed the tool takes.

@@ -122,11 +122,7 @@ void write_program(const std::vector<std::string>& designations, Options o, cons
     tk::cli::require_run_size(synchronisation_distance(settings), kMaxRunInMm,
                               "mm of run-in (the Z axis's way up to P times S; give --run-in, or lower the speed)",
                               "--accel with the spindle speed and the pitch");
-  try {
-    validate(settings);
-  } catch (const tk::Error& e) {
-    throw tk::UsageError(e.what());  // from the options, not from the data
-  }
+  validate(settings);
   settings.left_hand = result.designation.left_hand;
   const ProgramStyle style = p.style == "g76" ? ProgramStyle::g76 : ProgramStyle::passes;
   std::cout << thread_program(style, result.plan, settings) << std::flush;

@@ -5,6 +5,7 @@
 /// fuzzylite FLL (fll). Any FLL controller can stand in for the paper's.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -122,13 +123,11 @@ struct ControllerOptions {
       o.speed_factor = speed_factor;
       o.implication = implication == "product" ? fuzzy::Implication::product : fuzzy::Implication::minimum;
       o.conjunction = t.value_or(TNorm::minimum);
-      try {  // a bad option value, or corners out of order: both usage errors
-        const std::vector<double> c = cli::parse_numbers(backward_slowly, "--backward-slowly", 4);
-        o.backward_slowly = {c[0], c[1], c[2], c[3]};
-        e = fuzzy::line_follower_engine(o);
-      } catch (const Error& err) {
-        throw UsageError(err.what());
-      }
+      const std::vector<double> c = cli::parse_numbers(backward_slowly, "--backward-slowly", 4);
+      if (!std::is_sorted(c.begin(), c.end()))
+        throw UsageError("--backward-slowly " + backward_slowly + ": the term needs its corners in order (A <= B <= C <= D)");
+      o.backward_slowly = {c[0], c[1], c[2], c[3]};
+      e = fuzzy::line_follower_engine(o);
     }
     for (auto& out : e.outputs) out.defuzzifier = defuzzifier(out.defuzzifier);
     return e;
@@ -269,12 +268,7 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
   check_laps_size(laps, latencies_ms, !laps.svg_path.empty() || !laps.trace_path.empty());
   vehicle::Track track = [&] {
     if (!laps.track_path.empty()) return vehicle::read_track(laps.track_path, laps.line_width);
-    std::vector<double> oval;
-    try {
-      oval = cli::parse_numbers(laps.oval, "--oval", 2);
-    } catch (const Error& e) {
-      throw UsageError(e.what());
-    }
+    const std::vector<double> oval = cli::parse_numbers(laps.oval, "--oval", 2);
     cli::require_range(oval[0], 0, 1e5, "--oval (straight, mm)");
     cli::require_range(oval[1], 10, 1e5, "--oval (radius, mm)");  // a chord per 5 mm of the bends
     return vehicle::oval_track(oval[0], oval[1], laps.line_width);
