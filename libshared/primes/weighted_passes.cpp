@@ -5,6 +5,8 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <immintrin.h>
 
+#include <cmath>
+
 #include "primes/weighted_squaring_detail.hpp"
 
 namespace tk::primes {
@@ -13,13 +15,29 @@ namespace {
 
 using namespace weighted_detail;
 
+// The low coefficients' carry into 2^n, floor(L / 2^n), from the top
+// ones alone, in doubles: each term is below 2^51 times 2^-(n - e_j), the
+// sum about 2^31 with 2^-21 to spare, and what lies more than 2^110 below
+// 2^n is ignored, so this is the exact floor or one off it. The fold
+// carries the low coefficients as they are and takes this from the top
+// digit, so one off only leaves that digit one larger or smaller: never
+// a wrong value, and no serial pass over the low coefficients here.
+inline std::int64_t low_carry_estimate(const std::int64_t* z, const std::uint8_t* bits, std::size_t low_digits) {
+  double sum = 0, scale = 1;
+  for (std::size_t j = low_digits; j-- > 0 && scale > 0x1p-110;) {
+    scale *= std::ldexp(1.0, -bits[j]);  // 2^-(n - e_j)
+    sum += static_cast<double>(z[j]) * scale;
+  }
+  return static_cast<std::int64_t>(std::floor(sum));
+}
+
 // A coefficient is below 2^51 and the carry below 2^(52-s), so their sum
 // fits 64 bits. `pending` holds the `filled` (< 64) bits not yet in a
 // full limb; no branch (a limb fills at an irregular digit).
 __attribute__((always_inline)) inline HighCarry carry_body(const std::int64_t* __restrict z,
                                                           const std::uint8_t* __restrict bits, std::size_t low_digits,
                                                           std::size_t coefficients, std::uint64_t* __restrict high) {
-  std::int64_t low_carry = 0, carry = 0;
+  std::int64_t carry = 0;
   std::uint64_t pending = 0;
   unsigned filled = 0;
   std::size_t limb = 0;
@@ -35,13 +53,9 @@ __attribute__((always_inline)) inline HighCarry carry_body(const std::int64_t* _
     limb += full;
     filled = filled + s - (full ? 64 : 0);
   };
-  for (std::size_t j = 0; j < low_digits; ++j) {  // the high part has more coefficients than the low
-    low_carry = (z[j] + low_carry) >> bits[j];
-    high_digit(low_digits + j);
-  }
-  for (std::size_t j = 2 * low_digits; j < coefficients; ++j) high_digit(j);
+  for (std::size_t j = low_digits; j < coefficients; ++j) high_digit(j);
   high[limb] = pending;
-  return {low_carry, carry, limb};
+  return {low_carry_estimate(z, bits, low_digits), carry, limb};
 }
 
 // Three passes, so the serial one is short: the quotient's bits joined
