@@ -62,143 +62,127 @@ TK_INLINE void times_conjugate(V& r, V& m, V wr, V wi) {
   r = t;
 }
 
+// One complex point per lane, from the split arrays.
 template <class V>
-TK_INLINE void forward4(double* re, double* im, const double* twr, const double* twi, std::size_t block, std::size_t begin,
-              std::size_t end) {
-  const std::size_t q = block / 4;
+struct Point {
+  V r, m;
+};
+template <class V>
+TK_INLINE Point<V> get(const double* re, const double* im, std::size_t at) {
+  return {load<V>(re + at), load<V>(im + at)};
+}
+template <class V>
+TK_INLINE void put(double* re, double* im, std::size_t at, Point<V> p) {
+  store(re + at, p.r);
+  store(im + at, p.m);
+}
+template <class V>
+TK_INLINE Point<V> operator+(Point<V> a, Point<V> b) { return {a.r + b.r, a.m + b.m}; }
+template <class V>
+TK_INLINE Point<V> operator-(Point<V> a, Point<V> b) { return {a.r - b.r, a.m - b.m}; }
+template <class V>
+TK_INLINE Point<V> times_i(Point<V> a) { return {-a.m, a.r}; }
+// times the twiddle of slot t (1 <= t < r) at j, or by its conjugate
+template <class V>
+TK_INLINE Point<V> twiddled(Point<V> a, const double* twr, const double* twi, std::size_t at) {
+  times(a.r, a.m, load<V>(twr + at), load<V>(twi + at));
+  return a;
+}
+template <class V>
+TK_INLINE Point<V> untwiddled(Point<V> a, const double* twr, const double* twi, std::size_t at) {
+  times_conjugate(a.r, a.m, load<V>(twr + at), load<V>(twi + at));
+  return a;
+}
+
+// Calls butterfly(re, im, j, q) for every group of lanes of every block:
+// the group's points are at j + s*q, s < radix, and its twiddles at
+// j + (t - 1)*q.
+template <class V, class Butterfly>
+TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begin, std::size_t end, Butterfly&& butterfly) {
+  const std::size_t q = block / static_cast<std::size_t>(radix);
   for (std::size_t base = begin; base < end; base += block)
-    for (std::size_t j = 0; j < q; j += kLanes<V>) {
-      double *r0 = re + base + j, *i0 = im + base + j;
-      const V ar = load<V>(r0), ai = load<V>(i0), br = load<V>(r0 + q), bi = load<V>(i0 + q);
-      const V cr = load<V>(r0 + 2 * q), ci = load<V>(i0 + 2 * q), dr = load<V>(r0 + 3 * q), di = load<V>(i0 + 3 * q);
-      const V t0r = ar + cr, t0i = ai + ci, t1r = ar - cr, t1i = ai - ci;
-      const V t2r = br + dr, t2i = bi + di, t3r = br - dr, t3i = bi - di;
-      store(r0, t0r + t2r);
-      store(i0, t0i + t2i);
-      V y1r = t1r + t3i, y1i = t1i - t3r;  // t1 - i*t3
-      V y2r = t0r - t2r, y2i = t0i - t2i;
-      V y3r = t1r - t3i, y3i = t1i + t3r;  // t1 + i*t3
-      times(y1r, y1i, load<V>(twr + j), load<V>(twi + j));
-      times(y2r, y2i, load<V>(twr + q + j), load<V>(twi + q + j));
-      times(y3r, y3i, load<V>(twr + 2 * q + j), load<V>(twi + 2 * q + j));
-      store(r0 + q, y1r);
-      store(i0 + q, y1i);
-      store(r0 + 2 * q, y2r);
-      store(i0 + 2 * q, y2i);
-      store(r0 + 3 * q, y3r);
-      store(i0 + 3 * q, y3i);
-    }
+    for (std::size_t j = 0; j < q; j += kLanes<V>) butterfly(base + j, j, q);
 }
 
 template <class V>
-TK_INLINE void inverse4(double* re, double* im, const double* twr, const double* twi, std::size_t block, std::size_t begin,
-              std::size_t end) {
-  const std::size_t q = block / 4;
-  for (std::size_t base = begin; base < end; base += block)
-    for (std::size_t j = 0; j < q; j += kLanes<V>) {
-      double *r0 = re + base + j, *i0 = im + base + j;
-      const V y0r = load<V>(r0), y0i = load<V>(i0);
-      V y1r = load<V>(r0 + q), y1i = load<V>(i0 + q);
-      V y2r = load<V>(r0 + 2 * q), y2i = load<V>(i0 + 2 * q);
-      V y3r = load<V>(r0 + 3 * q), y3i = load<V>(i0 + 3 * q);
-      times_conjugate(y1r, y1i, load<V>(twr + j), load<V>(twi + j));
-      times_conjugate(y2r, y2i, load<V>(twr + q + j), load<V>(twi + q + j));
-      times_conjugate(y3r, y3i, load<V>(twr + 2 * q + j), load<V>(twi + 2 * q + j));
-      const V u0r = y0r + y2r, u0i = y0i + y2i, u1r = y0r - y2r, u1i = y0i - y2i;
-      const V u2r = y1r + y3r, u2i = y1i + y3i, u3r = y1r - y3r, u3i = y1i - y3i;
-      store(r0, u0r + u2r);
-      store(i0, u0i + u2i);
-      store(r0 + q, u1r - u3i);  // u1 + i*u3
-      store(i0 + q, u1i + u3r);
-      store(r0 + 2 * q, u0r - u2r);
-      store(i0 + 2 * q, u0i - u2i);
-      store(r0 + 3 * q, u1r + u3i);  // u1 - i*u3
-      store(i0 + 3 * q, u1i - u3r);
-    }
+TK_INLINE void forward4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
+                        std::size_t begin, std::size_t end) {
+  for_each_butterfly<V>(4, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
+    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q),
+                   d = get<V>(re, im, at + 3 * q);
+    const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
+    put(re, im, at, t0 + t2);
+    put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
+    put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
+    put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
+  });
 }
 
 template <class V>
-TK_INLINE void forward2(double* re, double* im, const double* twr, const double* twi, std::size_t block, std::size_t begin,
-              std::size_t end) {
-  const std::size_t h = block / 2;
-  for (std::size_t base = begin; base < end; base += block)
-    for (std::size_t j = 0; j < h; j += kLanes<V>) {
-      double *r0 = re + base + j, *i0 = im + base + j;
-      const V ar = load<V>(r0), ai = load<V>(i0), br = load<V>(r0 + h), bi = load<V>(i0 + h);
-      store(r0, ar + br);
-      store(i0, ai + bi);
-      V dr = ar - br, di = ai - bi;
-      times(dr, di, load<V>(twr + j), load<V>(twi + j));
-      store(r0 + h, dr);
-      store(i0 + h, di);
-    }
+TK_INLINE void inverse4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
+                        std::size_t begin, std::size_t end) {
+  for_each_butterfly<V>(4, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
+    const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
+                   y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j),
+                   y3 = untwiddled(get<V>(re, im, at + 3 * q), twr, twi, 2 * q + j);
+    const Point<V> u0 = y0 + y2, u1 = y0 - y2, u2 = y1 + y3, u3 = times_i(y1 - y3);
+    put(re, im, at, u0 + u2);
+    put(re, im, at + q, u1 + u3);
+    put(re, im, at + 2 * q, u0 - u2);
+    put(re, im, at + 3 * q, u1 - u3);
+  });
 }
 
 template <class V>
-TK_INLINE void inverse2(double* re, double* im, const double* twr, const double* twi, std::size_t block, std::size_t begin,
-              std::size_t end) {
-  const std::size_t h = block / 2;
-  for (std::size_t base = begin; base < end; base += block)
-    for (std::size_t j = 0; j < h; j += kLanes<V>) {
-      double *r0 = re + base + j, *i0 = im + base + j;
-      const V ar = load<V>(r0), ai = load<V>(i0);
-      V br = load<V>(r0 + h), bi = load<V>(i0 + h);
-      times_conjugate(br, bi, load<V>(twr + j), load<V>(twi + j));
-      store(r0, ar + br);
-      store(i0, ai + bi);
-      store(r0 + h, ar - br);
-      store(i0 + h, ai - bi);
-    }
+TK_INLINE void forward2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
+                        std::size_t begin, std::size_t end) {
+  for_each_butterfly<V>(2, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t h) {
+    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
+    put(re, im, at, a + b);
+    put(re, im, at + h, twiddled(a - b, twr, twi, j));
+  });
+}
+
+template <class V>
+TK_INLINE void inverse2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
+                        std::size_t begin, std::size_t end) {
+  for_each_butterfly<V>(2, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t h) {
+    const Point<V> a = get<V>(re, im, at), b = untwiddled(get<V>(re, im, at + h), twr, twi, j);
+    put(re, im, at, a + b);
+    put(re, im, at + h, a - b);
+  });
 }
 
 constexpr double kHalfRoot3 = 0.86602540378443864676;  // sin(2*pi/3)
 
+// y1, y2 = m -+ i*h*d (forward: e^(-2*pi*i/3) = -1/2 - i*h), or +- for the inverse.
 template <class V>
-TK_INLINE void forward3(double* re, double* im, const double* twr, const double* twi, std::size_t block, std::size_t begin,
-              std::size_t end) {
-  const std::size_t q = block / 3;
+TK_INLINE void forward3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
+                        std::size_t begin, std::size_t end) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for (std::size_t base = begin; base < end; base += block)
-    for (std::size_t j = 0; j < q; j += kLanes<V>) {
-      double *r0 = re + base + j, *i0 = im + base + j;
-      const V ar = load<V>(r0), ai = load<V>(i0), br = load<V>(r0 + q), bi = load<V>(i0 + q);
-      const V cr = load<V>(r0 + 2 * q), ci = load<V>(i0 + 2 * q);
-      const V sr = br + cr, si = bi + ci, dr = br - cr, di = bi - ci;
-      store(r0, ar + sr);
-      store(i0, ai + si);
-      const V mr = ar - half * sr, mi = ai - half * si;
-      V y1r = mr + h * di, y1i = mi - h * dr;  // m - i*h*d
-      V y2r = mr - h * di, y2i = mi + h * dr;
-      times(y1r, y1i, load<V>(twr + j), load<V>(twi + j));
-      times(y2r, y2i, load<V>(twr + q + j), load<V>(twi + q + j));
-      store(r0 + q, y1r);
-      store(i0 + q, y1i);
-      store(r0 + 2 * q, y2r);
-      store(i0 + 2 * q, y2i);
-    }
+  for_each_butterfly<V>(3, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
+    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
+    const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
+    const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
+    put(re, im, at, a + sum);
+    put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
+    put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
+  });
 }
 
 template <class V>
-TK_INLINE void inverse3(double* re, double* im, const double* twr, const double* twi, std::size_t block, std::size_t begin,
-              std::size_t end) {
-  const std::size_t q = block / 3;
+TK_INLINE void inverse3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
+                        std::size_t begin, std::size_t end) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for (std::size_t base = begin; base < end; base += block)
-    for (std::size_t j = 0; j < q; j += kLanes<V>) {
-      double *r0 = re + base + j, *i0 = im + base + j;
-      const V y0r = load<V>(r0), y0i = load<V>(i0);
-      V y1r = load<V>(r0 + q), y1i = load<V>(i0 + q), y2r = load<V>(r0 + 2 * q), y2i = load<V>(i0 + 2 * q);
-      times_conjugate(y1r, y1i, load<V>(twr + j), load<V>(twi + j));
-      times_conjugate(y2r, y2i, load<V>(twr + q + j), load<V>(twi + q + j));
-      const V sr = y1r + y2r, si = y1i + y2i, dr = y1r - y2r, di = y1i - y2i;
-      store(r0, y0r + sr);
-      store(i0, y0i + si);
-      const V mr = y0r - half * sr, mi = y0i - half * si;
-      store(r0 + q, mr - h * di);  // m + i*h*d
-      store(i0 + q, mi + h * dr);
-      store(r0 + 2 * q, mr + h * di);  // m - i*h*d
-      store(i0 + 2 * q, mi - h * dr);
-    }
+  for_each_butterfly<V>(3, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
+    const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
+                   y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j);
+    const Point<V> sum = y1 + y2, m = {y0.r - half * sum.r, y0.m - half * sum.m};
+    const Point<V> ihd = times_i(Point<V>{h * (y1.r - y2.r), h * (y1.m - y2.m)});
+    put(re, im, at, y0 + sum);
+    put(re, im, at + q, m + ihd);
+    put(re, im, at + 2 * q, m - ihd);
+  });
 }
 
 template <class V>
