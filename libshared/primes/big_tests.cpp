@@ -1,6 +1,8 @@
 /// @file big_tests.cpp
 #include "primes/big_tests.hpp"
 
+#include "primes/weighted_tests.hpp"
+
 namespace tk::primes {
 
 namespace {
@@ -54,6 +56,7 @@ void power_mod(mpz_class& result, const mpz_class& base, const mpz_class& expone
 bool fermat_probable_prime(const Modulus& N, const mpz_class& base) {
   mpz_class b = base % N.value();
   if (b == 0) return true;
+  if (const auto verdict = weighted_fermat_probable_prime(N, b)) return *verdict;
   mpz_class r;
   power_mod(r, b, N.value() - 1, N);
   return r == 1;
@@ -63,6 +66,7 @@ bool strong_probable_prime(const Modulus& N, const mpz_class& base, const std::a
   const mpz_class n_minus_1 = N.value() - 1;
   mpz_class b = base % N.value();
   if (b == 0) return true;
+  if (const auto verdict = weighted_strong_probable_prime(N, b, cancel)) return *verdict;
   const mp_bitcnt_t s = mpz_scan1(n_minus_1.get_mpz_t(), 0);
   mpz_class d;
   mpz_tdiv_q_2exp(d.get_mpz_t(), n_minus_1.get_mpz_t(), s);

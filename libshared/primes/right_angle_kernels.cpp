@@ -38,7 +38,7 @@ TK_INLINE V load(const double* p) {
   return v;
 }
 template <class V>
-TK_INLINE void store(double* p, V v) {
+TK_INLINE void store(double* p, const V& v) {
   std::memcpy(p, &v, sizeof v);
 }
 template <class V>
@@ -50,13 +50,13 @@ TK_INLINE V splat(double d) {
 
 // (r + i*m) times the twiddle (wr + i*wi), or by its conjugate.
 template <class V>
-TK_INLINE void times(V& r, V& m, V wr, V wi) {
+TK_INLINE void times(V& r, V& m, const V& wr, const V& wi) {
   const V t = r * wr - m * wi;
   m = r * wi + m * wr;
   r = t;
 }
 template <class V>
-TK_INLINE void times_conjugate(V& r, V& m, V wr, V wi) {
+TK_INLINE void times_conjugate(V& r, V& m, const V& wr, const V& wi) {
   const V t = r * wr + m * wi;
   m = m * wr - r * wi;
   r = t;
@@ -72,26 +72,28 @@ TK_INLINE Point<V> get(const double* re, const double* im, std::size_t at) {
   return {load<V>(re + at), load<V>(im + at)};
 }
 template <class V>
-TK_INLINE void put(double* re, double* im, std::size_t at, Point<V> p) {
+TK_INLINE void put(double* re, double* im, std::size_t at, const Point<V>& p) {
   store(re + at, p.r);
   store(im + at, p.m);
 }
 template <class V>
-TK_INLINE Point<V> operator+(Point<V> a, Point<V> b) { return {a.r + b.r, a.m + b.m}; }
+TK_INLINE Point<V> operator+(const Point<V>& a, const Point<V>& b) { return {a.r + b.r, a.m + b.m}; }
 template <class V>
-TK_INLINE Point<V> operator-(Point<V> a, Point<V> b) { return {a.r - b.r, a.m - b.m}; }
+TK_INLINE Point<V> operator-(const Point<V>& a, const Point<V>& b) { return {a.r - b.r, a.m - b.m}; }
 template <class V>
-TK_INLINE Point<V> times_i(Point<V> a) { return {-a.m, a.r}; }
+TK_INLINE Point<V> times_i(const Point<V>& a) { return {-a.m, a.r}; }
 // times the twiddle of slot t (1 <= t < r) at j, or by its conjugate
 template <class V>
-TK_INLINE Point<V> twiddled(Point<V> a, const double* twr, const double* twi, std::size_t at) {
-  times(a.r, a.m, load<V>(twr + at), load<V>(twi + at));
-  return a;
+TK_INLINE Point<V> twiddled(const Point<V>& a, const double* twr, const double* twi, std::size_t at) {
+  Point<V> b = a;
+  times(b.r, b.m, load<V>(twr + at), load<V>(twi + at));
+  return b;
 }
 template <class V>
-TK_INLINE Point<V> untwiddled(Point<V> a, const double* twr, const double* twi, std::size_t at) {
-  times_conjugate(a.r, a.m, load<V>(twr + at), load<V>(twi + at));
-  return a;
+TK_INLINE Point<V> untwiddled(const Point<V>& a, const double* twr, const double* twi, std::size_t at) {
+  Point<V> b = a;
+  times_conjugate(b.r, b.m, load<V>(twr + at), load<V>(twi + at));
+  return b;
 }
 
 // Calls butterfly(re, im, j, q) for every group of lanes of every block:

@@ -59,7 +59,7 @@ struct Rounder {
     }
   }
 
-  TK_INLINE void add(V value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+  TK_INLINE void add(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
     // Only max-like selects (GCC 12 scalarises other double compares at
     // AVX-512). Values are clamped to +-2^51 so every lane converts to a
     // sane integer; the largest magnitude and a NaN probe (a NaN or an
