@@ -105,3 +105,31 @@ GP
   assert_success
   [ "$(grep -c prime want.txt)" -gt 15 ]
 }
+
+# From 24,000 bits on, mr and fermat on k*2^n+-1 square on riesel's
+# weighted transform. The paper's prime must pass; numbers of both forms
+# with a small factor PARI names must fail by their base (trial division
+# off), for bases 2 and 3 and the strong and Fermat tests alike.
+@test "mr and fermat on the weighted transform (24,000 bits and up): the paper's prime passes, PARI's composites fail" {
+  gp -q > composites.txt <<'GP'
+{
+  setrand(2611);
+  for(i = 1, 4,
+    c = if(i % 2, 1, -1);
+    until(f, k = 2*random(2^40) + 1; n = 24000 + random(200); N = k*2^n + c;
+      f = 0; forprime(p = 3, 97, if(N % p == 0, f = p; break)));
+    print(k, "*2^", n, if(c > 0, "+1", "-1"), " ", f));
+}
+GP
+  [ "$(wc -l < composites.txt)" -eq 4 ]
+  while read -r number factor; do
+    run gp -q <<< "print(($number) % $factor)"
+    assert_output "0"
+  done < composites.txt
+  { echo "778965587811*2^36627-1"; cut -d' ' -f1 composites.txt; } > numbers.txt
+  for test in mr fermat; do
+    mrtest -j 2 --trial-bound 0 -t "$test" -b 2,3 numbers.txt | json-field verdict > got.txt
+    run cat got.txt
+    assert_output "$(printf 'probable-prime\ncomposite\ncomposite\ncomposite\ncomposite')"
+  done
+}
