@@ -68,4 +68,18 @@ std::optional<bool> weighted_fermat_probable_prime(const Modulus& N, const mpz_c
   return *y == (N.form()->c == 1 ? mpz_class(1) : reduced(b * b, N));
 }
 
+std::optional<mpz_class> weighted_minus_two_chain(const Modulus& N, const mpz_class& w, std::uint64_t steps,
+                                                  const std::atomic<bool>* cancel, std::size_t from_bits) {
+  auto squarer = squarer_for(N, from_bits);
+  if (!squarer) return std::nullopt;
+  squarer->load(reduced(w, N));
+  for (std::uint64_t i = 0; i < steps; ++i) {
+    if (cancel && i % 1024 == 0 && cancel->load(std::memory_order_relaxed)) return mpz_class(1);
+    squarer->square_minus(2);
+  }
+  mpz_class last;
+  squarer->store(last);
+  return last;
+}
+
 }  // namespace tk::primes

@@ -29,4 +29,12 @@ std::optional<bool> weighted_strong_probable_prime(const Modulus& N, const mpz_c
 /// base^(N-1) == 1 (mod N) on the transform; nothing where it does not apply.
 std::optional<bool> weighted_fermat_probable_prime(const Modulus& N, const mpz_class& base, std::size_t from_bits = kFftMinBits);
 
+/// W := W^2 - 2 repeated `steps` times from `w`, on the transform: the
+/// tail of the strong Lucas test for N = k*2^n - 1 (N + 1 = k*2^n, as in
+/// LLR). Nothing where the transform does not apply; a meaningless value
+/// when `cancel` becomes true.
+std::optional<mpz_class> weighted_minus_two_chain(const Modulus& N, const mpz_class& w, std::uint64_t steps,
+                                                  const std::atomic<bool>* cancel = nullptr,
+                                                  std::size_t from_bits = kFftMinBits);
+
 }  // namespace tk::primes

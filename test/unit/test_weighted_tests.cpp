@@ -3,7 +3,8 @@
 /// tests by GMP (mpz_powm, the modulus taken without its form), on the
 /// primes 3*2^n - 1 (OEIS A002235) and 3*2^n + 1 (A002253), composites of
 /// both forms with k up to 56 bits, and bases that are squares (whose
-/// Proth chains reach 1 early, left to the GMP test).
+/// Proth chains reach 1 early, left to the GMP test); the Lucas test's
+/// W^2 - 2 chain against GMP's.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -66,10 +67,31 @@ TEST(WeightedTests, CompositesOfBothFormsFailAsByGmp) {
   EXPECT_GE(composites, 30);
 }
 
+// The Lucas test's tail W -> W^2 - 2 against GMP's, and the Lucas-Lehmer
+// chain of the Mersenne prime 2^1279 - 1 (from 4, 0 after 1277 steps).
+TEST(WeightedTests, MinusTwoChainsAreGmps) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(5);
+  for (const SpecialForm form : {SpecialForm{3, 1274, -1}, SpecialForm{778965587811ull, 3001, -1}, SpecialForm{(1ull << 55) + 3, 777, -1}}) {
+    const mpz_class N = value_of(form);
+    const Modulus modulus(N, form);
+    mpz_class w = random.get_z_range(N);
+    const auto got = weighted_minus_two_chain(modulus, w, 100, nullptr, 0);
+    ASSERT_TRUE(got.has_value());
+    for (int i = 0; i < 100; ++i) w = (w * w - 2) % N;
+    if (w < 0) w += N;
+    EXPECT_EQ(*got, w) << name_of(form);
+  }
+  const SpecialForm mersenne{1, 1279, -1};
+  EXPECT_EQ(weighted_minus_two_chain(Modulus(value_of(mersenne), mersenne), 4, 1277, nullptr, 0), mpz_class(0));
+  EXPECT_NE(weighted_minus_two_chain(Modulus(value_of(mersenne), mersenne), 4, 1276, nullptr, 0), mpz_class(0));
+}
+
 TEST(WeightedTests, BelowTheirSizeOrOutsideTheFormTheyStepAside) {
   const SpecialForm form{3, 1274, -1};
   EXPECT_FALSE(weighted_strong_probable_prime(Modulus(value_of(form), form), 2).has_value());  // below 24,000 bits
   EXPECT_FALSE(weighted_fermat_probable_prime(Modulus(value_of(form)), 2, 0).has_value());     // no form
+  EXPECT_FALSE(weighted_minus_two_chain(Modulus(value_of(form), form), 4, 10).has_value());
 }
 
 }  // namespace
