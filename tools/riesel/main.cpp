@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->type_name("NAME");
   app.add_option("--arithmetic", arithmetic,
-                 "auto, gmp (GMP's multiplication) or fft (FFTW, every square verified); auto takes the FFT from " +
+                 "auto, gmp (GMP's multiplication) or fft (the weighted transform, every square verified); auto takes the FFT from " +
                      std::to_string(tk::primes::kFftMinBits) + " bits on")
       ->check(CLI::IsMember({"auto", "gmp", "fft"}))
       ->capture_default_str()
