@@ -44,11 +44,11 @@ void RegionIndex::Impl::tree_nearest(Point p, double& best2, std::uint32_t& best
   while (top > 0) {
     const std::uint32_t index = stack[--top];
     const Node& node = nodes[index];
-    if (box_distance2(node.box, p) >= best2) continue;
+    if (box_distance2(node.box, p) > best2) continue;  // not >=: an equally near element may have a lower index
     if (node.count > 0) {
       for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
         const double d2 = distance2(kernels[order[i]], p);
-        if (d2 < best2) best2 = d2, best = order[i];
+        if (nearer(d2, order[i], best2, best)) best2 = d2, best = order[i];
       }
       continue;
     }
@@ -110,22 +110,24 @@ double RegionIndex::Impl::leaf_nearest(std::size_t leaf, Point centre, Point p, 
   const double bound = (double(l.nearest) + from_centre) * (1 + 1e-12);
   double best2 = bound * bound + std::numeric_limits<double>::min();
   best = UINT32_MAX;
-  // |p - e| >= |c - e| - |p - c|: nothing further down the list can win.
-  const auto beaten = [&](const Candidate& c) {
-    const double lower = double(c.key) - from_centre;
-    return lower > 0 && lower * lower >= best2;
+  // |p - e| >= |c - e| - |p - c|: nothing further down the list can win,
+  // nor tie (less a rounding margin, so that an element whose computed
+  // distance ties with the best is still examined for the tie rule).
+  const auto ruled_out = [&](double key) {
+    const double lower = key - from_centre - rounding;
+    return lower > 0 && lower * lower > best2;
   };
+  const auto beaten = [&](const Candidate& c) { return ruled_out(double(c.key)); };
   const auto try_element = [&](std::uint32_t e) {
     const double d2 = distance2(kernels[e], p);
-    if (d2 < best2) best2 = d2, best = e;
+    if (nearer(d2, e, best2, best)) best2 = d2, best = e;
   };
   bool done = false;
   for (std::size_t i = 0; i < kHead && !(done = beaten(l.head[i])); ++i) try_element(l.head[i].element);
   const Candidate* it = candidates.data() + l.candidates;
   const Candidate* const end = candidates.data() + leaves[leaf + 1].candidates;
   for (; !done && it != end && !(done = beaten(*it)); ++it) try_element(it->element);
-  const double lower = double(l.complete) - from_centre;
-  if (!done && !(lower > 0 && lower * lower >= best2)) tree_nearest(p, best2, best);
+  if (!done && !ruled_out(double(l.complete))) tree_nearest(p, best2, best);
   if (best == UINT32_MAX) best2 = kInf, tree_nearest(p, best2, best);  // not reached; rounding guard
   return best2;
 }

@@ -250,6 +250,7 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_uniqu
   for (const Box& b : m.boxes)
     scale = std::max({scale, std::abs(b.min_x), std::abs(b.min_y), std::abs(b.max_x), std::abs(b.max_y)});
   const double pad = 1e-12 * scale;
+  m.rounding = pad;
   for (Box& b : m.boxes) b = {b.min_x - pad, b.min_y - pad, b.max_x + pad, b.max_y + pad};
   m.order.resize(m.segments.size());
   for (std::uint32_t i = 0; i < m.order.size(); ++i) m.order[i] = i;

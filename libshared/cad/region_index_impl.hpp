@@ -150,6 +150,14 @@ inline double box_distance2(const Box& b, Point p) {
   return dx * dx + dy * dy;
 }
 
+/// The tie rule of every nearest-element search: the smaller squared
+/// distance, and of two equal ones the lower element index (as brute force,
+/// which scans in index order), so that the element named never depends on
+/// how the index happens to be built.
+inline bool nearer(double d2, std::uint32_t e, double best2, std::uint32_t best) {
+  return d2 < best2 || (d2 == best2 && e < best);
+}
+
 inline Box merge(const Box& a, const Box& b) {
   return {std::min(a.min_x, b.min_x), std::min(a.min_y, b.min_y), std::max(a.max_x, b.max_x),
           std::max(a.max_y, b.max_y)};
@@ -214,6 +222,7 @@ struct RegionIndex::Impl {
   void build_inside();
   bool chain_parity(Point from, Point to, const std::vector<std::uint32_t>& elements);
   double ox = 0, oy = 0, size = 1, inv_size = 1;
+  double rounding = 0;  // beyond the rounding of any computed distance (as the boxes' padding)
   std::size_t nx = 0, ny = 0;
 
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);

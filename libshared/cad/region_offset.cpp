@@ -13,6 +13,7 @@
 
 #include <ctime>
 
+#include "cad/clipper_sweep.hpp"
 #include "cad/segment_geometry.hpp"
 #include "cli/option_checks.hpp"
 #include "io/error.hpp"
@@ -400,6 +401,8 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
   } else {
     ClipperLib::Paths paths;
     for (const Loop& loop : drawn) paths.push_back(to_clipper(loop, options.tolerance));
+    const bool turned = sweep_across(paths);  // a part long in x: Clipper sweeps it the short way
+    if (turned) quarter_turn(paths);
     // The region is the loops' even-odd interior (as RegionIndex sees it),
     // also where a drawing's loops cross themselves or each other; Clipper
     // offsets by orientation, so hand it the even-odd union first.
@@ -415,6 +418,7 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     offsetter.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
     ClipperLib::PolyTree tree;
     offsetter.Execute(tree, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm);
+    if (turned) quarter_turn_back(tree);
     clock.add(&OffsetStageTimes::clipper_offset);
     const DrawingFeatures features(drawn, index);
     // Walk the tree: outer boundaries before their holes, depth from nesting.

@@ -30,7 +30,11 @@ inline Comparison compare(const std::vector<Loop>& loops, const std::vector<Poin
     ++result.points;
     EXPECT_NEAR(std::abs(fast.distance), std::abs(slow.distance), tolerance) << p.x << ' ' << p.y;
     EXPECT_NEAR(std::hypot(fast.nearest.x - p.x, fast.nearest.y - p.y), std::abs(fast.distance), 1e-9 * std::max(1.0, std::abs(slow.distance)));
-    EXPECT_LT(fast.element, index.elements().size());
+    // Of equally near elements, the lowest index (brute force's scan order):
+    // the element and the nearest point on it are exactly brute force's.
+    EXPECT_EQ(fast.element, slow.element) << p.x << ' ' << p.y;
+    EXPECT_EQ(fast.nearest.x, slow.nearest.x) << p.x << ' ' << p.y;
+    EXPECT_EQ(fast.nearest.y, slow.nearest.y) << p.x << ' ' << p.y;
     if (std::abs(slow.distance) >= 1e-9) {
       ++result.sign_checked;
       EXPECT_EQ(fast.inside(), slow.inside()) << p.x << ' ' << p.y << " at " << slow.distance;
