@@ -181,17 +181,12 @@ bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_cla
   w -= 2;
   N.reduce(w.get_mpz_t());
   // W_r = 0 for some r in 1..s-1 passes the test; r = s-1 is the last step.
-  // Once 0, W goes on -2, 2, 2, ...: so W_(s-1) alone settles it, from the
-  // weighted transform for a long chain, unless it is 2 or -2 (then where
-  // W was 0, if anywhere, takes the loop below).
+  // On the weighted transform for a long chain, each W watched for 0.
   if (s > 2) {
-    if (const auto last = weighted_minus_two_chain(N, w, s - 2, cancel)) {
-      if (cancelled(cancel)) return false;
-      if (*last == 0) {
-        if (zero_at_last) *zero_at_last = true;
-        return true;
-      }
-      if (*last != 2 && *last != n - 2) return false;
+    if (const auto tail = weighted_lucas_tail(N, w, s - 1, cancel)) {
+      if (cancelled(cancel) || tail->zero_at == 0) return false;
+      if (zero_at_last) *zero_at_last = tail->zero_at == s - 1;
+      return true;
     }
   }
   for (mp_bitcnt_t r = 1;; ++r) {

@@ -3,6 +3,7 @@
 /// choice of SIMD width at run time.
 #include "primes/right_angle_transform.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <new>
@@ -94,6 +95,7 @@ RightAngleSquarer::RightAngleSquarer(std::size_t half, int lanes, std::vector<St
   theta_sin_ = theta_cos_ + half;
   twiddle_re_ = theta_sin_ + half;
   twiddle_im_ = twiddle_re_ + twiddles;
+  std::fill(re_, re_ + 2 * half, 0.0);  // a square before any input squares zeros
   const long double pi = 3.141592653589793238462643383279502884L;
   for (std::size_t j = 0; j < half; ++j) {
     const long double angle = pi * static_cast<long double>(j) / static_cast<long double>(2 * half);

@@ -29,7 +29,7 @@ class RightAngleSquarer {
   enum class Simd { best, avx2, avx512 };
 
   /// Nothing where the CPU lacks the SIMD asked for (AVX2 with FMA at
-  /// least) or L/2 is not 2^a * 3^b with 2^a >= 4 times the SIMD width.
+  /// least) or L/2 is not w * 2^a * 3^b, at least 4w (w the SIMD width).
   static std::unique_ptr<RightAngleSquarer> create(std::size_t length, Simd simd = Simd::best);
   /// Whether `length` (L) has a transform on this CPU.
   static bool supports(std::size_t length);

@@ -63,6 +63,13 @@ class WeightedSquaring {
   /// x := x^2 - minus (mod N).
   void square_minus(unsigned long minus);
 
+  /// The held value's residue modulo 2^61 - 1, carried from square to
+  /// square (the held value is x plus a small multiple of N, |j| <= 4).
+  std::uint64_t held_mod_p61() const { return value_mod_p_; }
+  /// Whether the digits held give that residue: the last fold, which no
+  /// square has checked yet, went right.
+  bool holds_carried_residue() const;
+
   std::size_t transform_length() const { return length_; }
   /// "right-angle, 8 lanes" or "FFTW": which transform squares.
   std::string transform_name() const;

@@ -139,7 +139,9 @@ std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& fo
     if (short_length && !(own_transform ? RightAngleSquarer::supports(length) : fast_fft_lengths_contain(length))) continue;
     const std::size_t low = low_digits_for(form.n, max_average_bits(length));
     if (2 * (low + top_digits(form, low)) - 1 > length) continue;
-    candidates.emplace_back(new WeightedSquaring(form, length, low, transform));
+    // FFTW's below the timed lengths unless ours was taken there (not at AVX2 width by default)
+    const Transform used = short_length && !own_transform ? Transform::fftw : transform;
+    candidates.emplace_back(new WeightedSquaring(form, length, low, used));
     if (short_length || candidates.size() == kTimedCandidates) break;
   }
   if (candidates.empty()) return nullptr;
@@ -153,7 +155,9 @@ std::unique_ptr<WeightedSquaring> WeightedSquaring::create_with(const SpecialFor
   if (!fits_weighted_squaring(form) || digit_bits < 4 || digit_bits > 40 || length % 2 != 0) return nullptr;
   const std::size_t low = low_digits_for(form.n, digit_bits);
   if (2 * (low + top_digits(form, low)) - 1 > length) return nullptr;
-  return std::unique_ptr<WeightedSquaring>(new WeightedSquaring(form, length, low, transform));
+  std::unique_ptr<WeightedSquaring> squarer(new WeightedSquaring(form, length, low, transform));
+  squarer->load(0);
+  return squarer;
 }
 
 std::string WeightedSquaring::transform_name() const {
@@ -271,6 +275,12 @@ void WeightedSquaring::store(mpz_class& x) const {
   }
   const mpz_class N = modulus_of(form_);
   mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
+}
+
+bool WeightedSquaring::holds_carried_residue() const {
+  std::uint64_t sum = 0;
+  for (std::size_t j = 0; j < digits_; ++j) sum = fold61(sum + times_power61(residue61(digit_[j]), rotation_[j]));
+  return reduce61(sum) == value_mod_p_;
 }
 
 void WeightedSquaring::square_by_gmp(unsigned long minus) {

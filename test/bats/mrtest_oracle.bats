@@ -109,7 +109,7 @@ GP
 # From 24,000 bits on, mr and fermat on k*2^n+-1, and the Lucas half of
 # bpsw on k*2^n-1, square on riesel's weighted transform. The paper's
 # prime must pass; numbers of both forms with a small factor PARI names
-# must fail (trial division off), for bases 2 and 5, strong, Fermat, BPSW.
+# must fail (trial division off; base 2 decides them), strong, Fermat, BPSW.
 @test "mr, fermat and bpsw on the weighted transform (24,000 bits and up): the paper's prime passes, PARI's composites fail" {
   gp -q > composites.txt <<'GP'
 {
@@ -128,8 +128,8 @@ GP
   done < composites.txt
   # The paper's prime, and the Proth prime 2139*2^24010+1 (PARI's
   # ispseudoprime: 1; (5/N) = -1, so Proth's theorem with a = 5 proves it;
-  # (2/N) = 1: base 2's chain reaches 1 before its last step, which the
-  # GMP test then settles).
+  # (2/N) = 1: base 2's chain reaches -1 before its last step, where the
+  # watch on the chain finds it).
   { echo "778965587811*2^36627-1"; cut -d' ' -f1 composites.txt; echo "2139*2^24010+1"; } > numbers.txt
   tests=("mr -b 2,5" "fermat -b 2,5" bpsw)
   # Sanitized, each path once (the unit tests compare them with GMP's at

@@ -60,7 +60,7 @@ TEST(RightAngleSquarer, ExactSquaresAtEveryKindOfLength) {
   for (auto simd : widths)
     for (std::size_t length : lengths) {
       auto squarer = RightAngleSquarer::create(length, simd);
-      if (!squarer) continue;  // 64 with 8 lanes: too short for a pass
+      if (!squarer) continue;  // below 4 vectors of points
       ++tried;
       EXPECT_LT(worst_error(*squarer, 16, static_cast<std::uint32_t>(length)), 0.01)
           << "length " << length << ", " << squarer->lanes() << " lanes";

@@ -98,6 +98,9 @@ TEST(WeightedSquaring, EveryTransformMatchesGmp) {
       if (transform == Transform::fftw) {
         EXPECT_EQ(squarer->transform_name(), "FFTW");
       }
+      if (transform == Transform::avx2 && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
+        EXPECT_EQ(squarer->transform_name(), "right-angle, 4 lanes");
+      }
       own += squarer->transform_name() != "FFTW";
       const mpz_class N = value_of(c.form);
       expect_chain_matches(*squarer, c.form, random.get_z_range(N), c.form.c < 0 ? 2 : 0, 6);

@@ -2,9 +2,9 @@
 /// @brief Miller-Rabin and Fermat on the weighted squaring against the same
 /// tests by GMP (mpz_powm, the modulus taken without its form), on the
 /// primes 3*2^n - 1 (OEIS A002235) and 3*2^n + 1 (A002253), composites of
-/// both forms with k up to 56 bits, and bases that are squares (whose
-/// Proth chains reach 1 early, left to the GMP test); the Lucas test's
-/// W^2 - 2 chain against GMP's.
+/// both forms with k up to 56 bits, bases that are squares (whose Proth
+/// chains reach -1 early) and a base sharing a factor with N; the Lucas
+/// test's W^2 - 2 tail against GMP's.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -18,26 +18,18 @@ using namespace tk::primes;
 using squaring_test::name_of;
 using squaring_test::value_of;
 
-// The weighted tests' verdict where they give one, else the GMP test's
-// (as big_tests does), against the GMP test alone.
+// The weighted tests' verdicts against the GMP tests (the modulus taken
+// without its form, so GMP's mpz_powm): both must give one, the same.
 void expect_same_verdicts(const SpecialForm& form, std::initializer_list<unsigned long> bases) {
   const mpz_class value = value_of(form);
   const Modulus with_form(value, form), plain(value);
   for (unsigned long base : bases) {
     const mpz_class b = base;
-    const bool gmp_strong = strong_probable_prime(plain, b), gmp_fermat = fermat_probable_prime(plain, b);
     const auto strong = weighted_strong_probable_prime(with_form, b, nullptr, 0);
     const auto fermat = weighted_fermat_probable_prime(with_form, b, 0);
-    ASSERT_TRUE(fermat.has_value()) << name_of(form);
-    EXPECT_EQ(*fermat, gmp_fermat) << name_of(form) << " base " << base;
-    if (strong) {
-      EXPECT_EQ(*strong, gmp_strong) << name_of(form) << " base " << base;
-    }
-    EXPECT_EQ(strong_probable_prime(with_form, b), gmp_strong) << name_of(form) << " base " << base;
-    // Proth: undecided only when the chain reached 1 before its last step.
-    if (!strong) {
-      EXPECT_EQ(form.c, 1) << name_of(form);
-    }
+    ASSERT_TRUE(strong.has_value() && fermat.has_value()) << name_of(form) << " base " << base;
+    EXPECT_EQ(*strong, strong_probable_prime(plain, b)) << name_of(form) << " base " << base;
+    EXPECT_EQ(*fermat, fermat_probable_prime(plain, b)) << name_of(form) << " base " << base;
   }
 }
 
@@ -46,10 +38,21 @@ TEST(WeightedTests, PrimesOfTheOeisPassEveryBase) {
     expect_same_verdicts({3, n, -1}, {2, 3, 4, 5, 9, 10});
   for (std::uint64_t n : {66, 189, 201, 209, 276, 353, 408, 438, 534})
     expect_same_verdicts({3, n, 1}, {2, 3, 4, 5, 9, 10});
-  const SpecialForm prime{3, 534, 1};
-  EXPECT_FALSE(weighted_strong_probable_prime(Modulus(value_of(prime), prime), 4, nullptr, 0).has_value())
-      << "4 is a square: its Proth chain reaches 1 before the last step";
-  EXPECT_EQ(weighted_strong_probable_prime(Modulus(value_of(prime), prime), 5, nullptr, 0), true);
+}
+
+// A base that shares a factor with N: b^d is then never +-1, whatever the
+// chain gives (N = 3*2^100 - 1 = 313*q, b = 0 mod 313 and 1 mod q).
+TEST(WeightedTests, ABaseSharingAFactorFails) {
+  const SpecialForm form{3, 100, -1};
+  const mpz_class N = value_of(form), q = N / 313;
+  ASSERT_EQ(N % 313, 0);
+  mpz_class inverse;
+  mpz_invert(inverse.get_mpz_t(), mpz_class(313).get_mpz_t(), q.get_mpz_t());
+  const mpz_class b = 313 * inverse % N;  // 0 mod 313, 1 mod q
+  const Modulus modulus(N, form);
+  EXPECT_EQ(weighted_strong_probable_prime(modulus, b, nullptr, 0), false);
+  EXPECT_EQ(weighted_fermat_probable_prime(modulus, b, 0), false);
+  EXPECT_FALSE(strong_probable_prime(Modulus(N), b));
 }
 
 TEST(WeightedTests, CompositesOfBothFormsFailAsByGmp) {
@@ -67,31 +70,42 @@ TEST(WeightedTests, CompositesOfBothFormsFailAsByGmp) {
   EXPECT_GE(composites, 18);
 }
 
-// The Lucas test's tail W -> W^2 - 2 against GMP's, and the Lucas-Lehmer
-// chain of the Mersenne prime 2^1279 - 1 (from 4, 0 after 1277 steps).
-TEST(WeightedTests, MinusTwoChainsAreGmps) {
+// The Lucas test's tail: the first W_r = 0, against GMP's loop. The
+// Lucas-Lehmer chain of the Mersenne prime 2^1279 - 1 from 4 reaches 0 at
+// r = 1278, the last step; from sqrt(2) = 2^640 it does at r = 2 (W goes
+// on -2, 2, 2, ...); a random start of a composite never does.
+TEST(WeightedTests, LucasTailsFindTheirFirstZero) {
+  const SpecialForm mersenne{1, 1279, -1};
+  const mpz_class M = value_of(mersenne);
+  const Modulus modulus(M, mersenne);
+  auto first_zero = [&](const mpz_class& w) {
+    const auto tail = weighted_lucas_tail(modulus, w, 1278, nullptr, 0);
+    EXPECT_TRUE(tail.has_value());
+    return tail ? tail->zero_at : 0;
+  };
+  EXPECT_EQ(first_zero(4), 1278u);
+  mpz_class root = 1;
+  root <<= 640;
+  EXPECT_EQ(first_zero(root), 2u);
+  EXPECT_EQ(first_zero(0), 1u);
+  const SpecialForm composite{778965587811ull, 3001, -1};
   gmp_randclass random(gmp_randinit_default);
   random.seed(5);
-  for (const SpecialForm form : {SpecialForm{3, 1274, -1}, SpecialForm{778965587811ull, 3001, -1}, SpecialForm{(1ull << 55) + 3, 777, -1}}) {
-    const mpz_class N = value_of(form);
-    const Modulus modulus(N, form);
-    mpz_class w = random.get_z_range(N);
-    const auto got = weighted_minus_two_chain(modulus, w, 100, nullptr, 0);
-    ASSERT_TRUE(got.has_value());
-    for (int i = 0; i < 100; ++i) w = (w * w - 2) % N;
-    if (w < 0) w += N;
-    EXPECT_EQ(*got, w) << name_of(form);
-  }
-  const SpecialForm mersenne{1, 1279, -1};
-  EXPECT_EQ(weighted_minus_two_chain(Modulus(value_of(mersenne), mersenne), 4, 1277, nullptr, 0), mpz_class(0));
-  EXPECT_NE(weighted_minus_two_chain(Modulus(value_of(mersenne), mersenne), 4, 1276, nullptr, 0), mpz_class(0));
+  const mpz_class N = value_of(composite);
+  mpz_class w = random.get_z_range(N);
+  const auto tail = weighted_lucas_tail(Modulus(N, composite), w, 500, nullptr, 0);
+  ASSERT_TRUE(tail.has_value());
+  bool zero = false;
+  for (int r = 1; r <= 500 && !zero; ++r, w = (w * w - 2) % N) zero = w == 0;
+  EXPECT_FALSE(zero);
+  EXPECT_EQ(tail->zero_at, 0u);
 }
 
 TEST(WeightedTests, BelowTheirSizeOrOutsideTheFormTheyStepAside) {
   const SpecialForm form{3, 1274, -1};
   EXPECT_FALSE(weighted_strong_probable_prime(Modulus(value_of(form), form), 2).has_value());  // below 24,000 bits
   EXPECT_FALSE(weighted_fermat_probable_prime(Modulus(value_of(form)), 2, 0).has_value());     // no form
-  EXPECT_FALSE(weighted_minus_two_chain(Modulus(value_of(form), form), 4, 10).has_value());
+  EXPECT_FALSE(weighted_lucas_tail(Modulus(value_of(form), form), 4, 10).has_value());
 }
 
 }  // namespace
