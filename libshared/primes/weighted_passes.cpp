@@ -18,10 +18,10 @@ using namespace weighted_detail;
 // The low coefficients' carry into 2^n, floor(L / 2^n), from the top
 // ones alone, in doubles: each term is below 2^51 times 2^-(n - e_j), the
 // sum about 2^31 with 2^-21 to spare, and what lies more than 2^110 below
-// 2^n is ignored, so this is the exact floor or one off it. The fold
-// carries the low coefficients as they are and takes this from the top
-// digit, so one off only leaves that digit one larger or smaller: never
-// a wrong value, and no serial pass over the low coefficients here.
+// 2^n is ignored, so this is the exact floor or one off it. The value is
+// exact whatever this is (H*2^n + L with this moved from L to H is still
+// the square): it only keeps the top digit small, and one off leaves it
+// one larger or smaller. No serial pass over the low coefficients here.
 inline std::int64_t low_carry_estimate(const std::int64_t* z, const std::uint8_t* bits, std::size_t low_digits) {
   double sum = 0, scale = 1;
   for (std::size_t j = low_digits; j-- > 0 && scale > 0x1p-110;) {
