@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "primes/cpu_features.hpp"
 #include "primes/right_angle_kernels.hpp"
 
 namespace tk::primes {
@@ -19,13 +20,7 @@ namespace {
 constexpr std::size_t kInnerBlockPoints = 1024;
 
 bool cpu_has(RightAngleSquarer::Simd simd) {
-  switch (simd) {
-    case RightAngleSquarer::Simd::avx512:
-      return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("fma");
-    case RightAngleSquarer::Simd::avx2: return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    case RightAngleSquarer::Simd::best: return cpu_has(RightAngleSquarer::Simd::avx512) || cpu_has(RightAngleSquarer::Simd::avx2);
-  }
-  return false;
+  return simd == RightAngleSquarer::Simd::avx512 ? cpu::has_avx512() : cpu::has_avx2();
 }
 
 int lanes_of(RightAngleSquarer::Simd simd) {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "primes/cpu_features.hpp"
 #include "primes/weighted_squaring_detail.hpp"
 
 namespace tk::primes {
@@ -161,7 +162,7 @@ __attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void join_quo
   }
 }
 
-template <bool kAdd, bool kGather = false>
+template <bool kAdd, bool kGather>
 __attribute__((always_inline)) inline void fold_body(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits,
                                                      const std::uint64_t* exponent, const FoldTarget& target,
                                                      std::size_t low_digits, std::size_t digits, std::int64_t bottom,
@@ -178,9 +179,9 @@ __attribute__((always_inline)) inline void fold_body(const std::int64_t* low, co
   const std::int64_t *low, const mp_limb_t *q, const std::uint8_t *bits, const std::uint64_t *exponent,      \
       const FoldTarget &target, std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, \
       bool add_quotient
-#define TK_FOLD_CALL(body)                                                                           \
-  return add_quotient ? body<true>(low, q, bits, exponent, target, low_digits, digits, bottom, top) \
-                      : body<false>(low, q, bits, exponent, target, low_digits, digits, bottom, top)
+#define TK_FOLD_CALL(gather)                                                                                \
+  return add_quotient ? fold_body<true, gather>(low, q, bits, exponent, target, low_digits, digits, bottom, top) \
+                      : fold_body<false, gather>(low, q, bits, exponent, target, low_digits, digits, bottom, top)
 
 __attribute__((target("avx2,bmi,bmi2"))) HighCarry carry_fast(const std::int64_t* z, const std::uint8_t* bits,
                                                               std::size_t low_digits, std::size_t coefficients,
@@ -191,42 +192,27 @@ HighCarry carry_portable(const std::int64_t* z, const std::uint8_t* bits, std::s
                          std::size_t coefficients, std::uint64_t* high) {
   return carry_body(z, bits, low_digits, coefficients, high);
 }
-template <bool kAdd>
-__attribute__((always_inline)) inline void fold_gathering(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits,
-                                                          const std::uint64_t* exponent, const FoldTarget& target,
-                                                          std::size_t low_digits, std::size_t digits, std::int64_t bottom,
-                                                          std::int64_t top) {
-  fold_body<kAdd, true>(low, q, bits, exponent, target, low_digits, digits, bottom, top);
-}
-__attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void fold_avx512(TK_FOLD_ARGS) {
-  TK_FOLD_CALL(fold_gathering);
-}
-__attribute__((target("avx2,bmi,bmi2"))) void fold_fast(TK_FOLD_ARGS) { TK_FOLD_CALL(fold_body); }
-void fold_portable(TK_FOLD_ARGS) { TK_FOLD_CALL(fold_body); }
+__attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void fold_avx512(TK_FOLD_ARGS) { TK_FOLD_CALL(true); }
+__attribute__((target("avx2,bmi,bmi2"))) void fold_fast(TK_FOLD_ARGS) { TK_FOLD_CALL(false); }
+void fold_portable(TK_FOLD_ARGS) { TK_FOLD_CALL(false); }
 
 #undef TK_FOLD_ARGS
 #undef TK_FOLD_CALL
-
-bool cpu_is_fast() {
-  static const bool fast = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi2");
-  return fast;
-}
 
 }  // namespace
 
 HighCarry carry_into_limbs(const std::int64_t* z, const std::uint8_t* bits, std::size_t low_digits,
                            std::size_t coefficients, std::uint64_t* high) {
-  return cpu_is_fast() ? carry_fast(z, bits, low_digits, coefficients, high)
+  return cpu::has_avx2() ? carry_fast(z, bits, low_digits, coefficients, high)
                        : carry_portable(z, bits, low_digits, coefficients, high);
 }
 
 void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const std::uint64_t* exponent,
                  const FoldTarget& target, std::size_t low_digits, std::size_t digits, std::int64_t bottom,
                  std::int64_t top, bool add_quotient) {
-  static const bool avx512 = __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") && cpu_is_fast();
-  if (avx512 && target.wide)
+  if (cpu::has_avx512() && target.wide)
     fold_avx512(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
-  else if (cpu_is_fast())
+  else if (cpu::has_avx2())
     fold_fast(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
   else
     fold_portable(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "primes/cpu_features.hpp"
 #include "primes/weighted_squaring_detail.hpp"
 
 // The vector helpers are always inlined into functions compiled for
@@ -165,24 +166,18 @@ __attribute__((target("avx2"))) RoundedCoefficients right_angle_avx2(const doubl
   return round_right_angle_with<v4d, v4i, v4u>(re, im, weights, rotation, z, half);
 }
 
-bool has_avx512() {
-  static const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
-  return avx512;
-}
-
 }  // namespace
 
 RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint8_t* rotation,
                                        std::int64_t* z, std::size_t count) {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (has_avx512()) return round_avx512(output, weight, rotation, z, count);
-  return avx2 ? round_avx2(output, weight, rotation, z, count) : round_portable(output, weight, rotation, z, count);
+  if (cpu::has_avx512()) return round_avx512(output, weight, rotation, z, count);
+  return cpu::has_avx2() ? round_avx2(output, weight, rotation, z, count) : round_portable(output, weight, rotation, z, count);
 }
 
 // Only the right-angle transform's callers come here, and it needs AVX2.
 RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
                                       const std::uint8_t* rotation, std::int64_t* z, std::size_t half, bool wide) {
-  return wide && has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half)
+  return wide && cpu::has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half)
                       : right_angle_avx2(re, im, weights, rotation, z, half);
 }
 

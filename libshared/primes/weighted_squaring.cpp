@@ -45,9 +45,10 @@ bool WeightedSquaring::square_and_carry() {
   }
   // Carry. Below 2^n the digits need not be normal: the fold's balanced
   // carrying takes the coefficients as they are. Only their carry into
-  // 2^n (c_m = floor(L / 2^n)) is needed, for H + c_m: a two-instruction
-  // chain, run alongside the carries from 2^n up, which turn those
-  // coefficients into normal digits packed into limbs for the division.
+  // 2^n (c_m = floor(L / 2^n)) is needed, for H + c_m, and an estimate
+  // from the top ones serves (weighted_passes.cpp); the carries from 2^n
+  // up turn those coefficients into normal digits packed into limbs for
+  // the division.
   const HighCarry carried =
       carry_into_limbs(coefficient_.data(), bits_.data(), low_digits_, coefficients_, high_.data());
   std::fill(high_.begin() + static_cast<std::ptrdiff_t>(carried.last_limb) + 1, high_.end(), 0);

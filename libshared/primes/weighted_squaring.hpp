@@ -83,7 +83,7 @@ class WeightedSquaring {
   bool square_and_carry();  ///< transforms; the square's digits into low_/high_; false when a check fails
   void divide_and_fold(unsigned long minus);
   /// Balanced, weighted digits of the low coefficients -/+ the quotient's low n bits, with
-  /// `top` times 2^n and `bottom` added, into input_ (and x mod 2^61-1).
+  /// `top` times 2^n and `bottom` added, into the transform's input (and x mod 2^61-1).
   void fold_into_input(std::int64_t top, std::int64_t bottom);
   void square_by_gmp(unsigned long minus);
   void right_angle_weights();
@@ -106,6 +106,7 @@ class WeightedSquaring {
   std::vector<mp_limb_t> high_;          ///< the square's bits from 2^n up
   std::vector<mp_limb_t> quotient_;      ///< high_ / k, zero-padded
   std::size_t high_limbs_ = 0;
+  // FFTW's arrays, null where our transform squares in its own.
   double* input_ = nullptr;   ///< FFTW-aligned, length_, zero past digits_
   double* output_ = nullptr;  ///< FFTW-aligned, length_
   void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex

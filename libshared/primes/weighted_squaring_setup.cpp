@@ -191,18 +191,20 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   high_limbs_ = (exponent_[coefficients_] - n) / 64 + 2;
   high_.assign(high_limbs_ + 1, 0);
   quotient_.assign(high_limbs_ + 3, 0);  // zeros past the end for reading two limbs at a time
-  input_ = fftw_alloc_real(length_);
-  output_ = fftw_alloc_real(length_);
-  spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
-  std::fill(input_, input_ + length_, 0.0);
   if (transform != Transform::fftw)
     right_angle_ = RightAngleSquarer::create(
         length_, transform == Transform::avx2 ? RightAngleSquarer::Simd::avx2 : RightAngleSquarer::Simd::best);
   wide_ = right_angle_ ? right_angle_->lanes() == 8 : transform != Transform::avx2;
-  if (right_angle_)
+  if (right_angle_) {
     right_angle_weights();
-  else
-    plans_ = real_fft_plans(length_);
+    return;
+  }
+  // FFTW's arrays, only where FFTW squares (ours works in its own).
+  input_ = fftw_alloc_real(length_);
+  output_ = fftw_alloc_real(length_);
+  spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
+  std::fill(input_, input_ + length_, 0.0);
+  plans_ = real_fft_plans(length_);
 }
 
 // The right-angle transform gives N (not L) times the square, times
@@ -234,6 +236,7 @@ void WeightedSquaring::right_angle_weights() {
 }
 
 WeightedSquaring::~WeightedSquaring() {
+  if (!input_) return;
   fftw_free(input_);
   fftw_free(output_);
   fftw_free(spectrum_);

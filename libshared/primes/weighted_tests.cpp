@@ -18,10 +18,9 @@ std::unique_ptr<WeightedSquaring> squarer_for(const Modulus& N, std::size_t from
   return WeightedSquaring::create(*N.form());
 }
 
-mpz_class reduced(const mpz_class& value, const Modulus& N) {
-  mpz_class r;
-  mpz_mod(r.get_mpz_t(), value.get_mpz_t(), N.value().get_mpz_t());
-  return r;
+mpz_class reduced(mpz_class value, const Modulus& N) {
+  N.reduce(value.get_mpz_t());
+  return value;
 }
 
 // Watches a chain of squares for one residue v mod N without leaving the
