@@ -752,8 +752,11 @@ prime"
 # killed: one gets a hex digit of its saved residue changed (trusted, it would
 # turn the prime into a composite), the other random bytes over all of it.
 @test "damaged checkpoints are reported and ignored: the proofs start again and give the right verdicts" {
-  printf '3*2^18819-1\n3*2^25690-1\n' > two.txt
-  riesel -j 2 --state st --checkpoint-every 0.1 two.txt > /dev/null 2>&1 3>&- &
+  # Two proofs of about half a second each on GMP's squares (LONG): both
+  # checkpoints stay for ~0.4 s (3*2^18819-1 took 0.23 s, and on a loaded
+  # sanitized run it finished between the poll and the kill).
+  printf '3*2^25690-1\n3*2^26459-1\n' > two.txt
+  riesel "${LONG[@]}" -j 2 --state st --checkpoint-every 0.1 two.txt > /dev/null 2>&1 3>&- &
   pid=$!
   tries=1200
   until [ "$(saved_checkpoints st | wc -l)" -eq 2 ]; do
@@ -775,7 +778,7 @@ open(path, "w").write("\n".join(lines))
 PY
   size=$(stat -c %s "${checkpoints[1]}")
   head -c "$size" /dev/urandom > "${checkpoints[1]}"
-  run --separate-stderr riesel -j 2 --state st two.txt
+  run --separate-stderr riesel "${LONG[@]}" -j 2 --state st two.txt
   assert_success
   echo "$output" > got.out
   # One warning per damaged file, naming it and the member started over.
@@ -785,8 +788,8 @@ PY
   assert_output "prime
 prime"
   run no_time < st/lresults.txt
-  assert_output "3*2^18819-1 is prime! (5666 decimal digits)
-3*2^25690-1 is prime! (7734 decimal digits)"
+  assert_output "3*2^25690-1 is prime! (7734 decimal digits)
+3*2^26459-1 is prime! (7966 decimal digits)"
 }
 
 # ------------------------------------------------------------ errors
