@@ -215,7 +215,10 @@ $csv"
 
 @test "every form's NewPGen, ABC, ABCD and CSV headers" {
   # form arguments | NewPGen shape | ABC expression | ABCD expression
+  row=0
   while IFS='|' read -r form shape abc abcd; do
+    # Sanitized: every third row (twin, a chain of three, riesel).
+    if sanitized && [ $((row++ % 3)) -ne 0 ]; then continue; fi
     run sieve $form --n 4 --k 1:2000 --pmax 1000 --newpgen
     assert_success
     assert_line --index 0 "1000:$shape"
@@ -334,6 +337,7 @@ TABLE
 }
 
 @test "shards run through GNU parallel merge to the single run" {
+  skip_volume_when_sanitized  # the merge itself runs sanitized in the tests above and below
   command -v parallel >/dev/null || skip "GNU parallel is not installed"
   dir=$BATS_TEST_TMPDIR
   parallel --will-cite sieve $SHARDED --newpgen --shard {}/3 '>' "$dir"/s{}.npg ::: 1 2 3 < /dev/null
@@ -411,11 +415,15 @@ TABLE
 
 @test "merge refuses a shard cut short, garbage, a damaged count, a duplicate or a missing shard, naming the file" {
   # The issue's case: a shard cut mid-line merged to a fraction of the survivors with exit 0.
-  for format in "" --csv --newpgen --abc --abcd; do
+  formats=("" --csv --newpgen --abc --abcd)
+  if sanitized; then formats=("" --abcd); fi
+  for format in "${formats[@]}"; do
     sieve $SHARDED $format > single.txt
     for i in 1 2 3; do sieve $SHARDED $format --shard $i/3 > s$i.txt; done
     size=$(wc -c < s2.txt)
-    for cut in 1 $((size / 3)) $((size / 2)) $((size - 30)) $((size - 2)); do
+    cuts=(1 $((size / 3)) $((size / 2)) $((size - 30)) $((size - 2)))
+    if sanitized; then cuts=($((size / 2)) $((size - 2))); fi
+    for cut in "${cuts[@]}"; do
       head -c "$cut" s2.txt > torn.txt
       run sieve merge s1.txt torn.txt s3.txt
       assert_failure 1
@@ -459,7 +467,9 @@ TABLE
   need_gp
   [ "$(gp_lines 'print((1962*2^1000 - 1) % 1696571)')" = 0 ]
   args="twin --n 1000 --k 1962:1962 --pmax 5e7"
-  for format in "" --newpgen --abc --abcd; do
+  formats=("" --newpgen --abc --abcd)
+  if sanitized; then formats=("" --abcd); fi
+  for format in "${formats[@]}"; do
     for i in 1 2 3; do sieve $args $format --shard $i/3 > e$i.txt; done
     sieve $args $format > single.txt
     run sieve merge e1.txt e2.txt e3.txt

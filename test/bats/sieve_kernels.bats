@@ -17,6 +17,9 @@ load test_helper
       [ "$output" = "$ref" ]
     done
   done
+  # Sieving to 2^32 takes ~20 s of CPU per run under the sanitizers: the
+  # release pass runs it.
+  if sanitized; then return; fi
   big_ref=$(TOOLKIT_SIEVE_KERNEL=scalar sieve riesel --n 1000 --k 1:10 --pmax 4294967296)
   run sieve riesel --n 1000 --k 1:10 --pmax 4294967296
   assert_success

@@ -55,6 +55,10 @@ skip_volume_when_sanitized() {
   if [ -n "${TOOLKIT_SANITIZED:-}" ]; then skip "volume test, run in the release pass"; fi
 }
 
+# sanitized: true in the sanitizer pass, where a test that repeats one check
+# over every format or case runs a share of them (the release pass runs all).
+sanitized() { [ -n "${TOOLKIT_SANITIZED:-}" ]; }
+
 py() { /usr/bin/python3 -c "$@"; }
 
 # check 'PYTHON ASSERTIONS' < records: rows = the JSON Lines records as dicts,

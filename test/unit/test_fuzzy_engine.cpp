@@ -13,6 +13,7 @@
 #include "fuzzy/line_follower.hpp"
 #include "fuzzy/mamdani.hpp"
 #include "io/error.hpp"
+#include "test_volume.hpp"
 
 namespace tk::fuzzy {
 namespace {
@@ -110,7 +111,7 @@ TEST(FuzzyCentroid, DiscreteIsFuzzyliteMidpointRule) {
 TEST(FuzzyCentroid, ExactAgreesWithDenseIntegration) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 200; ++trial) {
+  for (int trial = 0, trials = test_volume(200, 30); trial < trials; ++trial) {
     std::vector<ImpliedTerm> terms;
     for (int k = 0, n = 1 + trial % 5; k < n; ++k) {
       double v[4];
@@ -149,7 +150,7 @@ TEST(FuzzyCentroid, ExactWithVerticalEdgesAndEqualTerms) {
   // terms, against a dense midpoint sum (O(h) near a step: looser bound).
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 120; ++trial) {
+  for (int trial = 0, trials = test_volume(120, 60); trial < trials; ++trial) {
     std::vector<ImpliedTerm> terms;
     for (int k = 0, n = 2 + trial % 2; k < n; ++k) {
       double v[4];
