@@ -3,6 +3,7 @@
 
 // GCC 12 warns inside its own AVX-512 intrinsics (their _mm512_undefined).
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 #include <immintrin.h>
 
 #include <cmath>
@@ -95,6 +96,18 @@ struct Balancer {
   }
 };
 
+// The top digits hold only what carries in (`up`); the last takes what is
+// left, unbalanced.
+__attribute__((always_inline)) inline void balance_top(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits,
+                                                       std::size_t low_digits, std::size_t digits, std::int64_t up) {
+  const Balancer balancer{digit, bits};
+  for (std::size_t j = low_digits; j + 1 < digits; ++j) {
+    digit[j] = 0;
+    up = balancer.step(j, up);
+  }
+  digit[digits - 1] = up;
+}
+
 // The low digits carry in kChains independent chains over as many
 // stretches, interleaved (one chain is bound by its add-and-shift
 // latency); each chain's last carry is then absorbed at the start of the
@@ -114,12 +127,7 @@ __attribute__((always_inline)) inline void balance(std::int64_t* __restrict digi
     const std::size_t end = c + 1 < kChains ? (c + 1) * stretch : low_digits;
     carry[c] += balancer.absorb(c * stretch, end, carry[c - 1]);
   }
-  std::int64_t up = carry[kChains - 1] + top;
-  for (std::size_t j = low_digits; j + 1 < digits; ++j) {  // the top digits hold only what carries in
-    digit[j] = 0;
-    up = balancer.step(j, up);
-  }
-  digit[digits - 1] = up;  // the last takes what is left, unbalanced
+  balance_top(digit, bits, low_digits, digits, carry[kChains - 1] + top);
 }
 
 __attribute__((always_inline)) inline void weigh(const FoldTarget& target, std::size_t digits) {
@@ -133,26 +141,23 @@ __attribute__((always_inline)) inline void weigh(const FoldTarget& target, std::
   for (std::size_t j = 0; j < digits; ++j) im[j] = static_cast<double>(digit[j]) * im_weight[j];
 }
 
-// join_quotient eight digits at a time: the two limbs each digit's bits
-// span gathered, shifted and masked in lanes (the scalar loop spends about
-// fifteen instructions a digit on it).
+// join_quotient eight digits at a time: each digit's bits (s <= 56) lie
+// in the eight bytes from byte e_j / 8 on, one gather (scale 1) then a
+// shift by e_j mod 8 and a mask (the scalar loop spends about fifteen
+// instructions a digit on it; two gathers of whole limbs took twice as long).
 template <bool kAdd>
 __attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void join_quotient_avx512(
     const std::int64_t* __restrict low, const mp_limb_t* __restrict q, const std::uint8_t* __restrict bits,
     const std::uint64_t* __restrict exponent, std::int64_t* __restrict joined, std::size_t low_digits) {
-  const __m512i one = _mm512_set1_epi64(1), sixty_three = _mm512_set1_epi64(63), sixty_four = _mm512_set1_epi64(64);
-  const auto* limbs = reinterpret_cast<const long long*>(q);
+  const __m512i one = _mm512_set1_epi64(1), seven = _mm512_set1_epi64(7);
+  const auto* bytes = reinterpret_cast<const char*>(q);
   std::size_t j = 0;
   for (; j + 8 <= low_digits; j += 8) {
     const __m512i e = _mm512_loadu_si512(exponent + j);
-    const __m512i at = _mm512_srli_epi64(e, 6);
-    const __m512i shift = _mm512_and_si512(e, sixty_three);
-    const __m512i below = _mm512_i64gather_epi64(at, limbs, 8);
-    const __m512i above = _mm512_i64gather_epi64(_mm512_add_epi64(at, one), limbs, 8);
-    // a shift by 64 gives 0 in these instructions, as a shift of 0 needs
-    const __m512i word = _mm512_or_si512(_mm512_srlv_epi64(below, shift), _mm512_sllv_epi64(above, _mm512_sub_epi64(sixty_four, shift)));
+    const __m512i word = _mm512_i64gather_epi64(_mm512_srli_epi64(e, 3), bytes, 1);
     const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits + j)));
-    const __m512i quotient = _mm512_and_si512(word, _mm512_sub_epi64(_mm512_sllv_epi64(one, size), one));
+    const __m512i mask = _mm512_sub_epi64(_mm512_sllv_epi64(one, size), one);
+    const __m512i quotient = _mm512_and_si512(_mm512_srlv_epi64(word, _mm512_and_si512(e, seven)), mask);
     const __m512i coefficient = _mm512_loadu_si512(low + j);
     _mm512_storeu_si512(joined + j, kAdd ? _mm512_add_epi64(coefficient, quotient) : _mm512_sub_epi64(coefficient, quotient));
   }
@@ -162,16 +167,61 @@ __attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void join_quo
   }
 }
 
+// The low digits balanced in lanes, eight at a time, by passes that each
+// move every digit's excess over [-2^(s-1), 2^(s-1)) one digit up at once
+// (the carry a digit takes in is what its neighbour gave off before this
+// pass). Each pass divides the excess by about 2^s; passes run until no
+// carry exceeds 1, so a digit ends within one of balanced (2^51 to 1 in
+// three passes at s = 17), which costs the transform nothing, while the
+// scalar chain is bound by its add-and-shift latency. The value is the
+// same; returns the carry out of the last low digit.
+__attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) std::int64_t balance_lanes(
+    std::int64_t* __restrict digit, const std::uint8_t* __restrict bits, std::size_t low_digits) {
+  const __m512i one = _mm512_set1_epi64(1);
+  const std::size_t whole = low_digits / 8 * 8;
+  std::int64_t carried_out = 0;
+  for (int pass = 0; pass < 64; ++pass) {
+    __m512i before = _mm512_setzero_si512(), largest = _mm512_setzero_si512();
+    for (std::size_t j = 0; j < whole; j += 8) {
+      const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits + j)));
+      const __m512i half = _mm512_sllv_epi64(one, _mm512_sub_epi64(size, one));
+      const __m512i total = _mm512_add_epi64(_mm512_loadu_si512(digit + j), half);
+      const __m512i up = _mm512_srav_epi64(total, size);
+      const __m512i kept = _mm512_sub_epi64(_mm512_sub_epi64(total, _mm512_sllv_epi64(up, size)), half);
+      // lane i takes lane i-1's carry; lane 0 the previous vector's last
+      _mm512_storeu_si512(digit + j, _mm512_add_epi64(kept, _mm512_alignr_epi64(up, before, 7)));
+      largest = _mm512_max_epi64(largest, _mm512_abs_epi64(up));
+      before = up;
+    }
+    std::int64_t carry = whole > 0 ? static_cast<std::int64_t>(_mm512_mask_reduce_max_epi64(0x80, before)) : 0;
+    std::int64_t tail_largest = 0;
+    for (std::size_t j = whole; j < low_digits; ++j) {
+      const unsigned s = bits[j];
+      const std::int64_t total = digit[j] + (std::int64_t{1} << (s - 1));
+      const std::int64_t up = total >> s;
+      digit[j] = total - (up << s) - (std::int64_t{1} << (s - 1)) + carry;
+      tail_largest = std::max(tail_largest, up < 0 ? -up : up);
+      carry = up;
+    }
+    carried_out += carry;
+    if (std::max(static_cast<std::int64_t>(_mm512_reduce_max_epi64(largest)), tail_largest) <= 1) break;
+  }
+  return carried_out;
+}
+
 template <bool kAdd, bool kGather>
 __attribute__((always_inline)) inline void fold_body(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits,
                                                      const std::uint64_t* exponent, const FoldTarget& target,
                                                      std::size_t low_digits, std::size_t digits, std::int64_t bottom,
                                                      std::int64_t top) {
-  if constexpr (kGather)
+  if constexpr (kGather) {
     join_quotient_avx512<kAdd>(low, q, bits, exponent, target.digits, low_digits);
-  else
+    target.digits[0] += bottom;
+    balance_top(target.digits, bits, low_digits, digits, balance_lanes(target.digits, bits, low_digits) + top);
+  } else {
     join_quotient<kAdd>(low, q, bits, exponent, target.digits, low_digits);
-  balance(target.digits, bits, low_digits, digits, bottom, top);
+    balance(target.digits, bits, low_digits, digits, bottom, top);
+  }
   weigh(target, digits);
 }
 
