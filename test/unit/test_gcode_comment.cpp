@@ -6,7 +6,7 @@
 #include <string>
 
 #include "motion/gcode.hpp"
-#include "motion/gcode_comment.hpp"
+#include "motion/gcode_writer.hpp"
 
 using tk::motion::gcode_comment;
 using tk::motion::kMaxCommentBytes;
