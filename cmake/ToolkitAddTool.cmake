@@ -27,7 +27,7 @@ add_custom_target(toolkit_tools)
 function(toolkit_add_tool name)
   add_executable(${name} ${PROJECT_SOURCE_DIR}/tools/${name}/main.cpp)
   add_dependencies(toolkit_tools ${name})
-  target_link_libraries(${name} PRIVATE toolkit_shared toolkit_flags)
+  target_link_libraries(${name} PRIVATE toolkit_shared toolkit_flags fmt::fmt)  # the mains format with fmt
   toolkit_compile_as_wiring(${name})
   install(TARGETS ${name} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
   # The committed page, gzipped without a timestamp as Debian installs man pages.

@@ -5,34 +5,16 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <numbers>
 
 #include "cad/segment_geometry.hpp"
 #include "io/error.hpp"
-#include "motion/gcode_comment.hpp"
+#include "motion/gcode_writer.hpp"
 
 namespace tk::cad {
 namespace {
 
-/// Six decimals, without "-0.000000".
-std::string mm(double value) {
-  std::string text = fmt::format("{:.6f}", value);
-  if (text == "-0.000000") text = "0.000000";
-  return text;
-}
-
-/// A coordinate as written and as a control reads it back.
-struct Printed {
-  std::string text;
-  double value;
-};
-
-Printed printed(double value) {
-  std::string text = mm(value);
-  const double read_back = std::strtod(text.c_str(), nullptr);
-  return {std::move(text), read_back};
-}
+using motion::PrintedNumber;
 
 /// Half of the printed micrometre: an arc whose chord stays this close to it
 /// is as well served by a line.
@@ -69,30 +51,31 @@ std::string toolpath_gcode(const std::vector<Loop>& loops, const ToolpathOptions
   if (!(options.feed > 0) || !(options.plunge_feed > 0) || !std::isfinite(options.feed) || !std::isfinite(options.plunge_feed))
     throw Error("toolpath: feeds must be positive and finite");
   if (!(options.safe_z > options.cut_z)) throw Error("toolpath: the safe height must be above the cut depth");
-  std::string out;
-  if (!options.title.empty()) out += motion::gcode_comment(options.title) + "\n";
-  out += "G21 G90 G91.1 G17 G94 " + motion::gcode_comment("mm, absolute, incremental arc centres, XY plane, feed per minute") + "\n";
-  out += "G0 Z" + mm(options.safe_z) + "\n";
+  motion::GcodeWriter out(motion::kFixedMicrons);
+  const auto mm = [&](double value) { return out.number(value); };
+  if (!options.title.empty()) out.comment(options.title);
+  out.line("G21 G90 G91.1 G17 G94", "mm, absolute, incremental arc centres, XY plane, feed per minute");
+  out.line("G0 Z" + mm(options.safe_z));
   for (std::size_t i = 0; i < loops.size(); ++i) {
     std::vector<Segment> path = loops[i].segments;
     if (path.empty()) continue;
     // The loops have the region (material) on their left: climb milling goes the other way round.
     if (options.climb) reverse_chain(path);
-    out += motion::gcode_comment(fmt::format("loop {}{}", i, loops[i].is_hole() ? ", a hole" : "")) + "\n";
-    Printed x = printed(path.front().start.x), y = printed(path.front().start.y);
-    out += "G0 X" + x.text + " Y" + y.text + "\n";
-    out += "G1 Z" + mm(options.cut_z) + " F" + mm(options.plunge_feed) + "\n";
+    out.comment(fmt::format("loop {}{}", i, loops[i].is_hole() ? ", a hole" : ""));
+    PrintedNumber x = out.printed(path.front().start.x), y = out.printed(path.front().start.y);
+    out.line("G0 X" + x.text + " Y" + y.text);
+    out.line("G1 Z" + mm(options.cut_z) + " F" + mm(options.plunge_feed));
     bool feed_set = false;
     for (const Segment& s : path) {
       // Everything from the position as printed, so that each piece starts
       // where the control stands.
       const Point from{x.value, y.value};
-      const Printed end_x = printed(s.end.x), end_y = printed(s.end.y);
+      const PrintedNumber end_x = out.printed(s.end.x), end_y = out.printed(s.end.y);
       if (end_x.text == x.text && end_y.text == y.text) continue;  // no motion at the printed resolution
       std::string line;
       if (is_arc(s)) {
         const ArcShape arc = arc_shape(s);
-        const Printed i_word = printed(arc.centre.x - from.x), j_word = printed(arc.centre.y - from.y);
+        const PrintedNumber i_word = out.printed(arc.centre.x - from.x), j_word = out.printed(arc.centre.y - from.y);
         const Point centre{from.x + i_word.value, from.y + j_word.value};
         if (!write_as_line(s, from, {end_x.value, end_y.value}, centre))
           line = (arc.sweep > 0 ? "G3 X" : "G2 X") + end_x.text + " Y" + end_y.text + " I" + i_word.text + " J" + j_word.text;
@@ -100,14 +83,14 @@ std::string toolpath_gcode(const std::vector<Loop>& loops, const ToolpathOptions
       if (line.empty()) line = "G1 X" + end_x.text + " Y" + end_y.text;
       if (!feed_set) line += " F" + mm(options.feed);
       feed_set = true;
-      out += line + "\n";
+      out.line(line);
       x = end_x;
       y = end_y;
     }
-    out += "G0 Z" + mm(options.safe_z) + "\n";
+    out.line("G0 Z" + mm(options.safe_z));
   }
-  out += "M2\n";
-  return out;
+  out.line("M2");
+  return out.text();
 }
 
 }  // namespace tk::cad

@@ -27,7 +27,7 @@ struct ToolpathOptions {
 /// printed micrometre, or whose sweep from the printed numbers is under
 /// 1e-5 rad (LinuxCNC cuts a whole circle under 1e-6), is written as a G1 to
 /// its end; a piece that does not move at the printed resolution is left
-/// out. Comments go through motion::gcode_comment.
+/// out. Written through motion::GcodeWriter (kFixedMicrons).
 std::string toolpath_gcode(const std::vector<Loop>& loops, const ToolpathOptions& options);
 
 }  // namespace tk::cad

@@ -5,7 +5,7 @@
 #include "io/text.hpp"
 #include "primes/candidate.hpp"
 #include "primes/number_expression.hpp"
-#include "primes/prime_text_formats.hpp"
+#include "primes/candidate_formats.hpp"
 
 namespace tk::primes {
 
@@ -26,7 +26,7 @@ bool NumberLineDecoder::decode(std::string_view line, const Location& where, Rec
 
 io::NativeFormatProbe candidate_format_probe(std::size_t max_bits) {
   return [max_bits](std::string_view first_line) -> std::unique_ptr<io::LineDecoder> {
-    if (auto decoder = probe_prime_text_format(first_line, max_bits)) return decoder;
+    if (auto decoder = probe_candidate_format(first_line, max_bits)) return decoder;
     const std::string_view text = trim(first_line);
     // A CSV header must name the fields candidate_from_record reads;
     // anything else is a number line, and a bad one says so at line 1.

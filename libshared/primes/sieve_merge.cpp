@@ -9,23 +9,24 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 #include <optional>
 #include <string_view>
 #include <unordered_map>
 
 #include "io/error.hpp"
 #include "io/input_file.hpp"
+#include "primes/candidate_formats.hpp"
 #include "primes/sieve_output.hpp"
 
 namespace tk::primes {
 
 namespace {
 
-enum class TextKind { json_lines, csv, newpgen, abc, abcd };
+enum class TextKind { json_lines, csv, candidates };
 
 struct ShardFile {
   TextKind kind = TextKind::json_lines;
+  CandidateHeader header = CandidateHeader::none;  ///< NewPGen, ABC or ABCD when kind is candidates
   std::string header_key;               ///< the header without its depth
   std::optional<std::uint64_t> depth;   ///< sieve bound the header records
   std::vector<std::string> lines;       ///< candidate lines (ABCD: k values in decimal)
@@ -33,21 +34,6 @@ struct ShardFile {
   Location trailer_at;
 };
 
-
-std::uint64_t parse_depth(std::string_view text, const Location& where) {
-  std::uint64_t value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) throw Error("the sieve depth '" + std::string(text) + "' is not a number", where);
-  return value;
-}
-
-/// Splits "... // Sieved to D" into the text before it and D.
-void split_sieved_to(std::string_view header, ShardFile& shard, const Location& where) {
-  const auto mark = header.rfind(" // Sieved to ");
-  if (mark == std::string_view::npos) throw Error("abc header without '// Sieved to': not written by sieve", where);
-  shard.header_key = std::string(header.substr(0, mark));
-  shard.depth = parse_depth(header.substr(mark + 14), where);
-}
 
 ShardFile read_shard(const std::string& path) {
   io::InputFile input(path);
@@ -70,26 +56,15 @@ ShardFile read_shard(const std::string& path) {
       first = false;
       if (line.front() == '{') {
         shard.kind = TextKind::json_lines;
-      } else if (line.starts_with("ABCD ")) {
-        shard.kind = TextKind::abcd;
-        split_sieved_to(line, shard, where);
-        const auto open = shard.header_key.rfind(" ["), close = shard.header_key.rfind(']');
-        if (open == std::string::npos || close == std::string::npos || close < open)
-          throw Error("abcd header without a [k] start value", where);
-        previous_k = parse_depth(std::string_view(shard.header_key).substr(open + 2, close - open - 2), where);
-        if (close + 1 != shard.header_key.size()) throw Error("abcd header has text after its [k] start value", where);
-        shard.lines.push_back(std::to_string(*previous_k));
-        shard.header_key.erase(open);
-        continue;
-      } else if (line.starts_with("ABC ")) {
-        shard.kind = TextKind::abc;
-        split_sieved_to(line, shard, where);
-        continue;
-      } else if (const auto colon = line.find(':'); colon != std::string_view::npos && colon > 0 &&
-                 line.substr(0, colon).find_first_not_of("0123456789") == std::string_view::npos) {
-        shard.kind = TextKind::newpgen;
-        shard.depth = parse_depth(line.substr(0, colon), where);
-        shard.header_key = std::string(line.substr(colon + 1));
+      } else if (const SieveHeader header = parse_sieve_header(line, where); header.kind != CandidateHeader::none) {
+        shard.kind = TextKind::candidates;
+        shard.header = header.kind;
+        shard.header_key = header.key;
+        shard.depth = header.depth;
+        if (shard.header == CandidateHeader::abcd) {
+          previous_k = header.abcd_start;
+          shard.lines.push_back(std::to_string(*previous_k));
+        }
         continue;
       } else {
         shard.kind = TextKind::csv;
@@ -97,8 +72,8 @@ ShardFile read_shard(const std::string& path) {
         continue;
       }
     }
-    if (shard.kind == TextKind::abcd) {
-      const std::uint64_t delta = parse_depth(line, where);
+    if (shard.header == CandidateHeader::abcd) {
+      const std::uint64_t delta = parse_abcd_difference(line, where);
       if (delta == 0 || *previous_k + delta < *previous_k) throw Error("abcd difference must be positive and keep k below 2^64", where);
       previous_k = *previous_k + delta;
       shard.lines.push_back(std::to_string(*previous_k));
@@ -158,7 +133,7 @@ void merge_sieve_outputs(const std::vector<std::string>& files, std::FILE* out) 
   std::unordered_map<std::string_view, std::size_t> seen;
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const ShardFile& shard = shards[i];
-    if (has_content(shard) && (shard.kind != model->kind || shard.header_key != model->header_key))
+    if (has_content(shard) && (shard.kind != model->kind || shard.header != model->header || shard.header_key != model->header_key))
       throw Error("its header does not match " + model_path + "'s: not a shard of the same run", Location{files[i], 1});
     if (shard.depth) depth = depth ? std::min(*depth, *shard.depth) : *shard.depth;
     for (const std::string& line : shard.lines) {
@@ -169,24 +144,27 @@ void merge_sieve_outputs(const std::vector<std::string>& files, std::FILE* out) 
 
   fmt::memory_buffer buffer;
   auto kept = [&](const std::string& line) { return seen[line] == shards.size(); };
+  auto write_header = [&](std::uint64_t abcd_start) {
+    fmt::format_to(std::back_inserter(buffer), "{}\n", sieve_header_line({model->header, model->header_key, *depth, abcd_start}));
+  };
   switch (model->kind) {
     case TextKind::json_lines: break;
     case TextKind::csv:  // one run writes no header row when nothing survives
       if (std::any_of(model->lines.begin(), model->lines.end(), kept))
         fmt::format_to(std::back_inserter(buffer), "{}\n", model->header_key);
       break;
-    case TextKind::newpgen: fmt::format_to(std::back_inserter(buffer), "{}:{}\n", *depth, model->header_key); break;
-    case TextKind::abc: fmt::format_to(std::back_inserter(buffer), "{} // Sieved to {}\n", model->header_key, *depth); break;
-    case TextKind::abcd: break;
+    case TextKind::candidates:  // ABCD's header holds its first k
+      if (model->header != CandidateHeader::abcd) write_header(0);
+      break;
   }
   std::optional<std::uint64_t> previous;
   for (const std::string& line : model->lines) {
     if (!kept(line)) continue;
-    if (model->kind != TextKind::abcd) {
+    if (model->header != CandidateHeader::abcd) {
       fmt::format_to(std::back_inserter(buffer), "{}\n", line);
     } else {
       const std::uint64_t k = std::stoull(line);
-      if (!previous) fmt::format_to(std::back_inserter(buffer), "{} [{}] // Sieved to {}\n", model->header_key, k, *depth);
+      if (!previous) write_header(k);
       else fmt::format_to(std::back_inserter(buffer), "{}\n", k - *previous);
       previous = k;
     }

@@ -11,6 +11,7 @@
 #include "io/error.hpp"
 #include "io/input_file.hpp"
 #include "io/record_writer.hpp"
+#include "primes/candidate_formats.hpp"
 
 namespace tk::primes {
 
@@ -24,39 +25,6 @@ constexpr std::uint64_t kMaxShards = 1000000;             // as --shard allows
 Record integer_field(std::uint64_t value) {
   return value < kMaxJsonInteger ? Record(value) : Record(std::to_string(value));
 }
-
-/// The NewPGen header after "depth:".
-std::string newpgen_shape(const SieveSpec& spec) {
-  switch (spec.form) {
-    case SieveForm::riesel: return "M:1:2:2";
-    case SieveForm::proth: return "P:1:2:1";
-    case SieveForm::twin: return "T:0:2:3";
-    case SieveForm::sg: return "S:0:2:10";
-    case SieveForm::cc1: return spec.length == 2 ? "S:0:2:10" : fmt::format("1:{}:2:1066", spec.length);
-    case SieveForm::cc2: return spec.length == 2 ? "C:0:2:5" : fmt::format("2:{}:2:1045", spec.length);
-  }
-  return {};
-}
-
-/// The ABC/ABCD expression; single forms in ABC keep n as $b.
-std::string abc_expression(const SieveSpec& spec, bool n_as_variable) {
-  const std::uint64_t n = spec.n;
-  switch (spec.form) {
-    case SieveForm::riesel: return n_as_variable ? "$a*2^$b-1" : fmt::format("$a*2^{}-1", n);
-    case SieveForm::proth: return n_as_variable ? "$a*2^$b+1" : fmt::format("$a*2^{}+1", n);
-    case SieveForm::twin: return fmt::format("$a*2^{0}+1 & $a*2^{0}-1", n);
-    case SieveForm::sg: return fmt::format("$a*2^{0}-1 & 2*($a*2^{0}-1)+1", n);
-    case SieveForm::cc1:
-    case SieveForm::cc2: {
-      std::string text;
-      for (const SieveMember& member : spec.members())
-        text += fmt::format("{}$a*2^{}{}", text.empty() ? "" : " & ", n + member.exponent_offset, member.c < 0 ? "-1" : "+1");
-      return text;
-    }
-  }
-  return {};
-}
-
 
 void write_text_survivors(const GeneralizedSieve& sieve, SieveOutputFormat format, std::uint64_t depth, std::FILE* out);
 
@@ -144,14 +112,18 @@ void write_text_survivors(const GeneralizedSieve& sieve, SieveOutputFormat forma
     buffer.clear();
   };
   const bool single = spec.form == SieveForm::riesel || spec.form == SieveForm::proth;
+  auto header = [&](CandidateHeader kind, std::uint64_t abcd_start) {
+    fmt::format_to(std::back_inserter(buffer), "{}\n",
+                   sieve_header_line({kind, sieve_header_key(spec, kind), depth, abcd_start}));
+  };
   if (format == SieveOutputFormat::newpgen) {
-    fmt::format_to(std::back_inserter(buffer), "{}:{}\n", depth, newpgen_shape(spec));
+    header(CandidateHeader::newpgen, 0);
     sieve.for_each_survivor([&](std::uint64_t offset) {
       fmt::format_to(std::back_inserter(buffer), "{} {}\n", spec.k_at(spec.x_min + offset), spec.n);
       flush_if_full();
     });
   } else if (format == SieveOutputFormat::abc) {
-    fmt::format_to(std::back_inserter(buffer), "ABC {} // Sieved to {}\n", abc_expression(spec, single), depth);
+    header(CandidateHeader::abc, 0);
     sieve.for_each_survivor([&](std::uint64_t offset) {
       if (single) fmt::format_to(std::back_inserter(buffer), "{} {}\n", spec.k_at(spec.x_min + offset), spec.n);
       else fmt::format_to(std::back_inserter(buffer), "{}\n", spec.k_at(spec.x_min + offset));
@@ -162,7 +134,7 @@ void write_text_survivors(const GeneralizedSieve& sieve, SieveOutputFormat forma
     sieve.for_each_survivor([&](std::uint64_t offset) {
       const std::uint64_t k = spec.k_at(spec.x_min + offset);
       if (!previous)
-        fmt::format_to(std::back_inserter(buffer), "ABCD {} [{}] // Sieved to {}\n", abc_expression(spec, false), k, depth);
+        header(CandidateHeader::abcd, k);
       else
         fmt::format_to(std::back_inserter(buffer), "{}\n", k - *previous);
       previous = k;

@@ -3,11 +3,8 @@
 /// tools read, the factors file, and the merge of shard outputs.
 ///
 /// - JSON Lines / CSV records: k, n, form (+ length for chains, x when k = h0 + c*x).
-/// - NewPGen: "depth:letter:chain:2:mask" then "k n" lines (T/3 twin, M/2
-///   riesel, P/1 proth, S/10 Sophie Germain, C/5 second-kind pair, and
-///   1/1066 and 2/1045 with the chain length for longer chains).
-/// - ABC: "ABC expr // Sieved to depth"; '&' joins a form's members.
-/// - ABCD: "ABCD expr [k0] // Sieved to depth", then differences of k.
+/// - NewPGen, ABC, ABCD: headers as candidate_formats.hpp writes them,
+///   then one line per k ("k n", "k" or "k n", differences of k).
 /// - Factors: "p | k*2^e+c", one line per removal.
 /// - A --shard K/N run (N > 1) ends its output, in any format, with the
 ///   trailer "// sieve shard K/N of <candidates identity>: S candidates,

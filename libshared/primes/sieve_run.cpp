@@ -117,7 +117,7 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
   SieveRunOutcome outcome;
   // Workers ask should_stop in the middle of a block, while the calling thread sets this.
   std::atomic<bool> rate_stopped{false};
-  cli::Progress progress("sieve", options.progress);
+  cli::Progress progress(options.tool_name, options.progress);
   const auto started = Clock::now();
   auto last_save = started, window_start = started, shown_start = started;
   std::uint64_t window_survivors = sieve.survivors(), shown_survivors = sieve.survivors();

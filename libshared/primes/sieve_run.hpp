@@ -14,6 +14,7 @@
 namespace tk::primes {
 
 struct SieveRunOptions {
+  std::string tool_name;        ///< the caller's name, which progress lines start with
   unsigned threads = 1;
   unsigned shard_index = 0, shard_count = 1;
   std::string factors_path;     ///< empty: no factors file

@@ -7,24 +7,13 @@
 #include <numbers>
 
 #include "io/error.hpp"
-#include "motion/gcode_comment.hpp"
+#include "motion/gcode_writer.hpp"
 
 namespace tk::threads {
 namespace {
 
-using motion::gcode_comment;
-
-/// A comment on a line of its own.
-std::string comment_line(std::string_view text) { return gcode_comment(text) + "\n"; }
-
 /// A coordinate to 0.1 µm without trailing zeros, as controls read them.
-std::string number(double value) {
-  if (std::abs(value) < 5e-5) value = 0;
-  std::string text = fmt::format("{:.4f}", value);
-  while (text.back() == '0') text.pop_back();
-  if (text.back() == '.') text.pop_back();
-  return text;
-}
+std::string number(double value) { return motion::gcode_number(value, motion::kTrimmedTenthMicrons); }
 
 /// To the 0.1 µm that number() prints: nearest, and up.
 double round_to_tenth_micron(double value) { return std::round(value * 1e4) / 1e4; }
@@ -60,18 +49,16 @@ Geometry geometry(const TurningPlan& plan, const ProgramSettings& s) {
   return g;
 }
 
-std::string header(const TurningPlan& plan, const ProgramSettings& s, const char* style) {
-  std::string out;
-  out += comment_line(fmt::format("threadcalc: {} {}, {} program", s.title, plan.external ? "external" : "internal", style));
-  out += comment_line(fmt::format("ap {} mm from the peak diameter {}; pitch diameter aimed at {}; {} passes, {} infeed",
+void header(motion::GcodeWriter& out, const TurningPlan& plan, const ProgramSettings& s, const char* style) {
+  out.comment(fmt::format("threadcalc: {} {}, {} program", s.title, plan.external ? "external" : "internal", style));
+  out.comment(fmt::format("ap {} mm from the peak diameter {}; pitch diameter aimed at {}; {} passes, {} infeed",
                      number(plan.ap), number(plan.peak_diameter), number(plan.target_pitch_diameter), plan.passes,
                      plan.infeed == Infeed::flank ? fmt::format("{}-degree flank", number(plan.infeed_angle_deg))
                                                   : std::string("radial")));
-  out += comment_line(fmt::format("{} before threading: {}; chamfer {} x 45 degrees", plan.external ? "turn" : "bore",
-                     number(plan.blank_diameter), number(plan.chamfer)));
-  out += "G18 G21 G90 G94 G7 " + comment_line("XZ plane, mm, absolute, X as a diameter");
-  out += fmt::format("S{} M3\n", number(std::round(s.rpm)));
-  return out;
+  out.comment(fmt::format("{} before threading: {}; chamfer {} x 45 degrees", plan.external ? "turn" : "bore",
+                          number(plan.blank_diameter), number(plan.chamfer)));
+  out.line("G18 G21 G90 G94 G7", "XZ plane, mm, absolute, X as a diameter");
+  out.line(fmt::format("S{} M3", number(std::round(s.rpm))));
 }
 
 /// Diameter at a radial depth below (external) or above (internal) the peak.
@@ -111,45 +98,47 @@ std::string thread_program(ProgramStyle style, const TurningPlan& plan, const Pr
   validate(s);
   const Geometry g = geometry(plan, s);
   const double tan_angle = std::tan(plan.infeed_angle_deg * std::numbers::pi / 180);
-  std::string out = header(plan, s, style == ProgramStyle::g76 ? "G76" : "G33 passes");
+  motion::GcodeWriter out(motion::kTrimmedTenthMicrons);
+  header(out, plan, s, style == ProgramStyle::g76 ? "G76" : "G33 passes");
   if (style == ProgramStyle::g76)
-    out += comment_line("G76 cuts at ap*sqrt[i/n]: the plan's count and final depth, not its light first pass");
+    out.comment("G76 cuts at ap*sqrt[i/n]: the plan's count and final depth, not its light first pass");
   if (s.left_hand)
-    out += comment_line(fmt::format("left hand: starts {} mm beyond the thread's inner end, in a groove at least that wide",
+    out.comment(fmt::format("left hand: starts {} mm beyond the thread's inner end, in a groove at least that wide",
                                     number(g.safe_z + plan.ap * tan_angle)));
-  out += comment_line(fmt::format("the Z axis takes {} mm to reach P*S and as much to stop: the thread's end needs that undercut",
+  out.comment(fmt::format("the Z axis takes {} mm to reach P*S and as much to stop: the thread's end needs that undercut",
                                   number(synchronisation_distance(s))));
   // To the safe Z first, then onto the drive line, then along it: never a
   // diagonal rapid through the face or into the bore.
-  out += fmt::format("G0 Z{}\n", number(g.safe_z));
-  out += fmt::format("G0 X{}\n", number(g.drive_x));
+  out.line(fmt::format("G0 Z{}", number(g.safe_z)));
+  out.line(fmt::format("G0 X{}", number(g.drive_x)));
   if (style == ProgramStyle::g76) {
-    if (g.z_start != g.safe_z) out += fmt::format("G0 Z{}\n", number(g.z_start));
+    if (g.z_start != g.safe_z) out.line(fmt::format("G0 Z{}", number(g.z_start)));
     // G7: I, J and K are diameters. J from K as printed, so J·√n reaches it.
     const double k = round_to_tenth_micron(2 * plan.ap);
     const double j = round_up_to_tenth_micron(k / std::sqrt(static_cast<double>(plan.passes)));
-    out += fmt::format("G76 P{} Z{} I{} J{} K{} R2 Q{} H{} E0 L0\n", number(s.pitch_mm), number(g.z_end),
-                       number(plan.peak_diameter - g.drive_x), number(j), number(k), number(plan.infeed_angle_deg),
-                       plan.spring_passes);
+    out.line(fmt::format("G76 P{} Z{} I{} J{} K{} R2 Q{} H{} E0 L0", number(s.pitch_mm), number(g.z_end),
+                         number(plan.peak_diameter - g.drive_x), number(j), number(k), number(plan.infeed_angle_deg),
+                         plan.spring_passes));
   } else {
     const auto cut = [&](double depth, const std::string& note) {
       // Flank infeed: the pass moves along Z by depth·tan(angle), so the
       // trailing flank stays on the last cut and only the leading edge cuts;
       // the full-depth pass ends exactly at the thread's end, as G76's does.
       const double shift = g.direction * (depth - plan.ap) * tan_angle;
-      out += fmt::format("G0 Z{}\n", number(g.z_start + shift));
-      out += fmt::format("G0 X{} ", number(pass_diameter(plan, depth))) + comment_line(note);
-      out += fmt::format("G33 Z{} K{}\n", number(g.z_end + shift), number(s.pitch_mm));
-      out += fmt::format("G0 X{}\n", number(g.drive_x));
+      out.line(fmt::format("G0 Z{}", number(g.z_start + shift)));
+      out.line(fmt::format("G0 X{}", number(pass_diameter(plan, depth))), note);
+      out.line(fmt::format("G33 Z{} K{}", number(g.z_end + shift), number(s.pitch_mm)));
+      out.line(fmt::format("G0 X{}", number(g.drive_x)));
     };
     for (std::size_t i = 0; i < plan.depths.size(); ++i)
       cut(plan.depths[i], fmt::format("pass {}, depth {}", i + 1, number(plan.depths[i])));
     for (int i = 0; i < plan.spring_passes; ++i) cut(plan.ap, fmt::format("spring pass {}", i + 1));
   }
   // Back along the drive line to the safe Z, out of the bore when internal.
-  out += fmt::format("G0 Z{}\n", number(g.safe_z));
-  out += "M5\nM30\n";
-  return out;
+  out.line(fmt::format("G0 Z{}", number(g.safe_z)));
+  out.line("M5");
+  out.line("M30");
+  return out.text();
 }
 
 }  // namespace tk::threads

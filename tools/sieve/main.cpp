@@ -49,6 +49,7 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
   if (o.min_rate < 0 || !(o.min_rate == o.min_rate)) throw tk::UsageError("--min-rate must be a non-negative number");
   if (!(o.checkpoint_seconds > 0)) throw tk::UsageError("--checkpoint-every must be a positive number of seconds");
   tk::primes::SieveRunOptions run;
+  run.tool_name = tool.name();
   run.threads = tool.common().threads;
   std::tie(run.shard_index, run.shard_count) = tk::cli::parse_shard(o.shard, "--shard");
   run.factors_path = o.factors;

@@ -1,4 +1,4 @@
-/// @file test_prime_text_formats.cpp
+/// @file test_candidate_formats.cpp
 /// @brief Unit tests of the NewPGen and ABC/ABCD decoders: headers from the
 /// files real sieves write, the records they map to, the values those
 /// records stand for (checked against GMP directly), and the errors.
@@ -15,7 +15,7 @@
 #include "io/error.hpp"
 #include "primes/candidate.hpp"
 #include "primes/number_expression.hpp"
-#include "primes/prime_text_formats.hpp"
+#include "primes/candidate_formats.hpp"
 
 namespace {
 
@@ -24,7 +24,7 @@ using tk::Location;
 using tk::Record;
 using tk::primes::candidate_from_record;
 using tk::primes::kDefaultMaxBits;
-using tk::primes::probe_prime_text_format;
+using tk::primes::probe_candidate_format;
 
 struct Decoded {
   std::vector<Record> records;
@@ -46,7 +46,7 @@ Decoded decode_text(std::string_view text, std::size_t max_bits = kDefaultMaxBit
     ++line_number;
     if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
     if (!decoder) {
-      decoder = probe_prime_text_format(line, max_bits);
+      decoder = probe_candidate_format(line, max_bits);
       if (!decoder) {
         ADD_FAILURE() << "first line not recognised: " << line;
         return decoded;
@@ -109,9 +109,9 @@ Record form_record(std::uint64_t k, std::uint64_t n, const std::string& form, st
 TEST(PrimeTextProbe, RecognisesHeadersOnly) {
   for (const char* header : {"1000000000:P:1:2:257", "1:M:1:2", "  5000000:P:1:2:1", "ABC $a*2^$b+1", "ABCD $a*2^9+1 [3]",
                              "ABC2 $a*2^$b+1", "12:junk"})
-    EXPECT_NE(probe_prime_text_format(header, 64), nullptr) << header;
+    EXPECT_NE(probe_candidate_format(header, 64), nullptr) << header;
   for (const char* other : {"k,n", "3*2^10-1", "12345", "{\"k\":3}", "ABCDE,x", "abc $a", "// comment", ":P:1:2:1", ""})
-    EXPECT_EQ(probe_prime_text_format(other, 64), nullptr) << other;
+    EXPECT_EQ(probe_candidate_format(other, 64), nullptr) << other;
 }
 
 // ------------------------------------------------------------------ NewPGen
@@ -461,7 +461,7 @@ TEST(PrimeTextRobustness, RandomLinesOnlyEverThrowError) {
                            "ABC $a*2^$b+1 & $a*2^$b-1", "ABCD $a*2^$b$c [3 10 +1]", "ABC $a^$b%$c!"};
   const auto start = std::chrono::steady_clock::now();
   for (int round = 0; round < 3000; ++round) {
-    auto decoder = probe_prime_text_format(headers[round % std::size(headers)], 4096);
+    auto decoder = probe_candidate_format(headers[round % std::size(headers)], 4096);
     ASSERT_NE(decoder, nullptr);
     Record record;
     for (int i = 0; i < 12; ++i) {
@@ -493,7 +493,7 @@ TEST(PrimeTextRobustness, HugeJunkLinesAreCheap) {
     return s;
   }();
   for (const char* header : {"1000:P:1:2:1", "ABC $a*2^$b+1", "ABCD $a*2^$b+1 [3 10]"}) {
-    auto decoder = probe_prime_text_format(header, kDefaultMaxBits);
+    auto decoder = probe_candidate_format(header, kDefaultMaxBits);
     Record record;
     decoder->decode(header, Location{"f", 1}, record);
     for (const std::string* line : {&junk, &spaced}) {

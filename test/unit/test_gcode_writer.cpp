@@ -1,12 +1,12 @@
-/// @file test_gcode_comment.cpp
-/// @brief motion::gcode_comment: any text becomes one plain RS274NGC comment
+/// @file test_gcode_writer.cpp
+/// @brief motion::gcode_writer: any text becomes one plain RS274NGC comment, numbers print one way
 /// (rs274 itself judges the writers' programs in toolkit_rs274_oracle.bats).
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "motion/gcode.hpp"
-#include "motion/gcode_comment.hpp"
+#include "motion/gcode_writer.hpp"
 
 using tk::motion::gcode_comment;
 using tk::motion::kMaxCommentBytes;
@@ -75,4 +75,38 @@ TEST(GcodeComment, LongTextIsCutAtACharacterBoundary) {
   EXPECT_EQ(kept, text.substr(0, kept.size()));
   EXPECT_EQ(gcode_comment(std::string(kMaxCommentBytes - 2, 'a')), "(" + std::string(kMaxCommentBytes - 2, 'a') + ")");
   EXPECT_EQ(gcode_comment(std::string(kMaxCommentBytes - 1, 'a')).size(), kMaxCommentBytes);
+}
+
+// Expected texts worked out by hand: rounding to nearest, no "-0".
+TEST(GcodeNumber, FixedMicronsKeepSixPlacesAndNeverPrintMinusZero) {
+  using tk::motion::gcode_number;
+  using tk::motion::kFixedMicrons;
+  EXPECT_EQ(gcode_number(1.5, kFixedMicrons), "1.500000");
+  EXPECT_EQ(gcode_number(-12.3456789, kFixedMicrons), "-12.345679");
+  EXPECT_EQ(gcode_number(0.0, kFixedMicrons), "0.000000");
+  EXPECT_EQ(gcode_number(-0.0, kFixedMicrons), "0.000000");
+  EXPECT_EQ(gcode_number(-4e-7, kFixedMicrons), "0.000000");
+  EXPECT_EQ(gcode_number(-6e-7, kFixedMicrons), "-0.000001");
+}
+
+TEST(GcodeNumber, TrimmedTenthMicronsDropTrailingZeros) {
+  using tk::motion::gcode_number;
+  using tk::motion::kTrimmedTenthMicrons;
+  EXPECT_EQ(gcode_number(1.5, kTrimmedTenthMicrons), "1.5");
+  EXPECT_EQ(gcode_number(100, kTrimmedTenthMicrons), "100");
+  EXPECT_EQ(gcode_number(-30.25, kTrimmedTenthMicrons), "-30.25");
+  EXPECT_EQ(gcode_number(12.34567, kTrimmedTenthMicrons), "12.3457");
+  EXPECT_EQ(gcode_number(-4e-5, kTrimmedTenthMicrons), "0");
+  EXPECT_EQ(gcode_number(-6e-5, kTrimmedTenthMicrons), "-0.0001");
+}
+
+TEST(GcodeWriter, LinesCarryTheirCommentsMadeSafeAndNumbersReadBackAsPrinted) {
+  tk::motion::GcodeWriter out(tk::motion::kFixedMicrons);
+  out.comment("part (v2)");
+  out.line("G0 X" + out.number(1.0 / 3), "msg, hello");
+  out.line("M2");
+  EXPECT_EQ(out.text(), "(part [v2])\nG0 X0.333333 (\"msg, hello\")\nM2\n");
+  const tk::motion::PrintedNumber third = out.printed(1.0 / 3);
+  EXPECT_EQ(third.text, "0.333333");
+  EXPECT_EQ(third.value, 0.333333);
 }

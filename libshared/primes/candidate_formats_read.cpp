@@ -1,8 +1,8 @@
-/// @file prime_text_formats.cpp
+/// @file candidate_formats_read.cpp
 /// @brief NewPGen and ABC/ABCD files mapped onto the shared candidate
 /// records. A header line (which may recur anywhere in a file, as LLR and
 /// PFGW allow) decides how the data lines after it are read.
-#include "primes/prime_text_formats.hpp"
+#include "primes/candidate_formats.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -385,19 +385,6 @@ Record abc_record(const AbcTemplate& t, const std::vector<std::string>& values, 
 
 // ---------------------------------------------------------------- the decoder
 
-enum class HeaderKind { none, newpgen, abc, abcd, abc2 };
-
-HeaderKind header_kind(std::string_view text) {
-  const std::string_view word = text.substr(0, text.find_first_of(" \t"));
-  if (word == "ABC") return HeaderKind::abc;
-  if (word == "ABCD") return HeaderKind::abcd;
-  if (word == "ABC2") return HeaderKind::abc2;
-  // LLR takes any line that starts "<digits>:" for a NewPGen header.
-  const auto digits_end = text.find_first_not_of("0123456789");
-  if (digits_end != 0 && digits_end != std::string_view::npos && text[digits_end] == ':') return HeaderKind::newpgen;
-  return HeaderKind::none;
-}
-
 /// The header text after its keyword and before any "// comment".
 std::string_view header_body(std::string_view text, std::size_t keyword_length) {
   text.remove_prefix(keyword_length);
@@ -417,18 +404,18 @@ class PrimeTextDecoder final : public io::LineDecoder {
 
   bool decode_line(std::string_view text, Record& out) {
     if (text.empty() || text.starts_with("//")) return false;
-    const HeaderKind kind = header_kind(text);
-    if (kind != HeaderKind::none) mode_ = Mode::none;  // until the new header proves valid
+    const CandidateHeader kind = candidate_header_kind(text);
+    if (kind != CandidateHeader::none) mode_ = Mode::none;  // until the new header proves valid
     switch (kind) {
-      case HeaderKind::newpgen: newpgen_ = parse_newpgen_header(text); mode_ = Mode::newpgen; return false;
-      case HeaderKind::abc: abc_ = parse_abc_expression(header_body(text, 3)); mode_ = Mode::abc; return false;
-      case HeaderKind::abcd:  // the header itself is the first candidate
+      case CandidateHeader::newpgen: newpgen_ = parse_newpgen_header(text); mode_ = Mode::newpgen; return false;
+      case CandidateHeader::abc: abc_ = parse_abc_expression(header_body(text, 3)); mode_ = Mode::abc; return false;
+      case CandidateHeader::abcd:  // the header itself is the first candidate
         start_abcd(header_body(text, 4));
         out = abc_record(abc_, running_text(), max_bits_);
         return true;
       // One ABC2 header stands for many candidates; a LineDecoder yields one per line.
-      case HeaderKind::abc2: throw Error("abc2 files are not supported");
-      case HeaderKind::none: break;
+      case CandidateHeader::abc2: throw Error("abc2 files are not supported");
+      case CandidateHeader::none: break;
     }
     switch (mode_) {
       case Mode::none: throw Error("data line without a valid newpgen, abc or abcd header before it");
@@ -480,8 +467,8 @@ class PrimeTextDecoder final : public io::LineDecoder {
 
 }  // namespace
 
-std::unique_ptr<io::LineDecoder> probe_prime_text_format(std::string_view first_line, std::size_t max_bits) {
-  if (header_kind(trim(first_line)) == HeaderKind::none) return nullptr;
+std::unique_ptr<io::LineDecoder> probe_candidate_format(std::string_view first_line, std::size_t max_bits) {
+  if (candidate_header_kind(trim(first_line)) == CandidateHeader::none) return nullptr;
   return std::make_unique<PrimeTextDecoder>(max_bits);
 }
 

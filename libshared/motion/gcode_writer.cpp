@@ -1,8 +1,11 @@
-/// @file gcode_comment.cpp
-/// @brief Safe comment text for the G-code writers.
-#include "motion/gcode_comment.hpp"
+/// @file gcode_writer.cpp
+/// @brief Numbers and safe comment text for the G-code programs we write.
+#include "motion/gcode_writer.hpp"
+
+#include <fmt/format.h>
 
 #include <cctype>
+#include <cstdlib>
 
 namespace tk::motion {
 namespace {
@@ -58,6 +61,36 @@ std::string gcode_comment(std::string_view text) {
     body += "...";
   }
   return quoted ? "(\"" + body + "\")" : "(" + body + ")";
+}
+
+std::string gcode_number(double value, GcodeNumberFormat format) {
+  std::string text = fmt::format("{:.{}f}", value, format.decimals);
+  if (text.starts_with('-') && text.find_first_not_of("0.", 1) == std::string::npos) text.erase(0, 1);
+  if (format.trim_zeros && text.find('.') != std::string::npos) {
+    while (text.back() == '0') text.pop_back();
+    if (text.back() == '.') text.pop_back();
+  }
+  return text;
+}
+
+PrintedNumber GcodeWriter::printed(double value) const {
+  std::string text = number(value);
+  const double read_back = std::strtod(text.c_str(), nullptr);
+  return {std::move(text), read_back};
+}
+
+void GcodeWriter::comment(std::string_view text) {
+  text_ += gcode_comment(text);
+  text_ += '\n';
+}
+
+void GcodeWriter::line(std::string_view words, std::string_view comment) {
+  text_ += words;
+  if (!comment.empty()) {
+    text_ += ' ';
+    text_ += gcode_comment(comment);
+  }
+  text_ += '\n';
 }
 
 }  // namespace tk::motion
