@@ -68,6 +68,9 @@ bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::pai
     const std::uint32_t index = stack[--top];
     const Node& node = nodes[index];
     if (box_distance2(node.box, p) > r2) continue;
+    // Every element of a box within the radius is: past the cap, stop
+    // before examining them (a wide cell's window fails fast).
+    if (out.size() + (node.count > 0 ? node.count : node.first) > cap && box_far2(node.box, p) <= r2) return false;
     if (node.count == 0) {
       stack[top++] = node.right;
       stack[top++] = index + 1;

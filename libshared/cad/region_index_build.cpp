@@ -35,7 +35,7 @@ std::uint32_t RegionIndex::Impl::build_node(std::uint32_t begin, std::uint32_t e
                    });
   build_node(begin, mid);
   const std::uint32_t right = build_node(mid, end);
-  nodes[index].right = right;
+  nodes[index].right = right, nodes[index].first = end - begin;
   return index;
 }
 
@@ -49,8 +49,11 @@ void RegionIndex::Impl::build_grid() {
   const double width = w + 2 * mx, height = h + 2 * my;
   const double wanted = std::clamp(kCoarseCellsPerElement * double(segments.size()), 1.0, double(1 << 22));
   size = std::sqrt(width * height / wanted);
-  nx = static_cast<std::size_t>(std::clamp(std::ceil(width / size), 1.0, double(1 << 12)));
-  ny = static_cast<std::size_t>(std::clamp(std::ceil(height / size), 1.0, double(1 << 12)));
+  // No cap per side beyond the total's: a long thin part (a comb of
+  // 100,000 teeth) capped at 4,096 cells a side got cells of hundreds of
+  // elements, whose lists cost their square to refine.
+  nx = static_cast<std::size_t>(std::clamp(std::ceil(width / size), 1.0, double(1 << 22)));
+  ny = static_cast<std::size_t>(std::clamp(std::ceil(height / size), 1.0, double(1 << 22)));
   size = std::max(width / double(nx), height / double(ny));
   inv_size = 1 / size;
 }
@@ -96,12 +99,13 @@ void RegionIndex::Impl::build_covers() {
     // Enough leaves for about kLeafCovers elements touching each, and, up to
     // a point, about kLeafCandidates that may be nearest (roughly as many
     // as Voronoi regions cross the leaf, so in proportion to its width).
-    const Point middle{ox + (double(cell % nx) + 0.5) * size, oy + (double(cell / nx) + 0.5) * size};
     const CellWindow& w = windows[cell];
-    const double may_win =
-        double(leaf_window(cell, middle, size / 2, kRefineDepth - 1, window_elements.data() + w.first, w.count).size());
-    const double wanted =
-        std::max(std::sqrt(double(distinct) / kLeafCovers), std::min(may_win / kLeafCandidates, kMaxListSplit));
+    const double by_covers = std::sqrt(double(distinct) / kLeafCovers);
+    // The cell's window is pruned at the cell's square already, so that is
+    // what may win there (refining it again was a costly no-op: a list
+    // that keeps over kStuckShare of itself is not quartered).
+    const double may_win = double(w.count);
+    const double wanted = std::max(by_covers, std::min(may_win / kLeafCandidates, kMaxListSplit));
     // A power of two (the nearer, in ratio), so that leaves' lists come down by quarters.
     const double clamped = std::clamp(std::ceil(wanted), 1.0, 32.0);
     std::uint32_t split = 1;
@@ -144,19 +148,24 @@ void RegionIndex::Impl::build_covers() {
 /// than one is quartered, down to kRefineDepth, so the list comes close to
 /// the elements whose Voronoi regions meet the square.
 void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::size_t end, int depth,
-                               std::vector<std::uint32_t>& out) {
-  double nearest2 = kInf;
-  far2.resize(std::max(far2.size(), end));
-  for (std::size_t i = begin; i < end; ++i) nearest2 = std::min(nearest2, far2[i] = distance2(kernels[scratch[i]], q));
-  const double reach = (std::sqrt(nearest2) + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
-  const std::size_t first = scratch.size();
-  for (std::size_t i = begin; i < end; ++i)
-    if (far2[i] <= reach * reach) scratch.push_back(scratch[i]);
-  const std::size_t last = scratch.size();
+                               std::vector<std::uint32_t>& out, bool pruned) {
+  // A list pruned by this very test already (the leaf's, from its cell's
+  // by quarters) is taken as it is: the test would keep all of it.
+  std::size_t first = begin, last = end;
+  if (!pruned) {
+    double nearest2 = kInf;
+    if (far2.size() < end) far2.resize(end);
+    for (std::size_t i = begin; i < end; ++i) nearest2 = std::min(nearest2, far2[i] = distance2(kernels[scratch[i]], q));
+    const double reach = (std::sqrt(nearest2) + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
+    first = scratch.size();
+    for (std::size_t i = begin; i < end; ++i)
+      if (far2[i] <= reach * reach) scratch.push_back(scratch[i]);
+    last = scratch.size();
+  }
   // Stop at one element, at the depth limit, or where quartering prunes
   // little (many nearly equidistant, as round the centre of a fine circle):
   // each level costs four times the last.
-  const bool stuck = depth > 0 && double(last - first) > kStuckShare * double(end - begin);
+  const bool stuck = !pruned && depth > 0 && double(last - first) > kStuckShare * double(end - begin);
   if (last - first <= 1 || depth == kRefineDepth || stuck || last - first > kRefineLimit) {
     for (std::size_t i = first; i < last; ++i)
       if (stamp[scratch[i]] != mark) stamp[scratch[i]] = mark, out.push_back(scratch[i]);
@@ -164,7 +173,7 @@ void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::siz
     for (double dy : {-0.5, 0.5})
       for (double dx : {-0.5, 0.5}) refine({q.x + dx * half, q.y + dy * half}, half / 2, first, last, depth + 1, out);
   }
-  scratch.resize(first);
+  if (!pruned) scratch.resize(first);
 }
 
 /// A leaf's candidates, capped; then its reference point: the first of a
@@ -200,7 +209,7 @@ void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint3
   const Point middle = centre(cell % nx, cell / nx, 1, 0, 0);
   // A wide cell's leaves: no list, and a bound on the centre's distance for a start.
   const double from_middle = std::hypot(c.x - middle.x, c.y - middle.y);
-  const std::vector<std::uint32_t> listed = leaf_window(cell, c, leaf_size / 2, 0, list.data(), list.size());
+  const std::vector<std::uint32_t> listed = leaf_window(cell, c, leaf_size / 2, list.data(), list.size());
   const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaves[leaf].nearest = float_above(nearest);
   leaves[leaf].complete = window.wide                       ? 0

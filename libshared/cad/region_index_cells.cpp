@@ -25,7 +25,7 @@ constexpr std::size_t kBlockCells = 8;  // side of the blocks first asked of the
 
 double RegionIndex::Impl::prune(Point c, double half, const std::uint32_t* in, std::size_t count,
                                 std::vector<std::uint32_t>& out) {
-  far2.resize(std::max(far2.size(), count));
+  if (far2.size() < count) far2.resize(count);
   double nearest2 = kInf;
   for (std::size_t i = 0; i < count; ++i) nearest2 = std::min(nearest2, far2[i] = distance2(kernels[in[i]], c));
   const double nearest = std::sqrt(nearest2);
@@ -89,17 +89,17 @@ void RegionIndex::Impl::build_windows() {
     for (std::size_t x = 0; x < nx; x += kBlockCells) ask_block(x, y, kBlockCells);
 }
 
-/// The elements of `window` (a list for a square holding this one) that
-/// may be nearest to a point of the square round c of half side `half`
-/// inside `cell`, pruned by refine() from `depth` on;
-/// sorted by distance from c (left in near[]). Empty for a wide cell.
-std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(std::size_t cell, Point c, double half, int depth,
+/// The elements of `window` (the list of the square round c of half side
+/// `half` inside `cell`, pruned at that square) that may be nearest to a
+/// point of it, refined by quartering; sorted by distance from c (left in
+/// near[]). Empty for a wide cell.
+std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(std::size_t cell, Point c, double half,
                                                           const std::uint32_t* window, std::size_t count) {
   std::vector<std::uint32_t> listed;
   if (windows[cell].wide) return listed;
   scratch.assign(window, window + count);
   ++mark;
-  refine(c, half, 0, scratch.size(), depth, listed);
+  refine(c, half, 0, scratch.size(), 0, listed, true);
   for (std::uint32_t e : listed) near[e] = std::sqrt(distance2(kernels[e], c));
   std::sort(listed.begin(), listed.end(),
             [&](std::uint32_t a, std::uint32_t b) { return std::pair{near[a], a} < std::pair{near[b], b}; });

@@ -144,6 +144,12 @@ inline float float_below(double d) {
 }
 inline float float_above(double d) { return -float_below(-d); }
 
+/// The square of the largest distance from p to a point of b.
+inline double box_far2(const Box& b, Point p) {
+  const double dx = std::max(p.x - b.min_x, b.max_x - p.x), dy = std::max(p.y - b.min_y, b.max_y - p.y);
+  return dx * dx + dy * dy;
+}
+
 inline double box_distance2(const Box& b, Point p) {
   const double dx = std::max({b.min_x - p.x, 0.0, p.x - b.max_x});
   const double dy = std::max({b.min_y - p.y, 0.0, p.y - b.max_y});
@@ -170,7 +176,9 @@ using namespace region_index;
 struct RegionIndex::Impl {
   struct Node {  // of the box tree; its left child is the next node
     Box box;
-    std::uint32_t first = 0, count = 0, right = 0;  // count > 0: leaf over order[first, first + count)
+    // count > 0: a leaf over order[first, first + count); count == 0: an
+    // inner node over `first` elements
+    std::uint32_t first = 0, count = 0, right = 0;
   };
   struct Coarse {  // a grid cell, split into split x split leaves numbered from first_leaf
     std::uint32_t first_leaf, split;
@@ -239,13 +247,14 @@ struct RegionIndex::Impl {
   /// Appends to `out` the elements of `in` that may be nearest to a point of
   /// the square round c of half side `half`; returns c's distance to the nearest of them.
   double prune(Point c, double half, const std::uint32_t* in, std::size_t count, std::vector<std::uint32_t>& out);
-  std::vector<std::uint32_t> leaf_window(std::size_t cell, Point c, double half, int depth, const std::uint32_t* window,
+  std::vector<std::uint32_t> leaf_window(std::size_t cell, Point c, double half, const std::uint32_t* window,
                                          std::size_t count);
   void build_covers();
   void build_leaves(std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
                     const std::vector<std::uint32_t>& list);
   void build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y, const std::vector<std::uint32_t>& list);
-  void refine(Point q, double half, std::size_t begin, std::size_t end, int depth, std::vector<std::uint32_t>& out);
+  void refine(Point q, double half, std::size_t begin, std::size_t end, int depth, std::vector<std::uint32_t>& out,
+              bool pruned = false);
 
   // Scratch while building: a mark per element, distances from a centre,
   // and refine()'s lists, each square's after its parent's.
