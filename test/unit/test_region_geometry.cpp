@@ -17,6 +17,7 @@
 #include "cad/segment_geometry.hpp"
 #include "io/error.hpp"
 #include "region_probe.hpp"
+#include "test_volume.hpp"
 
 namespace {
 
@@ -135,7 +136,7 @@ TEST(SegmentGeometry, NearestPointMatchesDenseSampling) {
       std::vector<Point> dense;
       for (int i = 0; i <= samples; ++i) dense.push_back(point_at(s, double(i) / samples));
       const double spacing = segment_length(s) / samples;
-      for (int trial = 0; trial < 40; ++trial) {
+      for (int trial = 0, trials = test_volume(40, 10); trial < trials; ++trial) {
         const Point p{coordinate(random) * 2, coordinate(random) * 2};
         double t = -1;
         const Point q = nearest_point(s, p, &t);
@@ -474,8 +475,9 @@ TEST(RegionIndex, MatchesBruteForceOnStarsWithHolesAndIslands) {
   loops.push_back({circle({40, 0}, 3, 0, false), 2, 1, 0});  // an island in the first hole
   loops.push_back({circle({0, 0}, 20, 0, true), 1, 0, 0});
   loops.push_back({star(random, {0, 0}, 10, 30, 0.2), 2, 0, 0});
-  const Comparison c = compare(loops, probe_points(random, loops, 100000));
-  EXPECT_GT(c.sign_checked, 100000u);
+  const std::size_t count = test_volume(100000, 20000);
+  const Comparison c = compare(loops, probe_points(random, loops, count));
+  EXPECT_GT(c.sign_checked, count);
 }
 
 TEST(RegionIndex, MatchesBruteForceOnManyLoops) {
@@ -488,11 +490,11 @@ TEST(RegionIndex, MatchesBruteForceOnManyLoops) {
       else loops.push_back({star(random, c, 3, 8 + (i * j) % 17, 0.4), 0, -1, 0});
     }
   loops.push_back({square(-10, -10, 150, 110, 0, false), 0, -1, 0});
-  std::vector<Point> points = probe_points(random, loops, 100000);
+  std::vector<Point> points = probe_points(random, loops, test_volume(100000, 20000));
   // Along the circles' diameters, which are their arcs' chords.
   std::uniform_real_distribution<double> x(-15, 155);
   for (int j = 0; j < 15; ++j)
-    for (int i = 0; i < 400; ++i) points.push_back({x(random), j * 7.0});
+    for (int i = 0, along = test_volume(400, 100); i < along; ++i) points.push_back({x(random), j * 7.0});
   compare(loops, points);
   const RegionIndex index(loops);
   const RegionQuery centre = index.query({0, 0});  // circle of radius 2 round the origin, inside the square
@@ -513,9 +515,10 @@ TEST(RegionIndex, MatchesBruteForceNearTheCentreOfAFineCircle) {
   }
   const std::vector<Loop> loops = {{fine, 0, -1, 0}};
   std::mt19937_64 random(3);
-  std::vector<Point> points = probe_points(random, loops, 5000);
+  const int count = test_volume(5000, 1000);
+  std::vector<Point> points = probe_points(random, loops, count);
   std::uniform_real_distribution<double> near_centre(-0.3, 0.3);
-  for (int i = 0; i < 5000; ++i) points.push_back({near_centre(random), near_centre(random)});
+  for (int i = 0; i < count; ++i) points.push_back({near_centre(random), near_centre(random)});
   compare(loops, points);
   EXPECT_NEAR(RegionIndex(loops).query({0, 0}).distance, -10, 1e-12);
 }

@@ -16,6 +16,7 @@
 #include "cad/loops.hpp"
 #include "cad/region_distance.hpp"
 #include "region_probe.hpp"
+#include "test_volume.hpp"
 
 namespace {
 
@@ -64,27 +65,28 @@ Loop comb(std::size_t teeth, double y0) {
 TEST(RegionIndexShapes, WavyRingMatchesBruteForce) {
   std::mt19937_64 random(24);
   const std::vector<Loop> loops{wavy_ring(3000, {0, 0}, 100)};
-  const probe::Comparison c = probe::compare(loops, probe::probe_points(random, loops, 5000));
-  EXPECT_GT(c.sign_checked, 5000u);
+  const std::size_t count = test_volume(5000, 1500);
+  const probe::Comparison c = probe::compare(loops, probe::probe_points(random, loops, count));
+  EXPECT_GT(c.sign_checked, count);
 }
 
 TEST(RegionIndexShapes, SpikyGearMatchesBruteForce) {
   std::mt19937_64 random(25);
   const std::vector<Loop> loops{spiky_gear(1000)};
-  probe::compare(loops, probe::probe_points(random, loops, 5000));
+  probe::compare(loops, probe::probe_points(random, loops, test_volume(5000, 1500)));
 }
 
 TEST(RegionIndexShapes, LongCombMatchesBruteForce) {
   std::mt19937_64 random(26);
   const std::vector<Loop> loops{comb(600, 0)};
-  probe::compare(loops, probe::probe_points(random, loops, 5000));
+  probe::compare(loops, probe::probe_points(random, loops, test_volume(5000, 1500)));
 }
 
 TEST(RegionIndexShapes, CombsAndRingsAsHolesMatchBruteForce) {
   std::mt19937_64 random(27);
   std::vector<Loop> loops{polygon({{-20, -150}, {1300, -150}, {1300, 150}, {-20, 150}}), comb(600, 20), comb(300, -60)};
   for (int i = 0; i < 5; ++i) loops.push_back(wavy_ring(200, {100 + 220.0 * i, -110}, 20));
-  probe::compare(loops, probe::probe_points(random, loops, 5000));
+  probe::compare(loops, probe::probe_points(random, loops, test_volume(5000, 1500)));
 }
 
 /// The element a query names where several are exactly equally near (the
@@ -101,12 +103,13 @@ TEST(RegionIndexShapes, EquallyNearElementsNameTheLowestIndex) {
   std::size_t elements = 0;
   for (const Loop& l : loops) elements += l.segments.size();
   std::vector<Point> grid;
-  for (int y = -100; y <= 140; ++y)
-    for (int x = -60; x <= 620; ++x) grid.push_back({x * 0.25, y * 0.25});
+  const int step = test_volume(1, 2);  // every other row and column under the sanitizers
+  for (int y = -100; y <= 140; y += step)
+    for (int x = -60; x <= 620; x += step) grid.push_back({x * 0.25, y * 0.25});
   std::size_t ties = 0;
   for (const Point& p : grid)
     ties += brute_force_query(loops, p).element != elements - 1 - brute_force_query(reversed, p).element;
-  EXPECT_GT(ties, 1000u);
+  EXPECT_GT(ties, 1000u / (step * step));
   probe::compare(loops, grid);
 }
 
