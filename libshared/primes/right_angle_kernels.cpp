@@ -201,6 +201,20 @@ TK_INLINE void run_stage(const Arrays& a, const RightAngleSquarer::Stage& stage,
   }
 }
 
+// Lane l of the result is lane partner[l] of v: one permute under GCC;
+// clang (the fuzz build) has no shuffle by a mask known only at run time,
+// so there lane by lane, which is right and slow.
+template <class V, class I>
+TK_INLINE V permuted(V v, I partner) {
+#if defined(__clang__)
+  V r;
+  for (std::size_t l = 0; l < kLanes<V>; ++l) r[l] = v[partner[l]];
+  return r;
+#else
+  return __builtin_shuffle(v, partner);
+#endif
+}
+
 // The last log2(lanes) radix-2 passes, on the points one vector holds,
 // then the pointwise square, then their inverses. A lane's partner at
 // distance h is lane ^ h; the upper lane of a pair takes
@@ -228,8 +242,8 @@ struct LanePasses {
     V r = load<V>(re), m = load<V>(im);
 #pragma GCC unroll 4
     for (std::size_t pass = 0; pass < kPasses; ++pass) {
-      r = __builtin_shuffle(r, partner[pass]) + sign[pass] * r;
-      m = __builtin_shuffle(m, partner[pass]) + sign[pass] * m;
+      r = permuted(r, partner[pass]) + sign[pass] * r;
+      m = permuted(m, partner[pass]) + sign[pass] * m;
       if (pass + 1 < kPasses) times(r, m, twr[pass], twi[pass]);  // the last pass's twiddles are all 1
     }
     const V t = r * r - m * m;
@@ -239,8 +253,8 @@ struct LanePasses {
     for (std::size_t undone = 0; undone < kPasses; ++undone) {
       const std::size_t pass = kPasses - 1 - undone;
       if (pass + 1 < kPasses) times_conjugate(r, m, twr[pass], twi[pass]);
-      r = __builtin_shuffle(r, partner[pass]) + sign[pass] * r;
-      m = __builtin_shuffle(m, partner[pass]) + sign[pass] * m;
+      r = permuted(r, partner[pass]) + sign[pass] * r;
+      m = permuted(m, partner[pass]) + sign[pass] * m;
     }
     store(re, r);
     store(im, m);
