@@ -49,16 +49,16 @@ struct Job {
 /// and draws --svg. In the region mode (`region_mode`) the writer gets the
 /// region's fields, and a drawing with no closed loop still gets what was
 /// found in it before the error.
-Job prepare(const Settings& settings, tk::io::RecordWriter& writer, bool region_mode, const tk::cli::ToolApp& tool);
+Job prepare(const Settings& settings, tk::io::RecordWriter& writer, bool region_mode, tk::cli::ToolApp& tool);
 
 /// The default mode: the region's loops, then what was found in the drawing.
-void write_region(const Settings& settings, const Job& job, tk::io::RecordWriter& writer, const tk::cli::ToolApp& tool);
+void write_region(const Settings& settings, const Job& job, tk::io::RecordWriter& writer, tk::cli::ToolApp& tool);
 /// What was found in the drawing (loose ends, T-junctions, uncut spans) and its totals.
 void write_findings(const Settings& settings, const Job& job, const tk::cad::RegionOffset& region, tk::io::RecordWriter& writer,
-                    const tk::cli::ToolApp& tool);
+                    tk::cli::ToolApp& tool);
 
 /// --toolpath: the finishing contour as G-code.
-void write_toolpath(const Settings& settings, const Job& job, tk::io::RecordWriter& writer, const tk::cli::ToolApp& tool);
+void write_toolpath(const Settings& settings, const Job& job, tk::io::RecordWriter& writer, tk::cli::ToolApp& tool);
 
 /// --simulate: the seed's invasion experiment per joystick speed.
 void simulate(const Settings& settings, const Job& job, tk::io::RecordWriter& writer);

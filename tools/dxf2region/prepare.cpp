@@ -22,7 +22,7 @@ tk::cad::InvasionSimOptions Settings::experiment_at(double v) const {
 }
 
 void write_findings(const Settings& s, const Job& job, const tk::cad::RegionOffset& region, tk::io::RecordWriter& writer,
-                    const tk::cli::ToolApp& tool) {
+                    tk::cli::ToolApp& tool) {
   const tk::cad::LoopSet& found = job.part.loops;
   for (const tk::cad::LooseEnd& end : found.loose_ends) writer.write(tk::cad::loose_end_record(end));
   for (const tk::cad::TJunction& junction : found.t_junctions) writer.write(tk::cad::t_junction_record(junction));
@@ -39,7 +39,7 @@ void write_findings(const Settings& s, const Job& job, const tk::cad::RegionOffs
   writer.write(totals);
 }
 
-Job prepare(const Settings& s, tk::io::RecordWriter& writer, bool region_mode, const tk::cli::ToolApp& tool) {
+Job prepare(const Settings& s, tk::io::RecordWriter& writer, bool region_mode, tk::cli::ToolApp& tool) {
   auto warn = [&](const std::string& message) { tool.warn(message); };
   tk::cad::PartOptions part_options;
   part_options.layers = s.layers;

@@ -5,7 +5,7 @@
 
 namespace dxf2region {
 
-void write_region(const Settings& s, const Job& job, tk::io::RecordWriter& writer, const tk::cli::ToolApp& tool) {
+void write_region(const Settings& s, const Job& job, tk::io::RecordWriter& writer, tk::cli::ToolApp& tool) {
   for (std::size_t i = 0; i < job.region.loops.size(); ++i)
     writer.write(tk::cad::loop_record(job.region.loops[i], i, s.flatten_tolerance, s.tool_radius == 0));
   write_findings(s, job, job.region, writer, tool);

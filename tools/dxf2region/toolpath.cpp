@@ -10,7 +10,7 @@
 
 namespace dxf2region {
 
-void write_toolpath(const Settings& s, const Job& job, tk::io::RecordWriter& writer, const tk::cli::ToolApp& tool) {
+void write_toolpath(const Settings& s, const Job& job, tk::io::RecordWriter& writer, tk::cli::ToolApp& tool) {
   if (tool.common().csv) throw tk::UsageError("--toolpath writes G-code: --csv does not apply");
   tk::cad::ToolpathOptions options;
   options.feed = s.feed;

@@ -12,7 +12,7 @@
 namespace gcode_pulse {
 
 /// --verify-binary FILE: one record of what the stream holds.
-void verify_binary(const std::string& path, const tk::cli::ToolApp& tool);
+void verify_binary(const std::string& path, tk::cli::ToolApp& tool);
 
 /// What the run writes besides the pulses' records.
 struct RunOutput {
@@ -24,6 +24,6 @@ struct RunOutput {
 
 /// The programs (tool.common().inputs, standard input when none) run to
 /// pulses (records or --binary) or a --summary record.
-void run_programs(const tk::motion::PulseOptions& options, RunOutput& output, const tk::cli::ToolApp& tool);
+void run_programs(const tk::motion::PulseOptions& options, RunOutput& output, tk::cli::ToolApp& tool);
 
 }  // namespace gcode_pulse

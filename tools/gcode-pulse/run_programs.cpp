@@ -9,7 +9,7 @@
 
 namespace gcode_pulse {
 
-void run_programs(const tk::motion::PulseOptions& options, RunOutput& output, const tk::cli::ToolApp& tool) {
+void run_programs(const tk::motion::PulseOptions& options, RunOutput& output, tk::cli::ToolApp& tool) {
   const bool binary = output.binary, summary_only = output.summary_only;
   tk::io::RecordWriter writer(tool.output_format());
   std::unique_ptr<tk::motion::PulseBinaryWriter> binary_writer;

@@ -7,7 +7,7 @@
 
 namespace gcode_pulse {
 
-void verify_binary(const std::string& path, const tk::cli::ToolApp& tool) {
+void verify_binary(const std::string& path, tk::cli::ToolApp& tool) {
   if (!tool.common().inputs.empty()) throw tk::UsageError("--verify-binary reads no G-code");
   tk::io::RecordWriter writer(tool.output_format());
   writer.write(tk::motion::pulse_stream_record(path, tk::motion::read_pulse_binary(path)));
