@@ -63,6 +63,9 @@ class Stepper::ArcWalk {
   void prepare();
   template <bool kAxial>
   double cost_of(int d0, int d1, int d2, double& turn_out) const;
+  /// `best` becomes the candidate (d0, d1, d2) when it costs less than `best_cost`.
+  template <bool kAxial>
+  void keep_cheaper(Move& best, double& best_cost, int d0, int d1, int d2) const;
   /// The nearest and the Bresenham walk share the loop; `choose` picks each
   /// event's move, `after` runs after it is made.
   template <class Choose, class After>
@@ -205,6 +208,16 @@ inline double Stepper::ArcWalk::cost_of(int d0, int d1, int d2, double& turn_out
   return radial * radial + axial * axial;
 }
 
+template <bool kAxial>
+inline void Stepper::ArcWalk::keep_cheaper(Move& best, double& best_cost, int d0, int d1, int d2) const {
+  double turn = 0;
+  const double cost = cost_of<kAxial>(d0, d1, d2, turn);
+  if (cost < best_cost) {
+    best_cost = cost;
+    best = {d0, d1, d2, turn};
+  }
+}
+
 template <class Choose, class After>
 void Stepper::ArcWalk::walk_planar(Choose choose, After after) {
   // A safety bound: the walk advances phi at every in-plane step and
@@ -264,14 +277,7 @@ Stepper::ArcWalk::Move Stepper::ArcWalk::nearest_move(const Heading& h, int rise
     return best;
   }
   double best_cost = INFINITY;
-  auto consider = [&](int d0, int d1, int d2) {
-    double turn = 0;
-    const double cost = cost_of<true>(d0, d1, d2, turn);
-    if (cost < best_cost) {
-      best_cost = cost;
-      best = {d0, d1, d2, turn};
-    }
-  };
+  auto consider = [&](int d0, int d1, int d2) { keep_cheaper<true>(best, best_cost, d0, d1, d2); };
   auto reverses = [&](int d0, int d1) {
     return (d0 != 0 && d0 == -last_sign0_ && h.sign0 == tangent_sign0_) ||
            (d1 != 0 && d1 == -last_sign1_ && h.sign1 == tangent_sign1_);
@@ -296,14 +302,7 @@ Stepper::ArcWalk::Move Stepper::ArcWalk::nearest_move(const Heading& h, int rise
 Stepper::ArcWalk::Move Stepper::ArcWalk::bresenham_move(const Heading& h, int rise) const {
   Move best;
   double best_cost = INFINITY;
-  auto consider = [&](int d0, int d1, int d2) {
-    double turn = 0;
-    const double cost = cost_of<false>(d0, d1, d2, turn);
-    if (cost < best_cost) {
-      best_cost = cost;
-      best = {d0, d1, d2, turn};
-    }
-  };
+  auto consider = [&](int d0, int d1, int d2) { keep_cheaper<false>(best, best_cost, d0, d1, d2); };
   const bool major0 = std::fabs(h.t0) / h0_ >= std::fabs(h.t1) / h1_;
   consider(major0 ? h.sign0 : 0, major0 ? 0 : h.sign1, 0);
   consider(h.sign0, h.sign1, 0);
