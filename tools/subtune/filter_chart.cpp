@@ -2,22 +2,13 @@
 /// @brief subtune --policy shewhart|ewma|cusum: the filter under a chart.
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
-#include <optional>
 
-#include "cli/number_option.hpp"
-#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
-#include "io/error.hpp"
 #include "io/number_column.hpp"
-#include "io/record_fields.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
-#include "machining/force_error_model.hpp"
-#include "quality/lathe_sim.hpp"
-#include "quality/size_plot.hpp"
+#include "quality/subtune_report.hpp"
 #include "modes.hpp"
 
 namespace subtune {
@@ -28,7 +19,7 @@ void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& char
                   const std::string& svg_path, const tk::cli::ToolApp& tool) {
   tk::io::RecordReader reader(inputs, tk::io::number_column_probe(field));
   tk::io::RecordWriter writer(tool.output_format());
-  std::vector<std::string> fields{"n", "statistic", "limit", "level", "decision", "correction", "offset"};
+  std::vector<std::string> fields = chart_step_fields();
   const bool csv = tool.output_format() == tk::io::OutputFormat::csv;
   if (csv || limits.lower || limits.upper) fields.push_back("in_tolerance");
   SizePlot plot;
@@ -45,11 +36,7 @@ void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& char
     const PolicyStep step = chart.observe(size);
     ++since_adjustment;
     if (step.alarm) offset += step.correction;
-    record["n"] = since_adjustment;
-    record["statistic"] = step.statistic, record["limit"] = step.limit;
-    record["level"] = step.level;
-    record["decision"] = step.alarm ? "adjust" : "none";
-    record["correction"] = step.correction, record["offset"] = offset;
+    add_chart_step(record, step, since_adjustment, offset);
     if (const Limits l = limits_of(record, limits, where); l.lower || l.upper) record["in_tolerance"] = within(size, l);
     writer.write(record);
     if (step.alarm) since_adjustment = 0;

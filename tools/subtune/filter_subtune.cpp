@@ -2,22 +2,11 @@
 /// @brief subtune's filter: sub-tuning's decision per measured size.
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <optional>
-
-#include "cli/number_option.hpp"
-#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
-#include "io/error.hpp"
 #include "io/number_column.hpp"
-#include "io/record_fields.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
-#include "machining/force_error_model.hpp"
-#include "quality/lathe_sim.hpp"
-#include "quality/size_plot.hpp"
+#include "quality/subtune_report.hpp"
 #include "modes.hpp"
 
 namespace subtune {
@@ -30,7 +19,7 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
   // CSV always has an in_tolerance column (empty where no limits apply), since
   // any record may bring limits of its own; JSON has the field only where one does.
   const bool tolerance_column = tool.output_format() == tk::io::OutputFormat::csv || limits.lower || limits.upper;
-  const std::vector<std::string> own{"run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"};
+  const std::vector<std::string>& own = subtune_step_fields();
   std::vector<std::string> fields = own;
   if (tolerance_column) fields.push_back("in_tolerance");
   SizePlot plot;
@@ -56,10 +45,7 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
     const Limits l = limits_of(record, limits, where);
     const bool judged = l.lower || l.upper, in_tolerance = within(size, l);
     using tk::io::Cell;
-    row.assign({Cell::integer(static_cast<long long>(step.run)), Cell::integer(static_cast<long long>(step.n)), Cell::real(step.a),
-                Cell::real(step.b), Cell::real(step.s), Cell::real(step.t), Cell::real(step.t_crit),
-                step.df > 0 ? Cell::integer(static_cast<long long>(step.df)) : Cell::real(NAN), Cell::text(decision_name(step.decision)),
-                Cell::real(step.correction), Cell::real(step.offset)});
+    subtune_step_cells(step, row);
     if (fast && record.size() == 1) {
       row.insert(row.begin(), Cell::real(size));
       if (tolerance_column) row.push_back(judged ? Cell::boolean(in_tolerance) : Cell::real(NAN));

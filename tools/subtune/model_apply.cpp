@@ -2,22 +2,16 @@
 /// @brief subtune feed and correct: the force-error model applied per workpiece.
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 
-#include "cli/number_option.hpp"
-#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
 #include "io/number_column.hpp"
 #include "io/record_fields.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
-#include "machining/force_error_model.hpp"
-#include "quality/lathe_sim.hpp"
-#include "quality/size_plot.hpp"
+#include "machining/force_error_report.hpp"
 #include "modes.hpp"
 
 namespace subtune {
@@ -26,8 +20,7 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
                  double fixed_feed, const tk::cli::ToolApp& tool) {
   tk::io::RecordReader reader(inputs, tk::io::number_column_probe("a"));
   tk::io::RecordWriter writer(tool.output_format());
-  writer.declare_fields(feed_range ? std::vector<std::string>{"feed", "predicted_error", "feed_status", "error_min", "error_max"}
-                                   : std::vector<std::string>{"predicted_error", "correction"});
+  writer.declare_fields(feed_range ? tk::machining::feed_choice_fields() : tk::machining::correction_fields());
   std::uint64_t unsolved = 0;
   tk::Record record;
   while (reader.next(record)) {
@@ -36,17 +29,14 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
     if (a < 0) throw tk::Error(fmt::format("allowance a = {} mm is negative", a), where);
     if (feed_range) {
       const tk::machining::FeedChoice choice = tk::machining::feed_for_error(m, a, feed_range->target, feed_range->f_min, feed_range->f_max);
-      record["feed"] = choice.feed, record["predicted_error"] = choice.error;
-      record["feed_status"] = tk::machining::feed_status_name(choice.status);
-      record["error_min"] = choice.error_min, record["error_max"] = choice.error_max;
+      tk::machining::add_feed_choice(record, choice);
       if (choice.status == tk::machining::FeedStatus::none) ++unsolved;
     } else {
       const std::optional<double> record_feed = tk::io::optional_number_field(record, "f", where);
       if (!record_feed && std::isnan(fixed_feed)) throw tk::Error("no feed: give --feed or an f field in the record", where);
       const double f = record_feed.value_or(fixed_feed);
       if (!(f > 0)) throw tk::Error(fmt::format("feed f = {} mm/rev must be positive", f), where);
-      const double y = m.error_at(a, f);
-      record["predicted_error"] = y, record["correction"] = tk::machining::setup_correction(m, a, f);
+      tk::machining::add_correction(record, m, a, f);
     }
     writer.write(record);
   }

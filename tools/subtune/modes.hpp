@@ -4,14 +4,15 @@
 /// the options to them.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/tool_app.hpp"
+#include "io/error.hpp"
 #include "io/record.hpp"
+#include "io/record_writer.hpp"
 #include "machining/force_error_model.hpp"
 #include "quality/lathe_sim.hpp"
 #include "quality/size_plot.hpp"

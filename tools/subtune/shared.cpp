@@ -2,22 +2,11 @@
 /// @brief subtune: what the modes share (length fields, tolerance limits, plots).
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
-#include <optional>
 
-#include "cli/number_option.hpp"
-#include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
-#include "io/number_column.hpp"
 #include "io/record_fields.hpp"
-#include "io/record_reader.hpp"
-#include "io/record_writer.hpp"
-#include "machining/force_error_model.hpp"
-#include "quality/lathe_sim.hpp"
-#include "quality/size_plot.hpp"
 #include "modes.hpp"
 
 namespace subtune {

@@ -3,21 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <optional>
 
-#include "cli/number_option.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
-#include "io/number_column.hpp"
-#include "io/record_fields.hpp"
-#include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
-#include "machining/force_error_model.hpp"
-#include "quality/lathe_sim.hpp"
-#include "quality/size_plot.hpp"
+#include "quality/subtune_report.hpp"
 #include "modes.hpp"
 
 namespace subtune {
@@ -56,47 +48,30 @@ void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartS
     tk::cli::require_run_size(policies * parts, kMaxTraceRecords, "trace records (one a part and policy)",
                               "--trace with --parts and --policy");
     trace.emplace(o.trace_path, tool.output_format());
-    trace->declare_fields({"policy", "part", "allowance", "size", "measured", "alarm", "correction", "offset"});
+    trace->declare_fields(trace_fields());
   }
   tk::io::RecordWriter writer(tool.output_format());
-  writer.declare_fields({"policy", "parts", "in_tolerance_share", "mean_abs_deviation_mm", "rms_deviation_mm", "max_abs_deviation_mm",
-                         "corrections", "false_alarms", "arl0", "arl0_se", "arl_shift", "arl_shift_se", "arl_drift", "arl_drift_se",
-                         "sigma_mm"});
+  writer.declare_fields(batch_summary_fields());
   for (const PolicyKind kind : kinds) {
     const std::unique_ptr<AdjustmentPolicy> policy = make_policy(kind, subtune, charts);
     SizePlot plot;
     const std::string name(policy_name(kind));
     const LatheOutcome run = simulate_lathe(lathe, *policy, [&](const PartRecord& p) {
-      if (trace) {
-        trace->write({{"policy", name}, {"part", p.part}, {"allowance", p.allowance_mm}, {"size", p.size_mm}, {"measured", p.measured_mm},
-                      {"alarm", p.alarm}, {"correction", p.correction_mm}, {"offset", p.offset_mm}});
-      }
+      if (trace) trace->write(trace_record(name, p));
       if (!o.svg_path.empty()) plot.add(static_cast<double>(p.part), p.measured_mm, p.level_mm, p.offset_mm, p.size_mm);
     });
     const LatheOutcome stable = simulate_lathe(stable_process(lathe), *policy);
-    tk::Record r{{"policy", name},
-                 {"parts", run.parts},
-                 {"in_tolerance_share", static_cast<double>(run.in_tolerance) / static_cast<double>(run.parts)},
-                 {"mean_abs_deviation_mm", run.mean_abs_deviation_mm},
-                 {"rms_deviation_mm", run.rms_deviation_mm},
-                 {"max_abs_deviation_mm", run.max_abs_deviation_mm},
-                 {"corrections", run.corrections},
-                 {"false_alarms", stable.corrections}};
+    std::optional<PolicyRunLengths> run_lengths;
     if (kind != PolicyKind::none) {
       const auto arl = [&](double shift, double drift, std::uint64_t salt) {
         return average_run_length(kind, subtune, charts, shift, drift, o.arl_runs, lathe.seed * 7 + salt, o.arl_cap);
       };
-      const RunLengthEstimate in_control = arl(0, 0, 1), shifted = arl(o.shift_sigma, 0, 2), drifting = arl(0, o.drift_sigma, 3);
-      r["arl0"] = in_control.mean, r["arl0_se"] = in_control.standard_error;
-      r["arl_shift"] = shifted.mean, r["arl_shift_se"] = shifted.standard_error;
-      r["arl_drift"] = drifting.mean, r["arl_drift_se"] = drifting.standard_error;
-      const std::uint64_t censored = in_control.censored + shifted.censored + drifting.censored;
+      run_lengths = PolicyRunLengths{arl(0, 0, 1), arl(o.shift_sigma, 0, 2), arl(0, o.drift_sigma, 3)};
+      const std::uint64_t censored = run_lengths->in_control.censored + run_lengths->shifted.censored + run_lengths->drifting.censored;
       if (censored > 0)
         tool.warn(fmt::format("policy {}: {} ARL run(s) reached --arl-cap {} without an alarm; those ARLs are lower bounds", name, censored, o.arl_cap));
-    } else {
-      for (const char* f : {"arl0", "arl0_se", "arl_shift", "arl_shift_se", "arl_drift", "arl_drift_se"}) r[f] = nullptr;
     }
-    r["sigma_mm"] = charts.sigma;
+    const tk::Record r = batch_summary(name, run, stable, run_lengths, charts.sigma);
     writer.write(r);
     if (!o.svg_path.empty()) {
       write_plot(plot, o.svg_path, {.title = fmt::format("subtune --simulate --policy {}: {} parts, {} corrections, {:.1f} % in tolerance", name,
