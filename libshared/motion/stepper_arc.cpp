@@ -299,7 +299,7 @@ Stepper::ArcWalk::Move Stepper::ArcWalk::nearest_move(const Heading& h, int rise
 // Bresenham (midpoint): the in-plane axis with the larger tangent component
 // steps; the other joins when that lands nearer the arc. The normal axis
 // joins when it lags half a step or more.
-Stepper::ArcWalk::Move Stepper::ArcWalk::bresenham_move(const Heading& h, int rise) const {
+inline Stepper::ArcWalk::Move Stepper::ArcWalk::bresenham_move(const Heading& h, int rise) const {
   Move best;
   double best_cost = INFINITY;
   auto consider = [&](int d0, int d1, int d2) { keep_cheaper<false>(best, best_cost, d0, d1, d2); };
