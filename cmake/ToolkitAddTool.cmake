@@ -1,5 +1,6 @@
 # toolkit_add_tool(NAME): the one place a tool is wired in.
-#   - builds tools/NAME/main.cpp against libshared,
+#   - builds tools/NAME/*.cpp against libshared (main.cpp wires the options,
+#     a tool with several modes keeps one file per mode beside it),
 #   - installs the executable and man/NAME.1, gzipped (PREFIX honoured),
 #   - registers test/bats/NAME.bats under ctest when tests are on.
 # toolkit_compile_as_wiring(TARGET): for the targets that only wire the
@@ -25,7 +26,8 @@ include(ToolkitTestCosts)
 add_custom_target(toolkit_tools)
 
 function(toolkit_add_tool name)
-  add_executable(${name} ${PROJECT_SOURCE_DIR}/tools/${name}/main.cpp)
+  file(GLOB sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tools/${name}/*.cpp)
+  add_executable(${name} ${sources})
   add_dependencies(toolkit_tools ${name})
   target_link_libraries(${name} PRIVATE toolkit_shared toolkit_flags fmt::fmt)  # the mains format with fmt
   toolkit_compile_as_wiring(${name})

@@ -16,11 +16,12 @@
 /// Work budget: a program may legitimately ask for billions of steps within
 /// those limits (an arc may make up to 1e6 turns with P, and a few hundred
 /// 2000 mm moves at 1000 steps/mm fit in 4 KiB). Before the pipeline runs,
-/// the program is interpreted alone and the steps it asks for are estimated
-/// from the ideal path (length times the largest steps per mm); above
-/// kStepBudget the pipeline is skipped (lexing and interpreting still run).
-/// The estimate comes from the path, not from the stepper, so a stepper that
-/// makes far more events than its path needs still shows as a timeout.
+/// the program is read alone (tk::motion::PulseRun::scan: the interpreter and
+/// run_file's checks, nothing planned or stepped) and the step pulses its
+/// motions imply are summed (motion/pulse_estimate.hpp); above kStepBudget
+/// the pipeline is skipped (lexing and interpreting still run). The estimate
+/// comes from the path, not from the stepper, so a stepper that makes far
+/// more events than its path needs still shows as a timeout.
 /// TK_FUZZ_SKIP=budget runs every input in full (to time a skipped one).
 ///
 /// tk::Error is the expected rejection; any other exception, crash,
@@ -58,7 +59,7 @@ using tk::fuzz::MemoryFile;
 using namespace tk::motion;
 
 constexpr double kMaxCoordinateMm = 1000;
-/// Estimated steps above which the pipeline is skipped (see the file comment).
+/// Implied step pulses above which the pipeline is skipped (see the file comment).
 constexpr double kStepBudget = 1e5;
 
 constexpr std::array<std::array<double, 3>, 3> kStepsPerMm{{{200, 200, 400}, {1, 1, 1}, {1000, 3, 57}}};
@@ -97,67 +98,6 @@ void check_words(const GcodeLine& line) {
   }
 }
 
-/// Steps the motion's ideal path asks for, roughly: its length (L1 for
-/// lines, sweep times the larger radius plus the normal travel for arcs)
-/// times the largest steps per mm.
-double estimated_steps(const Motion& motion, double max_steps_per_mm) {
-  if (motion.kind == MotionKind::dwell) return 0;
-  double length = 0;
-  if (motion.kind == MotionKind::arc) {
-    const auto radius = [&motion](const Vec3& point) {
-      return std::hypot(point[motion.axis0] - motion.center[motion.axis0],
-                        point[motion.axis1] - motion.center[motion.axis1]);
-    };
-    length = arc_sweep(motion) * std::max(radius(motion.start), radius(motion.end)) +
-             std::abs(motion.end[motion.axis2] - motion.start[motion.axis2]);
-  } else {
-    for (int axis = 0; axis < 3; ++axis) length += std::abs(motion.end[axis] - motion.start[axis]);
-  }
-  return length * max_steps_per_mm;
-}
-
-/// What the pipeline will be asked to do, from the interpreter alone, run
-/// as PulseRun::run_file runs it.
-struct Prescan {
-  double steps = 0;
-  bool fails = false;  ///< PulseRun will throw tk::Error
-  Vec3 end;            ///< the interpreter's final position
-};
-
-Prescan prescan(const std::vector<std::string_view>& lines, const PulseOptions& options) {
-  Prescan out;
-  const double max_steps_per_mm = *std::max_element(options.steps_per_mm.begin(), options.steps_per_mm.end());
-  GcodeInterpreter interpreter(options.interpreter);
-  std::vector<Motion> motions;
-  bool started = false;
-  std::size_t number = 0;
-  for (std::string_view text : lines) {
-    ++number;
-    if (interpreter.program_ended()) break;
-    if (text.find('\0') != std::string_view::npos) {  // InputFile refuses that line
-      out.fails = true;
-      break;
-    }
-    motions.clear();
-    try {
-      const GcodeLine line = lex_gcode_line(text);
-      if (line.percent) {
-        if (started) break;
-        started = true;
-        continue;
-      }
-      if (!line.words.empty()) started = true;
-      interpreter.execute(line, number, motions);
-    } catch (const tk::Error&) {
-      out.fails = true;
-      break;
-    }
-    for (const Motion& motion : motions) out.steps += estimated_steps(motion, max_steps_per_mm);
-  }
-  out.end = interpreter.position();
-  return out;
-}
-
 void run(std::string_view bytes) {
   static MemoryFile file("fuzz-gcode");
   if (bytes.empty()) return;
@@ -173,8 +113,9 @@ void run(std::string_view bytes) {
     }
   }
 
-  const Prescan plan = prescan(lines, options);
-  if (!(plan.steps <= kStepBudget) && tk::fuzz::oracle_enabled("budget")) return;
+  file.assign(program);
+  const ProgramScan plan = PulseRun::scan(file.path(), options);
+  if (!(plan.implied_pulses <= kStepBudget) && tk::fuzz::oracle_enabled("budget")) return;
 
   std::array<std::int64_t, 3> moved{};
   double last_t = 0;
@@ -201,7 +142,6 @@ void run(std::string_view bytes) {
     }
   };
 
-  file.assign(program);
   PulseRun pulse_run(options, on_pulses, [](const std::string&) {});
   bool failed = false;
   try {

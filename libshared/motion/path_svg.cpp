@@ -8,31 +8,11 @@
 #include <cstdio>
 #include <sstream>
 
-#include "cli/number_option.hpp"
 #include "io/atomic_file.hpp"
 #include "io/error.hpp"
 #include "motion/arc_geometry.hpp"
 
 namespace tk::motion {
-
-SvgWindow parse_svg_window(const std::string& text) {
-  // The interpreter's coordinate range bounds the window too.
-  const auto refuse = [] {
-    return UsageError(fmt::format("--window needs X0,Y0,X1,Y1 in mm from {0:g} to {1:g} with X0 < X1 and Y0 < Y1", -InterpreterOptions{}.max_coordinate_mm,
-                                  InterpreterOptions{}.max_coordinate_mm));
-  };
-  std::vector<double> v;
-  try {
-    v = cli::parse_numbers(text, "--window", 4);
-  } catch (const Error&) {
-    throw refuse();
-  }
-  const SvgWindow w{v[0], v[1], v[2], v[3]};
-  if (!(w.x0 < w.x1) || !(w.y0 < w.y1)) throw refuse();
-  for (const double corner : {w.x0, w.y0, w.x1, w.y1})
-    if (!(std::abs(corner) <= InterpreterOptions{}.max_coordinate_mm)) throw refuse();
-  return w;
-}
 
 PathSvg::PathSvg(SvgWindow window) : window_(window) {}
 

@@ -18,9 +18,6 @@ struct SvgWindow {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  ///< mm, x0 < x1 and y0 < y1
 };
 
-/// "X0,Y0,X1,Y1" in mm; throws tk::UsageError when malformed or empty.
-SvgWindow parse_svg_window(const std::string& text);
-
 class PathSvg {
  public:
   static constexpr std::size_t kMaxPoints = 500000;

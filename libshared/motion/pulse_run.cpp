@@ -64,6 +64,7 @@ void PulseRun::run_lines(const std::string& path) {
     } catch (const Error& e) {
       throw Error(e.what(), input.where());
     }
+    if (scanning_) continue;
     for (const Motion& motion : motions_) {
       ++summary_.motions;
       planner_.add(motion, ready_);
@@ -132,6 +133,20 @@ void PulseRun::check_implied_pulses(const Motion& motion) {
 }
 
 void PulseRun::finish() { planner_.finish(ready_); }
+
+ProgramScan PulseRun::scan(const std::string& path, const PulseOptions& options) {
+  PulseRun reader(options, {}, {});
+  reader.scanning_ = true;
+  ProgramScan out;
+  try {
+    reader.run_lines(path);
+  } catch (const Error&) {
+    out.fails = true;
+  }
+  out.implied_pulses = reader.implied_pulses_;
+  out.end = options.canon ? reader.canon_.position() : reader.interpreter_.position();
+  return out;
+}
 
 void PulseRun::on_block(const PlannedBlock& block) {
   if (block.motion.kind == MotionKind::dwell) {

@@ -53,6 +53,14 @@ struct PulseSummary {
   double rms_deviation_mm() const;
 };
 
+/// What a program asks for, read as PulseRun::run_file reads it (the same
+/// checks, the same end of the program) but neither planned nor stepped.
+struct ProgramScan {
+  double implied_pulses = 0;  ///< over the motions read (pulse_estimate.hpp)
+  bool fails = false;         ///< reading stopped at a tk::Error: run_file throws it too
+  Vec3 end{};                 ///< where the interpreter leaves the machine
+};
+
 /// One timed event: seconds from the program's start and the unit moves.
 struct Pulse {
   double t = 0;
@@ -73,6 +81,8 @@ class PulseRun {
   void draw(PathSvg* svg) { svg_ = svg; }
   /// Stops the machine after the last block and emits what is pending.
   void finish();
+  /// Reads one program file without running it (a fuzz target's work budget).
+  static ProgramScan scan(const std::string& path, const PulseOptions& options);
 
   PulseSummary summary() const;
 
@@ -102,6 +112,7 @@ class PulseRun {
   std::array<std::int64_t, 3> lattice_{};  ///< followed only when drawing
   std::vector<Motion> motions_;
   double implied_pulses_ = 0;  ///< by the blocks read so far (pulse_estimate.hpp)
+  bool scanning_ = false;      ///< read the motions, plan none (scan)
 };
 
 }  // namespace tk::motion

@@ -88,6 +88,11 @@ class Stepper {
     const std::function<void(std::span<const StepEvent>)>& sink_;  ///< outlives the chunk
   };
 
+  /// A walk's state, and one function per stepping method: lines in
+  /// stepper_line.cpp, arcs in stepper_arc.cpp.
+  class LineWalk;
+  class ArcWalk;
+
   double run_line(const Motion& motion, Chunk& out);
   double run_arc(const Motion& motion, Chunk& out);
 

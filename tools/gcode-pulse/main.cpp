@@ -2,19 +2,18 @@
 /// @brief gcode-pulse: G-code to timed step pulses (the nearest neighbour
 /// to the programmed path, Panayotov & Goranov's direct single-impulse
 /// calculation, Bresenham or DDA), or a summary of them.
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
 
+#include "cli/number_option.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
-#include "io/record_writer.hpp"
-#include "cli/number_option.hpp"
+#include "modes.hpp"
 #include "motion/machine_settings.hpp"
-#include "motion/pulse_binary.hpp"
-#include "motion/pulse_run.hpp"
 #include "motion/tool_table.hpp"
 
 namespace {
@@ -24,6 +23,26 @@ std::array<double, 3> parse_axes(const std::string& text, const char* option, tk
   const std::vector<double> values = tk::cli::parse_numbers(text, option, 3);
   for (const double value : values) tk::cli::require_range(value, range.low, range.high, option);
   return {values[0], values[1], values[2]};
+}
+
+/// --window "X0,Y0,X1,Y1" in mm, within the interpreter's coordinate range;
+/// a usage error otherwise.
+tk::motion::SvgWindow parse_window(const std::string& text) {
+  const double limit = tk::motion::InterpreterOptions{}.max_coordinate_mm;
+  const auto refuse = [limit] {
+    return tk::UsageError(fmt::format("--window needs X0,Y0,X1,Y1 in mm from {0:g} to {1:g} with X0 < X1 and Y0 < Y1", -limit, limit));
+  };
+  std::vector<double> v;
+  try {
+    v = tk::cli::parse_numbers(text, "--window", 4);
+  } catch (const tk::Error&) {
+    throw refuse();
+  }
+  const tk::motion::SvgWindow w{v[0], v[1], v[2], v[3]};
+  if (!(w.x0 < w.x1) || !(w.y0 < w.y1)) throw refuse();
+  for (const double corner : {w.x0, w.y0, w.x1, w.y1})
+    if (!(std::abs(corner) <= limit)) throw refuse();
+  return w;
 }
 
 }  // namespace
@@ -94,10 +113,7 @@ int main(int argc, char** argv) {
 
   return tool.run(argc, argv, [&] {
     if (!verify_path.empty()) {
-      if (!tool.common().inputs.empty()) throw tk::UsageError("--verify-binary reads no G-code");
-      tk::io::RecordWriter writer(tool.output_format());
-      writer.write(tk::motion::pulse_stream_record(verify_path, tk::motion::read_pulse_binary(verify_path)));
-      writer.flush();
+      gcode_pulse::verify_binary(verify_path, tool);
       return;
     }
     // The machine file first, then whatever the command line gives.
@@ -130,66 +146,13 @@ int main(int argc, char** argv) {
     if (binary && summary_only) throw tk::UsageError("--binary and --summary exclude each other");
     if (binary && tool.common().csv) throw tk::UsageError("--binary and --csv exclude each other");
     if (binary && isatty(STDOUT_FILENO)) throw tk::UsageError("--binary will not write to a terminal: redirect standard output");
-    tk::io::RecordWriter writer(tool.output_format());
-    std::unique_ptr<tk::motion::PulseBinaryWriter> binary_writer;
-    tk::motion::PulseRun::PulseSink on_pulses;
-    if (binary) {
-      binary_writer = std::make_unique<tk::motion::PulseBinaryWriter>(stdout, options.steps_per_mm);
-      on_pulses = [&](std::span<const tk::motion::Pulse> pulses) { binary_writer->write(pulses); };
-    } else if (!summary_only) {
-      writer.declare_fields({"t", "dx", "dy", "dz"});
-      on_pulses = [&](std::span<const tk::motion::Pulse> pulses) {
-        for (const tk::motion::Pulse& pulse : pulses) {
-          const double row[4] = {pulse.t, static_cast<double>(pulse.delta[0]), static_cast<double>(pulse.delta[1]),
-                                 static_cast<double>(pulse.delta[2])};
-          writer.write_numbers(row, 0b1110);
-        }
-      };
-    }
-    tk::motion::PulseRun run(options, on_pulses, [&](const std::string& message) { tool.warn(message); });
     if (svg_path.empty() != window_text.empty()) throw tk::UsageError("--svg and --window go together");
-    std::unique_ptr<tk::motion::PathSvg> svg;
-    if (!svg_path.empty()) {
-      svg = std::make_unique<tk::motion::PathSvg>(tk::motion::parse_svg_window(window_text));
-      run.draw(svg.get());
-    }
-    std::vector<std::string> inputs = tool.common().inputs;
-    if (inputs.empty()) inputs.push_back("-");
-    try {
-      for (const std::string& path : inputs) run.run_file(path);
-      run.finish();
-    } catch (const tk::Error&) {
-      if (binary_writer) binary_writer->flush();  // the pulses before the error stay written
-      throw;
-    }
-    if (svg) {
-      svg->write(svg_path);
-      if (svg->truncated()) tool.warn(svg_path + ": more than 500,000 points in the window: the drawing stops there");
-    }
-    if (summary_only) {
-      const tk::motion::PulseSummary s = run.summary();
-      tk::Record record;
-      record["method"] = method;
-      static const char* const kAxes[3] = {"x", "y", "z"};
-      for (int axis = 0; axis < 3; ++axis) record[std::string("pulses_") + kAxes[axis]] = s.pulses[axis];
-      for (int axis = 0; axis < 3; ++axis) record[std::string("final_") + kAxes[axis]] = s.final_mm[axis];
-      record["duration_s"] = s.duration_s;
-      record["dwell_s"] = s.dwell_s;
-      record["path_mm"] = s.path_mm;
-      record["max_deviation_mm"] = s.max_deviation_mm;
-      record["rms_deviation_mm"] = s.rms_deviation_mm();
-      for (int axis = 0; axis < 3; ++axis) record[std::string("peak_rate_") + kAxes[axis]] = s.peak_rate[axis];
-      record["coincident_steps"] = s.coincident_steps;
-      record["events"] = s.events;
-      record["blocks"] = s.blocks;
-      record["motions"] = s.motions;
-      record["feed_capped_blocks"] = s.feed_capped;
-      tk::Record unused = tk::Record::object();
-      for (const auto& [word, count] : s.unused_words) unused[word] = count;
-      record["unused_words"] = tool.output_format() == tk::io::OutputFormat::csv ? tk::Record(unused.dump()) : unused;
-      writer.write(record);
-    }
-    if (binary_writer) binary_writer->finish();
-    writer.flush();
+    gcode_pulse::RunOutput output;
+    output.summary_only = summary_only;
+    output.binary = binary;
+    output.method_name = method;
+    output.svg_path = svg_path;
+    if (!svg_path.empty()) output.svg = std::make_unique<tk::motion::PathSvg>(parse_window(window_text));
+    gcode_pulse::run_programs(options, output, tool);
   });
 }
