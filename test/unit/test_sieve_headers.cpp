@@ -69,7 +69,9 @@ TEST(SieveHeaders, WhatSieveWritesReadsBackAndStandsForTheFormsNumbers) {
       EXPECT_EQ(read.kind, kind);
       EXPECT_EQ(read.key, written.key);
       EXPECT_EQ(read.depth, kDepth);
-      if (kind == CandidateHeader::abcd) EXPECT_EQ(read.abcd_start, kK);
+      if (kind == CandidateHeader::abcd) {
+        EXPECT_EQ(read.abcd_start, kK);
+      }
 
       // The reader: the header, then the data line sieve writes for k (ABCD's header is k itself).
       auto decoder = tk::primes::probe_candidate_format(line, 4096);
