@@ -17,6 +17,7 @@
 #include "io/error.hpp"
 #include "motion/stepper.hpp"
 #include "deviation_study.hpp"
+#include "test_volume.hpp"
 
 namespace {
 
@@ -77,7 +78,7 @@ TEST(Stepper, LinesEndOnTheQuantisedTargetAndReportTrueDeviations) {
   for (StepMethod method : {StepMethod::direct, StepMethod::nearest, StepMethod::bresenham, StepMethod::dda}) {
     Stepper stepper(method, kStepsPerMm);
     Vec3 from{};
-    for (int line = 0; line < 300; ++line) {
+    for (int line = 0, lines = test_volume(300, 60); line < lines; ++line) {
       const Vec3 to{coordinate(random), coordinate(random), line % 3 ? coordinate(random) / 4 : from.z};
       Motion motion;
       motion.start = from;
@@ -132,7 +133,7 @@ TEST(Stepper, ArcsAndHelicesStayNearTheirPathAndEndOnTarget) {
   for (StepMethod method : {StepMethod::direct, StepMethod::nearest, StepMethod::bresenham, StepMethod::dda}) {
     Stepper stepper(method, kStepsPerMm);
     Vec3 from{};
-    for (int arc = 0; arc < 120; ++arc) {
+    for (int arc = 0, arcs = test_volume(120, 30); arc < arcs; ++arc) {
       Motion motion;
       motion.kind = MotionKind::arc;
       const int plane = arc % 3;  // G17, G18, G19
