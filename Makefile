@@ -5,7 +5,7 @@ include Makefile.inc
 MAKEFLAGS += --no-print-directory
 
 .PHONY: all deps test-deps bench-deps deb-deps configure tools build demo test test-fast \
-        test-sanitize test-slow deb bench fuzz man install clean
+        test-sanitize test-slow deb bench fuzz man format install clean
 
 all: build
 
@@ -85,6 +85,10 @@ fuzz:
 # Regenerates man/*.1 from the scdoc sources (the .1 files are committed).
 man: deps
 	for src in man/*.scd; do bash scripts/man-page.sh $$src $${src%.scd}; done
+
+# Lays the C++ sources out as .clang-format says (the source_format test checks it).
+format: test-deps
+	bash scripts/format.sh
 
 install: tools
 	$(CMAKE) --install $(BUILD_DIR) --prefix $(PREFIX)

@@ -7,11 +7,11 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <memory>
-#include <sstream>
 #include <cstdlib>
 #include <ctime>
 #include <initializer_list>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -80,8 +80,8 @@ class Results {
 
   /// The line run.sh collects: name, medians of ours, peer and ratio, goal.
   void report(double goal) const {
-    std::printf("RESULT %s %.6f %.6f %.4f %.2f %zu\n", name_.c_str(), median(ours_), median(peer_),
-                median(ratio_), goal, ratio_.size());
+    std::printf("RESULT %s %.6f %.6f %.4f %.2f %zu\n", name_.c_str(), median(ours_), median(peer_), median(ratio_),
+                goal, ratio_.size());
   }
 
  private:

@@ -74,7 +74,8 @@ int main(int, char** argv) {
   const int repeats = bench::repeats({"BENCH_FUZZYFEED_REPEATS", "BENCH_REPEATS"}, 5);
   const std::size_t samples = 20'000'000;
   const std::vector<double> loads = spindle_loads(samples);
-  std::printf("bench_fuzzyfeed: the law over %zu spindle-load samples (no I/O), %d repeats; then the CLI\n", samples, repeats);
+  std::printf("bench_fuzzyfeed: the law over %zu spindle-load samples (no I/O), %d repeats; then the CLI\n", samples,
+              repeats);
 
   FeedOverrideParams original, modified;
   modified.variant = OverrideVariant::modified;  // k 0.1, p 0.1, d 25
@@ -85,13 +86,14 @@ int main(int, char** argv) {
       double checksum = 0;
       const double seconds = bench::time_cpu([&] { checksum = run_law(params, loads); });
       if (r == 0) first_checksum = checksum;
-      if (checksum != first_checksum || !(checksum > 0)) bench::fail("the law gave different overrides on the same loads");
+      if (checksum != first_checksum || !(checksum > 0))
+        bench::fail("the law gave different overrides on the same loads");
       rates.push_back(static_cast<double>(samples) / seconds);
       std::printf("  %s repeat %d: %.1f million samples/s\n", name, r + 1, rates.back() / 1e6);
     }
     const double median = bench::median(rates);
-    std::printf("FIGURE fuzzyfeed_law_%s %.1f million samples/s (median of %d; goal 20; %s)\n", name, median / 1e6, repeats,
-                median >= 20e6 ? "met" : "NOT met");
+    std::printf("FIGURE fuzzyfeed_law_%s %.1f million samples/s (median of %d; goal 20; %s)\n", name, median / 1e6,
+                repeats, median >= 20e6 ? "met" : "NOT met");
   }
 
   // The command line: 1,000,000 records as JSON Lines and as CSV.
@@ -118,9 +120,9 @@ int main(int, char** argv) {
     std::fclose(json);
     std::fclose(csv);
   }
-  for (const auto& [label, args, file] : {std::tuple{"json", "", std::string(json_path)},
-                                          std::tuple{"csv", "--csv", csv_path},
-                                          std::tuple{"json_modified", "--variant modified", std::string(json_path)}}) {
+  for (const auto& [label, args, file] :
+       {std::tuple{"json", "", std::string(json_path)}, std::tuple{"csv", "--csv", csv_path},
+        std::tuple{"json_modified", "--variant modified", std::string(json_path)}}) {
     std::vector<double> rates;
     for (int r = 0; r < repeats; ++r) rates.push_back(cli_rate(tool, args, file, records));
     std::printf("FIGURE fuzzyfeed_cli_%s %.2f million records/s (CPU time, median of %d, %zu records)\n", label,

@@ -64,8 +64,9 @@ std::uint64_t pulses(const PulseSummary& s) { return s.pulses[0] + s.pulses[1] +
 /// Max and RMS deviation of one method over random lines and arcs (mm).
 void deviation_study(StepMethod method, const char* name) {
   const auto d = study::deviation_over_random_moves(method, {200, 200, 400}, 10000, 7);
-  std::printf("FIGURE deviation_%s max %.5f mm rms %.5f mm over %llu events (5,000 lines, 5,000 arcs, 200/200/400 steps/mm)\n",
-              name, d.max_mm, d.rms_mm, static_cast<unsigned long long>(d.events));
+  std::printf(
+      "FIGURE deviation_%s max %.5f mm rms %.5f mm over %llu events (5,000 lines, 5,000 arcs, 200/200/400 steps/mm)\n",
+      name, d.max_mm, d.rms_mm, static_cast<unsigned long long>(d.events));
 }
 
 }  // namespace

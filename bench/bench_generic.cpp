@@ -61,9 +61,11 @@ int main() {
   const int repeats = bench::repeats({"BENCH_GENERIC_REPEATS", "BENCH_REPEATS"}, 5);
   const double setup = bench::cpu_seconds();
   const tk::primes::Number number{generic_prime(), std::nullopt};
-  std::printf("bench_generic: %zu-digit prime (%zu bits, set up in %.1f s), test_number vs mpz_probab_prime_p(n, 0), "
-              "%d repeats of ours-peer-peer-ours\n", number.value.get_str().size(),
-              mpz_sizeinbase(number.value.get_mpz_t(), 2), bench::cpu_seconds() - setup, repeats);
+  std::printf(
+      "bench_generic: %zu-digit prime (%zu bits, set up in %.1f s), test_number vs mpz_probab_prime_p(n, 0), "
+      "%d repeats of ours-peer-peer-ours\n",
+      number.value.get_str().size(), mpz_sizeinbase(number.value.get_mpz_t(), 2), bench::cpu_seconds() - setup,
+      repeats);
 
   bench::Results results("bench_generic");
   for (int r = 0; r < repeats; ++r) {

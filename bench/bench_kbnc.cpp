@@ -74,8 +74,9 @@ int main() {
   const auto mine = ours(kbnc_number(36629));
   const auto theirs = pari(composite_text);
   check_agree(composite_text, mine.prime, theirs.first, false);
-  std::printf("  composite %s: both say composite (ours: %s); ours %.4f s  peer %.4f s  ratio %.1f (once, not in "
-              "the median)\n", composite_text.c_str(), mine.witness.c_str(), mine.seconds, theirs.second,
-              theirs.second / mine.seconds);
+  std::printf(
+      "  composite %s: both say composite (ours: %s); ours %.4f s  peer %.4f s  ratio %.1f (once, not in "
+      "the median)\n",
+      composite_text.c_str(), mine.witness.c_str(), mine.seconds, theirs.second, theirs.second / mine.seconds);
   results.report(4.0);
 }

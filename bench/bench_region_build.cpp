@@ -186,13 +186,15 @@ Rates time_queries(const std::vector<Loop>& loops, int repeats) {
     std::unique_ptr<RegionIndex> index;
     index_build.push_back(bench::time_cpu([&] { index = std::make_unique<RegionIndex>(loops); }));
     std::unique_ptr<bgi::rtree<BValue, bgi::rstar<16>>> tree;
-    rtree_build.push_back(bench::time_cpu([&] { tree = std::make_unique<bgi::rtree<BValue, bgi::rstar<16>>>(values); }));
+    rtree_build.push_back(
+        bench::time_cpu([&] { tree = std::make_unique<bgi::rtree<BValue, bgi::rstar<16>>>(values); }));
     const auto ours = [&](const std::vector<Point>& at_points) {
       for (const Point& p : at_points) checksum += index->query(p).distance;
     };
     const auto peer = [&](const std::vector<Point>& at_points) {
       for (const Point& p : at_points)
-        for (auto it = tree->qbegin(bgi::nearest(BPoint{p.x, p.y}, 1)); it != tree->qend(); ++it) checksum += it->second;
+        for (auto it = tree->qbegin(bgi::nearest(BPoint{p.x, p.y}, 1)); it != tree->qend(); ++it)
+          checksum += it->second;
     };
     const auto [ours_random, peer_random] = bench::time_interleaved([&] { ours(points); }, [&] { peer(points); });
     const auto [ours_path, peer_path] = bench::time_interleaved([&] { ours(path); }, [&] { peer(path); });
@@ -237,16 +239,19 @@ std::vector<std::size_t> sizes() {
 int main(int argc, char** argv) {
   if (argc == 3 && std::string(argv[1]) == "--write-dxf") {
     for (const Shape& shape : kShapes)
-      for (std::size_t n : sizes()) write_dxf(std::string(argv[2]) + "/" + shape.name + "_" + std::to_string(n) + ".dxf", shape.make(n));
+      for (std::size_t n : sizes())
+        write_dxf(std::string(argv[2]) + "/" + shape.name + "_" + std::to_string(n) + ".dxf", shape.make(n));
     return 0;
   }
   const int repeats = bench::repeats({"BENCH_REGION_BUILD_REPEATS", "BENCH_REPEATS"}, 3);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("bench_region_build." + std::to_string(getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("bench_region_build." + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
-  std::printf("bench_region_build: DXF to ready index (tool radius 1 mm, outside), CPU ms, medians of %d runs\n", repeats);
+  std::printf("bench_region_build: DXF to ready index (tool radius 1 mm, outside), CPU ms, medians of %d runs\n",
+              repeats);
   std::printf("%-6s %7s %7s %7s %7s %7s %7s %7s %7s %7s %8s | %7s %7s | %6s %6s %6s %6s\n", "shape", "n", "read",
-              "loops", "index", "union", "offset", "exact", "contour", "uncut", "TOTAL", "build", "rtree", "rand", "rtree",
-              "path", "rtree");
+              "loops", "index", "union", "offset", "exact", "contour", "uncut", "TOTAL", "build", "rtree", "rand",
+              "rtree", "path", "rtree");
   double total_10k = 0, total_100k = 0, worst_random = 1e300, worst_path = 1e300;
   const char* only = std::getenv("BENCH_REGION_BUILD_SHAPES");
   for (const Shape& shape : kShapes) {
@@ -262,21 +267,24 @@ int main(int argc, char** argv) {
       const Rates q = time_queries(part.loops.loops, repeats);
       std::size_t elements = 0;
       for (const Loop& loop : part.loops.loops) elements += loop.segments.size();
-      std::printf("%-6s %7zu %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %8.1f | %7.2f %7.2f | %6.2f %6.2f %6.2f %6.2f\n",
-                  shape.name, elements, m.read * 1e3, m.loops * 1e3, m.index * 1e3, m.offset.even_odd_union * 1e3,
-                  m.offset.clipper_offset * 1e3, m.offset.exact_recovery * 1e3, m.offset.contour_index * 1e3,
-                  m.offset.uncut * 1e3, m.total * 1e3, q.index_build * 1e3, q.rtree_build * 1e3, q.random / 1e6,
-                  q.rtree_random / 1e6, q.path / 1e6, q.rtree_path / 1e6);
+      std::printf(
+          "%-6s %7zu %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %7.1f %8.1f | %7.2f %7.2f | %6.2f %6.2f %6.2f %6.2f\n",
+          shape.name, elements, m.read * 1e3, m.loops * 1e3, m.index * 1e3, m.offset.even_odd_union * 1e3,
+          m.offset.clipper_offset * 1e3, m.offset.exact_recovery * 1e3, m.offset.contour_index * 1e3,
+          m.offset.uncut * 1e3, m.total * 1e3, q.index_build * 1e3, q.rtree_build * 1e3, q.random / 1e6,
+          q.rtree_random / 1e6, q.path / 1e6, q.rtree_path / 1e6);
       std::fflush(stdout);
       if (n == 10000) at_10k = m.total, total_10k = std::max(total_10k, m.total);
       if (n == 100000) at_100k = m.total, total_100k = std::max(total_100k, m.total);
       worst_random = std::min(worst_random, q.random), worst_path = std::min(worst_path, q.path);
     }
     if (at_10k > 0 && at_100k > 0)
-      std::printf("FIGURE region_build_exponent_%s %.2f (goal <= 1.2, 10k to 100k)\n", shape.name, std::log10(at_100k / at_10k));
+      std::printf("FIGURE region_build_exponent_%s %.2f (goal <= 1.2, 10k to 100k)\n", shape.name,
+                  std::log10(at_100k / at_10k));
   }
-  std::printf("(index build and rtree: the drawing's index alone against Boost's packed R-tree; rand / path: million "
-              "queries a second, ours signed distance + nearest point, the rtree's nearest segment)\n");
+  std::printf(
+      "(index build and rtree: the drawing's index alone against Boost's packed R-tree; rand / path: million "
+      "queries a second, ours signed distance + nearest point, the rtree's nearest segment)\n");
   if (total_10k > 0) std::printf("FIGURE region_ready_10k_worst %.3f s (goal <= 0.1)\n", total_10k);
   if (total_100k > 0) std::printf("FIGURE region_ready_100k_worst %.3f s (goal <= 1.5)\n", total_100k);
   std::printf("FIGURE region_queries_random_worst %.2f million/s (goal 5)\n", worst_random / 1e6);

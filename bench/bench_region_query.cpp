@@ -70,13 +70,13 @@ std::vector<Segment> slot(Point c, double angle, double length, double r) {
 }
 
 std::vector<Segment> part() {
-  std::vector<Segment> all = gear(95, 100, 700, 12);                  // 8,400
-  for (const Segment& s : gear(14, 16, 60, 20)) all.push_back(s);     // splined bore, 1,200
-  for (int i = 0; i < 100; ++i) {                                // bolt holes, 200
+  std::vector<Segment> all = gear(95, 100, 700, 12);               // 8,400
+  for (const Segment& s : gear(14, 16, 60, 20)) all.push_back(s);  // splined bore, 1,200
+  for (int i = 0; i < 100; ++i) {                                  // bolt holes, 200
     const double r = i % 2 ? 70 : 45;
     for (const Segment& s : circle(polar(r, 2 * kPi * i / 100 + (i % 2) * 0.02), 1.2)) all.push_back(s);
   }
-  for (int i = 0; i < 50; ++i)                                   // slots, 200
+  for (int i = 0; i < 50; ++i)  // slots, 200
     for (const Segment& s : slot(polar(58, 2 * kPi * (i + 0.5) / 50), 2 * kPi * (i + 0.5) / 50 + kPi / 2, 3, 0.8))
       all.push_back(s);
   return all;
@@ -103,9 +103,10 @@ int main() {
     const Point on = point_at(s, t(random));
     points.push_back({on.x + hair(random), on.y + hair(random)});
   }
-  std::printf("bench_region_query: RegionIndex vs brute force, %zu elements in %zu loops, %zu points "
-              "(index 50 passes, brute force 1), %d repeats\n",
-              elements, set.loops.size(), points.size(), repeats);
+  std::printf(
+      "bench_region_query: RegionIndex vs brute force, %zu elements in %zu loops, %zu points "
+      "(index 50 passes, brute force 1), %d repeats\n",
+      elements, set.loops.size(), points.size(), repeats);
   std::printf("FIGURE index_build %.1f ms\n", build * 1e3);
 
   const int passes = 50;

@@ -16,8 +16,8 @@
 #include "bench_common.hpp"
 #include "primes/fft_plans.hpp"
 #include "primes/fft_squaring.hpp"
-#include "primes/right_angle_transform.hpp"
 #include "primes/riesel_proof.hpp"
+#include "primes/right_angle_transform.hpp"
 #include "primes/weighted_squaring.hpp"
 
 namespace {
@@ -41,19 +41,25 @@ void compare_squarers(std::uint64_t k, std::uint64_t n, int rounds, int repeats)
   padded->load(x);
   bench::Results results("bench_riesel_square_" + std::to_string(n));
   for (int r = 0; r < repeats; ++r) {
-    const auto [ours, peer] = bench::time_interleaved([&] { for (int i = 0; i < rounds; ++i) weighted->square_minus(2); },
-                                                       [&] { for (int i = 0; i < rounds; ++i) padded->square_minus(2); });
+    const auto [ours, peer] = bench::time_interleaved(
+        [&] {
+          for (int i = 0; i < rounds; ++i) weighted->square_minus(2);
+        },
+        [&] {
+          for (int i = 0; i < rounds; ++i) padded->square_minus(2);
+        });
     results.add(ours / rounds * 1e3, peer / rounds * 1e3);
   }
   mpz_class a, b;
   weighted->store(a);
   padded->store(b);
   if (a != b) bench::fail("the two squarers disagree after the same squarings");
-  std::printf("FIGURE square_%llu ms per squaring (medians above: weighted, padded FFT): lengths %zu and %zu, digits "
-              "up to %d and %d bits, %llu and %llu squares redone, worst rounding %.3f and %.3f\n",
-              static_cast<unsigned long long>(n), weighted->transform_length(), padded->transform_length(),
-              weighted->digit_bits(), padded->digit_bits(), static_cast<unsigned long long>(weighted->fallbacks()),
-              static_cast<unsigned long long>(padded->fallbacks()), weighted->worst_roundoff(), padded->worst_roundoff());
+  std::printf(
+      "FIGURE square_%llu ms per squaring (medians above: weighted, padded FFT): lengths %zu and %zu, digits "
+      "up to %d and %d bits, %llu and %llu squares redone, worst rounding %.3f and %.3f\n",
+      static_cast<unsigned long long>(n), weighted->transform_length(), padded->transform_length(),
+      weighted->digit_bits(), padded->digit_bits(), static_cast<unsigned long long>(weighted->fallbacks()),
+      static_cast<unsigned long long>(padded->fallbacks()), weighted->worst_roundoff(), padded->worst_roundoff());
   results.report(1.0);
 }
 
@@ -67,14 +73,21 @@ void compare_transforms(std::size_t length, int rounds, int repeats, RightAngleS
   double* input = fftw_alloc_real(length);
   double* output = fftw_alloc_real(length);
   fftw_complex* spectrum = fftw_alloc_complex(length / 2 + 1);
-  for (std::size_t j = 0; j < length; ++j) input[j] = j < length / 2 ? static_cast<double>((j * 7919) % 65536) - 32768.0 : 0.0;
+  for (std::size_t j = 0; j < length; ++j)
+    input[j] = j < length / 2 ? static_cast<double>((j * 7919) % 65536) - 32768.0 : 0.0;
   bench::Results results("bench_riesel_transform_" + std::to_string(length));
   for (int r = 0; r < repeats; ++r) {
-    const auto [mine, fftw] = bench::time_interleaved([&] { for (int i = 0; i < rounds; ++i) ours->square(input, output); },
-                                                       [&] { for (int i = 0; i < rounds; ++i) square_by_real_fft(*plans, input, spectrum, output, length); });
+    const auto [mine, fftw] = bench::time_interleaved(
+        [&] {
+          for (int i = 0; i < rounds; ++i) ours->square(input, output);
+        },
+        [&] {
+          for (int i = 0; i < rounds; ++i) square_by_real_fft(*plans, input, spectrum, output, length);
+        });
     results.add(mine / rounds * 1e6, fftw / rounds * 1e6);
   }
-  std::printf("FIGURE transform_%zu us per acyclic square (medians above: ours with %d lanes, FFTW)\n", length, ours->lanes());
+  std::printf("FIGURE transform_%zu us per acyclic square (medians above: ours with %d lanes, FFTW)\n", length,
+              ours->lanes());
   results.report(1.0);
   fftw_free(input);
   fftw_free(output);
@@ -87,7 +100,8 @@ int main() {
   const int repeats = bench::repeats({"BENCH_RIESEL_REPEATS", "BENCH_REPEATS"}, 3);
   if (const char* widths = std::getenv("BENCH_RIESEL_TRANSFORMS")) {  // "avx2", else the widest
     const auto simd = std::string(widths) == "avx2" ? RightAngleSquarer::Simd::avx2 : RightAngleSquarer::Simd::best;
-    for (std::size_t length : {4096, 6144, 9216, 16384, 18432, 36864}) compare_transforms(length, 20000000 / length, 5, simd);
+    for (std::size_t length : {4096, 6144, 9216, 16384, 18432, 36864})
+      compare_transforms(length, 20000000 / length, 5, simd);
     return 0;
   }
   const std::uint64_t k = 778965587811, n = 36627;
@@ -104,8 +118,10 @@ int main() {
   }
   results.report(20.0);
 
-  std::printf("bench_riesel: squaring alone, weighted transform vs the padded FFT, %d repeats (the \"s\" below are ms per squaring)\n",
-              2 * repeats + 1);
+  std::printf(
+      "bench_riesel: squaring alone, weighted transform vs the padded FFT, %d repeats (the \"s\" below are ms per "
+      "squaring)\n",
+      2 * repeats + 1);
   compare_squarers(k, n, 2000, 2 * repeats + 1);
   compare_squarers(16869987339975, 171960, 300, 2 * repeats + 1);
 
@@ -118,10 +134,11 @@ int main() {
     const double gmp_seconds = bench::time_cpu([&] { by_gmp = llr_prove(16869987339975, 171960, LlrStart::llr, gmp); });
     if (by_fft.verdict != Verdict::prime || by_gmp.verdict != Verdict::prime)
       bench::fail("16869987339975*2^171960-1 is not proved prime");
-    std::printf("FIGURE llr_171960 %.1f s with the weighted transform (length %zu, %llu squares redone, %.4f ms per "
-                "squaring), %.1f s with GMP: ratio %.2f (one run; goal at most 15 s)\n",
-                fft_seconds, by_fft.fft_length, static_cast<unsigned long long>(by_fft.fft_fallbacks),
-                fft_seconds / static_cast<double>(by_fft.iterations) * 1e3, gmp_seconds, gmp_seconds / fft_seconds);
+    std::printf(
+        "FIGURE llr_171960 %.1f s with the weighted transform (length %zu, %llu squares redone, %.4f ms per "
+        "squaring), %.1f s with GMP: ratio %.2f (one run; goal at most 15 s)\n",
+        fft_seconds, by_fft.fft_length, static_cast<unsigned long long>(by_fft.fft_fallbacks),
+        fft_seconds / static_cast<double>(by_fft.iterations) * 1e3, gmp_seconds, gmp_seconds / fft_seconds);
   }
   return 0;
 }

@@ -82,11 +82,14 @@ FeedDriveConfig default_run(ControllerKind kind) {
 /// ours / peer agreement on the run's rms error.
 void check_agreement(const char* name, const FeedDriveSummary& ours, const FeedDriveSummary& peer) {
   const double relative = std::abs(ours.rms_error_mm - peer.rms_error_mm) / peer.rms_error_mm;
-  std::printf("  %s: rms error ours %.6e mm, RK4 %.6e mm (%.3f %% apart); max error %.4e / %.4e mm; chattering %.4e / %.4e N/s\n",
-              name, ours.rms_error_mm, peer.rms_error_mm, 100 * relative, ours.max_error_mm, peer.max_error_mm,
-              ours.chattering_n_s, peer.chattering_n_s);
+  std::printf(
+      "  %s: rms error ours %.6e mm, RK4 %.6e mm (%.3f %% apart); max error %.4e / %.4e mm; chattering %.4e / %.4e "
+      "N/s\n",
+      name, ours.rms_error_mm, peer.rms_error_mm, 100 * relative, ours.max_error_mm, peer.max_error_mm,
+      ours.chattering_n_s, peer.chattering_n_s);
   if (ours.diverged || peer.diverged || ours.plant_steps != peer.plant_steps || !(relative < 0.02))
-    bench::fail(std::string(name) + ": the exact step and RK4 disagree (rms error more than 2 % apart, or a diverged run)");
+    bench::fail(std::string(name) +
+                ": the exact step and RK4 disagree (rms error more than 2 % apart, or a diverged run)");
 }
 
 /// The bare plant, `steps` steps of h = 1e-5 s under the default cut with a
@@ -125,7 +128,8 @@ struct BarePlant {
     Rk4Integrator rk4(c);
     rk4.configure(c.plant.mass_kg, c.plant.damping_kg_s);
     AxisState axis;
-    for (std::uint64_t period = 0; period < steps / 10; ++period) rk4.advance(axis, force_at(period), static_cast<double>(period) * c.period_s);
+    for (std::uint64_t period = 0; period < steps / 10; ++period)
+      rk4.advance(axis, force_at(period), static_cast<double>(period) * c.period_s);
     return axis.x;
   }
 };
@@ -173,7 +177,8 @@ int main() {
     const char* text = std::getenv("BENCH_SMCSIM_SWEEP");
     return text ? std::max(0, std::atoi(text)) : 1000;
   }();
-  std::printf("bench_smcsim: the default 10 s feed-drive run (1e6 plant steps), exact step vs RK4 (ode4), %d repeats\n", repeats);
+  std::printf("bench_smcsim: the default 10 s feed-drive run (1e6 plant steps), exact step vs RK4 (ode4), %d repeats\n",
+              repeats);
 
   // (a) The full loop, one thread, ours against the RK4 loop.
   for (const auto& [name, kind] : {std::pair{"smc", ControllerKind::smc}, std::pair{"sta", ControllerKind::sta}}) {
@@ -189,9 +194,11 @@ int main() {
       rates.push_back(static_cast<double>(ours_summary.plant_steps) / ours);
     }
     const double rate = bench::median(rates);
-    std::printf("FIGURE smcsim_loop_%s %.2f million plant steps/s on one core (CPU time, median of %d, range %.2f-%.2f; goal 10; %s)\n",
-                name, rate / 1e6, repeats, *std::min_element(rates.begin(), rates.end()) / 1e6,
-                *std::max_element(rates.begin(), rates.end()) / 1e6, verdict(rate >= 10e6));
+    std::printf(
+        "FIGURE smcsim_loop_%s %.2f million plant steps/s on one core (CPU time, median of %d, range %.2f-%.2f; goal "
+        "10; %s)\n",
+        name, rate / 1e6, repeats, *std::min_element(rates.begin(), rates.end()) / 1e6,
+        *std::max_element(rates.begin(), rates.end()) / 1e6, verdict(rate >= 10e6));
     results.report(1);
   }
 
@@ -199,8 +206,10 @@ int main() {
   {
     const BarePlant bare(5'000'000);
     const double x_ours = bare.ours(), x_peer = bare.peer();
-    std::printf("  bare plant, %llu steps: x ours %.9e, RK4 %.9e\n", static_cast<unsigned long long>(bare.steps), x_ours, x_peer);
-    if (!(std::abs(x_ours - x_peer) <= 1e-6 * std::abs(x_peer))) bench::fail("the bare exact step and RK4 end in different places");
+    std::printf("  bare plant, %llu steps: x ours %.9e, RK4 %.9e\n", static_cast<unsigned long long>(bare.steps),
+                x_ours, x_peer);
+    if (!(std::abs(x_ours - x_peer) <= 1e-6 * std::abs(x_peer)))
+      bench::fail("the bare exact step and RK4 end in different places");
     bench::Results results("smcsim_plant_rk4");
     std::vector<double> rates;
     double sink = 0;
@@ -211,9 +220,11 @@ int main() {
     }
     if (!std::isfinite(sink)) bench::fail("the bare plant diverged");
     const double rate = bench::median(rates);
-    std::printf("FIGURE smcsim_plant_step %.1f million steps/s on one core (DrivePlant::step + Stepper, median of %d, range %.1f-%.1f)\n",
-                rate / 1e6, repeats, *std::min_element(rates.begin(), rates.end()) / 1e6,
-                *std::max_element(rates.begin(), rates.end()) / 1e6);
+    std::printf(
+        "FIGURE smcsim_plant_step %.1f million steps/s on one core (DrivePlant::step + Stepper, median of %d, range "
+        "%.1f-%.1f)\n",
+        rate / 1e6, repeats, *std::min_element(rates.begin(), rates.end()) / 1e6,
+        *std::max_element(rates.begin(), rates.end()) / 1e6);
     results.report(1);
   }
 
@@ -229,21 +240,25 @@ int main() {
       if (one.rms != two.rms) bench::fail("the sweep on 2 threads gave other results than on 1");
       speedups.push_back(one.wall_s / two.wall_s);
       cores.push_back(two.cpu_s / two.wall_s);
-      std::printf("  %d settings: 1 thread %.2f s wall (%.2f cores), 2 threads %.2f s wall (%.2f cores): speed-up %.2f\n",
-                  settings, one.wall_s, one.cpu_s / one.wall_s, two.wall_s, cores.back(), speedups.back());
+      std::printf(
+          "  %d settings: 1 thread %.2f s wall (%.2f cores), 2 threads %.2f s wall (%.2f cores): speed-up %.2f\n",
+          settings, one.wall_s, one.cpu_s / one.wall_s, two.wall_s, cores.back(), speedups.back());
     }
-    std::printf("FIGURE smcsim_sweep_speedup_2_threads %.2f (wall, %d settings, median of %d, range %.2f-%.2f; the 2-thread "
-                "runs got %.2f cores, median CPU/wall)\n",
-                bench::median(speedups), settings, pairs, *std::min_element(speedups.begin(), speedups.end()),
-                *std::max_element(speedups.begin(), speedups.end()), bench::median(cores));
+    std::printf(
+        "FIGURE smcsim_sweep_speedup_2_threads %.2f (wall, %d settings, median of %d, range %.2f-%.2f; the 2-thread "
+        "runs got %.2f cores, median CPU/wall)\n",
+        bench::median(speedups), settings, pairs, *std::min_element(speedups.begin(), speedups.end()),
+        *std::max_element(speedups.begin(), speedups.end()), bench::median(cores));
   }
   if (sweep_settings > 0) {
     const SweepRun run = sweep(sweep_settings, 2);
     const double goal_s = static_cast<double>(sweep_settings) * 1e6 / (2 * 10e6);  // 10 M steps/s on each of 2 cores
-    std::printf("FIGURE smcsim_sweep_%d %.1f s wall on 2 threads (%.1f s CPU, %.2f cores; %.2f million plant steps/s in all, "
-                "%.2f per CPU second; goal %.0f s; %s)\n",
-                sweep_settings, run.wall_s, run.cpu_s, run.cpu_s / run.wall_s, static_cast<double>(run.plant_steps) / run.wall_s / 1e6,
-                static_cast<double>(run.plant_steps) / run.cpu_s / 1e6, goal_s, verdict(run.wall_s <= goal_s));
+    std::printf(
+        "FIGURE smcsim_sweep_%d %.1f s wall on 2 threads (%.1f s CPU, %.2f cores; %.2f million plant steps/s in all, "
+        "%.2f per CPU second; goal %.0f s; %s)\n",
+        sweep_settings, run.wall_s, run.cpu_s, run.cpu_s / run.wall_s,
+        static_cast<double>(run.plant_steps) / run.wall_s / 1e6, static_cast<double>(run.plant_steps) / run.cpu_s / 1e6,
+        goal_s, verdict(run.wall_s <= goal_s));
   }
   return 0;
 }

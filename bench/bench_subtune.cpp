@@ -65,7 +65,8 @@ std::uint64_t env_count(const char* name, std::uint64_t fallback) {
 
 /// The lathe: size of part i (from 0) = nominal + wear·i + offset + noise,
 /// the offset the sum of the control's corrections so far.
-std::vector<double> closed_loop_stream(const SubTuneSettings& settings, double wear_mm, std::uint64_t parts, std::uint64_t seed) {
+std::vector<double> closed_loop_stream(const SubTuneSettings& settings, double wear_mm, std::uint64_t parts,
+                                       std::uint64_t seed) {
   constexpr double nominal_mm = 40, sigma_mm = 3e-3;
   std::mt19937_64 random(seed);
   std::normal_distribution<double> noise(0, sigma_mm);
@@ -145,8 +146,8 @@ void run_gsl(const SubTuneSettings& settings, const double* sizes, std::uint64_t
 void check_same(const char* name, const Trace& ours, const Trace& peer) {
   for (std::size_t i = 0; i < std::min(ours.decisions.size(), peer.decisions.size()); ++i)
     if (ours.decisions[i] != peer.decisions[i])
-      bench::fail(std::string(name) + ": SubTuner and the GSL refit decide differently at part " + std::to_string(i + 1) + " (" +
-                  std::string(tk::quality::decision_name(ours.decisions[i])) + " / " +
+      bench::fail(std::string(name) + ": SubTuner and the GSL refit decide differently at part " +
+                  std::to_string(i + 1) + " (" + std::string(tk::quality::decision_name(ours.decisions[i])) + " / " +
                   std::string(tk::quality::decision_name(peer.decisions[i])) + ")");
   if (ours.decisions.size() != peer.decisions.size() || ours.corrections.size() != peer.corrections.size())
     bench::fail(std::string(name) + ": the two traces differ in length");
@@ -156,8 +157,8 @@ void check_same(const char* name, const Trace& ours, const Trace& peer) {
     const double relative = std::abs(a - b) / std::max(std::abs(b), 1e-300);
     worst = std::max(worst, relative);
     if (!(relative <= 1e-9))
-      bench::fail(std::string(name) + ": correction " + std::to_string(k + 1) + " differs: " + std::to_string(a) + " / " +
-                  std::to_string(b) + " mm");
+      bench::fail(std::string(name) + ": correction " + std::to_string(k + 1) + " differs: " + std::to_string(a) +
+                  " / " + std::to_string(b) + " mm");
   }
   std::printf("  %s: identical decisions on %zu parts, %zu sub-tunes, corrections within %.1e relative\n", name,
               ours.decisions.size(), ours.corrections.size(), worst);
@@ -188,9 +189,10 @@ void bench_case(const Case& c, std::uint64_t parts, std::uint64_t peer_parts, in
   Tally full;
   run_ours(c.settings, sizes.data(), parts, full);
   // Mean run length over the finished runs; the last, open run is left out.
-  const double mean_run = full.subtunes ? static_cast<double>(full.last_subtune + 1) / static_cast<double>(full.subtunes) : NAN;
-  std::printf("  %s: %llu parts, %llu sub-tunes, mean run length %.2f parts\n", c.name, static_cast<unsigned long long>(parts),
-              static_cast<unsigned long long>(full.subtunes), mean_run);
+  const double mean_run =
+      full.subtunes ? static_cast<double>(full.last_subtune + 1) / static_cast<double>(full.subtunes) : NAN;
+  std::printf("  %s: %llu parts, %llu sub-tunes, mean run length %.2f parts\n", c.name,
+              static_cast<unsigned long long>(parts), static_cast<unsigned long long>(full.subtunes), mean_run);
 
   bench::Results results(std::string("subtune_gsl_") + c.name);
   for (int r = 0; r < repeats; ++r) {
@@ -205,14 +207,17 @@ void bench_case(const Case& c, std::uint64_t parts, std::uint64_t peer_parts, in
   for (int r = 0; r < repeats; ++r) {
     Tally again;
     const double seconds = bench::time_cpu([&] { run_ours(c.settings, sizes.data(), parts, again); });
-    if (again.subtunes != full.subtunes || again.corrections != full.corrections) bench::fail(std::string(c.name) + ": a rerun differs");
+    if (again.subtunes != full.subtunes || again.corrections != full.corrections)
+      bench::fail(std::string(c.name) + ": a rerun differs");
     rates.push_back(static_cast<double>(parts) / seconds);
   }
   const double rate = bench::median(rates);
-  std::printf("FIGURE subtune_rate_%s %.1f million parts/s on one core (SubTuner::observe, %llu parts, mean run %.1f; CPU time, "
-              "median of %d, range %.1f-%.1f; goal 10; %s)\n",
-              c.name, rate / 1e6, static_cast<unsigned long long>(parts), mean_run, repeats, range_low(rates) / 1e6,
-              range_high(rates) / 1e6, verdict(rate >= 10e6));
+  std::printf(
+      "FIGURE subtune_rate_%s %.1f million parts/s on one core (SubTuner::observe, %llu parts, mean run %.1f; CPU "
+      "time, "
+      "median of %d, range %.1f-%.1f; goal 10; %s)\n",
+      c.name, rate / 1e6, static_cast<unsigned long long>(parts), mean_run, repeats, range_low(rates) / 1e6,
+      range_high(rates) / 1e6, verdict(rate >= 10e6));
   std::printf("FIGURE subtune_mean_run_%s %.2f parts per run (%llu sub-tunes in %llu parts)\n", c.name, mean_run,
               static_cast<unsigned long long>(full.subtunes), static_cast<unsigned long long>(parts));
   results.report(1);
@@ -250,7 +255,9 @@ double run_child(const std::vector<std::string>& args, const std::string& out) {
   rusage usage{};
   if (wait4(pid, &status, 0, &usage) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     bench::fail(args[0] + " failed (status " + std::to_string(status) + ")");
-  const auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
+  };
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
@@ -288,8 +295,8 @@ void bench_tool(std::uint64_t parts, int repeats) {
   const std::uint64_t jsonl_subtunes = count_occurrences(output, "\"subtune\"");
   run_child({tool.string(), "--csv", input}, output);
   const std::uint64_t csv_subtunes = count_occurrences(output, ",subtune,");
-  std::printf("  tool %s, %llu sizes: %llu sub-tunes in the JSON Lines, %llu in the CSV, %llu from SubTuner\n", tool.c_str(),
-              static_cast<unsigned long long>(parts), static_cast<unsigned long long>(jsonl_subtunes),
+  std::printf("  tool %s, %llu sizes: %llu sub-tunes in the JSON Lines, %llu in the CSV, %llu from SubTuner\n",
+              tool.c_str(), static_cast<unsigned long long>(parts), static_cast<unsigned long long>(jsonl_subtunes),
               static_cast<unsigned long long>(csv_subtunes), static_cast<unsigned long long>(expected.subtunes));
   if (jsonl_subtunes != expected.subtunes || csv_subtunes != expected.subtunes)
     bench::fail("the subtune tool's decisions differ from SubTuner's");
@@ -301,10 +308,12 @@ void bench_tool(std::uint64_t parts, int repeats) {
     std::vector<double> rates;
     for (int r = 0; r < repeats; ++r) rates.push_back(static_cast<double>(parts) / run_child(args, "/dev/null"));
     const double rate = bench::median(rates);
-    std::printf("FIGURE subtune_tool_%s %.2f million parts/s (subtune FILE%s > /dev/null, %llu sizes, child CPU time, median of %d, "
-                "range %.2f-%.2f; goal 10; %s)\n",
-                csv ? "csv" : "jsonl", rate / 1e6, csv ? " --csv" : "", static_cast<unsigned long long>(parts), repeats,
-                range_low(rates) / 1e6, range_high(rates) / 1e6, verdict(rate >= 10e6));
+    std::printf(
+        "FIGURE subtune_tool_%s %.2f million parts/s (subtune FILE%s > /dev/null, %llu sizes, child CPU time, median "
+        "of %d, "
+        "range %.2f-%.2f; goal 10; %s)\n",
+        csv ? "csv" : "jsonl", rate / 1e6, csv ? " --csv" : "", static_cast<unsigned long long>(parts), repeats,
+        range_low(rates) / 1e6, range_high(rates) / 1e6, verdict(rate >= 10e6));
   }
   fs::remove_all(dir);
 }
@@ -318,8 +327,11 @@ int main() {
   const std::uint64_t peer_parts = env_count("BENCH_SUBTUNE_PEER_PARTS", 1'000'000);
   const std::uint64_t tool_parts = env_count("BENCH_SUBTUNE_TOOL_PARTS", 1'000'000);
   if (parts == 0 || peer_parts == 0) bench::fail("BENCH_SUBTUNE_PARTS and BENCH_SUBTUNE_PEER_PARTS must be positive");
-  std::printf("bench_subtune: closed-loop lathe (40 mm, wear 0.4 or 0.01 um/part, sigma 3 um), SubTuner vs a GSL refit per part, "
-              "%d repeats\n", repeats);
+  std::printf(
+      "bench_subtune: closed-loop lathe (40 mm, wear 0.4 or 0.01 um/part, sigma 3 um), SubTuner vs a GSL refit per "
+      "part, "
+      "%d repeats\n",
+      repeats);
 
   SubTuneSettings paper;  // the paper's eq. (6), α = 0.05
   paper.statistic = TrendStatistic::paper;
@@ -327,8 +339,9 @@ int main() {
   paper_strict.alpha = 1e-6;
   SubTuneSettings slope_strict = paper_strict;
   slope_strict.statistic = TrendStatistic::slope;
-  for (const Case& c : {Case{"paper", paper, kWearMm}, Case{"paper_a1e-6", paper_strict, kWearMm},
-                        Case{"paper_a1e-6_slow", paper_strict, kSlowWearMm}, Case{"slope_a1e-6_slow", slope_strict, kSlowWearMm}})
+  for (const Case& c :
+       {Case{"paper", paper, kWearMm}, Case{"paper_a1e-6", paper_strict, kWearMm},
+        Case{"paper_a1e-6_slow", paper_strict, kSlowWearMm}, Case{"slope_a1e-6_slow", slope_strict, kSlowWearMm}})
     bench_case(c, parts, peer_parts, repeats);
 
   if (tool_parts > 0) bench_tool(tool_parts, repeats);

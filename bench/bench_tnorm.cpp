@@ -51,12 +51,14 @@ fl::Engine* fuzzylite_engine(const tk::fuzzy::Engine& ours, int resolution) {
   auto* engine = new fl::Engine(ours.name);
   for (const auto& v : ours.inputs) {
     auto* in = new fl::InputVariable(v.name, v.min, v.max);
-    for (const auto& t : v.terms) in->addTerm(new fl::Trapezoid(t.name, t.points.a, t.points.b, t.points.c, t.points.d));
+    for (const auto& t : v.terms)
+      in->addTerm(new fl::Trapezoid(t.name, t.points.a, t.points.b, t.points.c, t.points.d));
     engine->addInputVariable(in);
   }
   for (const auto& v : ours.outputs) {
     auto* out = new fl::OutputVariable(v.name, v.min, v.max);
-    for (const auto& t : v.terms) out->addTerm(new fl::Trapezoid(t.name, t.points.a, t.points.b, t.points.c, t.points.d));
+    for (const auto& t : v.terms)
+      out->addTerm(new fl::Trapezoid(t.name, t.points.a, t.points.b, t.points.c, t.points.d));
     out->setAggregation(new fl::Maximum);
     out->setDefuzzifier(new fl::Centroid(resolution));
     out->setDefaultValue(v.default_value);
@@ -101,8 +103,8 @@ int main() {
   std::printf("%-14s %12s %12s %12s %10s %10s %12s\n", "tnorm", "ours ns", "exact ns", "fuzzylite ns", "ratio",
               "exact/fl", "max |diff|");
   std::vector<double> worst_ratio, worst_exact_ratio, ours_2048, exact_2048, peer_2048;
-  for (TNorm t : {TNorm::minimum, TNorm::product, TNorm::drastic, TNorm::lukasiewicz, TNorm::trigonometric,
-                  TNorm::hamacher}) {
+  for (TNorm t :
+       {TNorm::minimum, TNorm::product, TNorm::drastic, TNorm::lukasiewicz, TNorm::trigonometric, TNorm::hamacher}) {
     tk::fuzzy::LineFollowerOptions options;
     options.conjunction = t;
     options.defuzzifier.resolution = resolution;
@@ -177,8 +179,10 @@ int main() {
   // run.sh's RESULT lines: the t-norm with the smallest ratio, its seconds
   // per 2 x 1024 inferences (the paper's protocol) for ours and fuzzylite.
   const std::size_t w = std::min_element(worst_ratio.begin(), worst_ratio.end()) - worst_ratio.begin();
-  const std::size_t we = std::min_element(worst_exact_ratio.begin(), worst_exact_ratio.end()) - worst_exact_ratio.begin();
+  const std::size_t we =
+      std::min_element(worst_exact_ratio.begin(), worst_exact_ratio.end()) - worst_exact_ratio.begin();
   std::printf("RESULT tnorm_discrete %.6f %.6f %.4f 20 %d\n", ours_2048[w], peer_2048[w], worst_ratio[w], repeats);
-  std::printf("RESULT tnorm_exact %.6f %.6f %.4f 20 %d\n", exact_2048[we], peer_2048[we], worst_exact_ratio[we], repeats);
+  std::printf("RESULT tnorm_exact %.6f %.6f %.4f 20 %d\n", exact_2048[we], peer_2048[we], worst_exact_ratio[we],
+              repeats);
   return 0;
 }

@@ -47,14 +47,16 @@ int main() {
   check_agree(numbers, expected, peer());
   std::size_t primes = 0;
   for (unsigned char v : expected) primes += v;
-  std::printf("bench_u64: %zu random odd 64-bit numbers (%zu primes), is_prime_u64 vs FLINT n_is_prime, %d repeats of ours-peer-peer-ours\n",
-              kCount, primes, repeats);
+  std::printf(
+      "bench_u64: %zu random odd 64-bit numbers (%zu primes), is_prime_u64 vs FLINT n_is_prime, %d repeats of "
+      "ours-peer-peer-ours\n",
+      kCount, primes, repeats);
 
   bench::Results results("bench_u64");
   for (int r = 0; r < repeats; ++r) {
     std::vector<std::vector<unsigned char>> mine, theirs;  // the verdicts of every run
-    const auto [t_ours, t_peer] = bench::time_interleaved([&] { mine.push_back(ours()); },
-                                                          [&] { theirs.push_back(peer()); });
+    const auto [t_ours, t_peer] =
+        bench::time_interleaved([&] { mine.push_back(ours()); }, [&] { theirs.push_back(peer()); });
     for (const auto& m : mine)
       for (const auto& t : theirs) check_agree(numbers, m, t);
     results.add(t_ours, t_peer);

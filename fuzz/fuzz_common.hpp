@@ -32,7 +32,6 @@ inline bool oracle_enabled(std::string_view name) {
   std::abort();
 }
 
-
 /// An in-memory file with a path that fopen() accepts, reused across runs.
 class MemoryFile {
  public:

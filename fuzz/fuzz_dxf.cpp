@@ -43,15 +43,15 @@ void check(const Drawing& d, std::string_view bytes, const DxfReadOptions& optio
   std::size_t entities_with_segments = 0;
   for (std::size_t i = 0; i < d.segments.size(); ++i) {
     const Segment& s = d.segments[i];
-    if (oracle_enabled("finite") && !(std::isfinite(s.start.x) && std::isfinite(s.start.y) &&
-                                      std::isfinite(s.end.x) && std::isfinite(s.end.y) && std::isfinite(s.bulge)))
+    if (oracle_enabled("finite") && !(std::isfinite(s.start.x) && std::isfinite(s.start.y) && std::isfinite(s.end.x) &&
+                                      std::isfinite(s.end.y) && std::isfinite(s.bulge)))
       invariant_failed("finite", "segment " + std::to_string(i) + " of entity " + std::to_string(s.entity));
     if (oracle_enabled("layer") && s.layer >= d.layers.size())
       invariant_failed("layer", "layer " + std::to_string(s.layer) + " of " + std::to_string(d.layers.size()));
     if (i == 0 || s.entity != d.segments[i - 1].entity) ++entities_with_segments;
     if (oracle_enabled("order") && i > 0 && s.entity < d.segments[i - 1].entity)
-      invariant_failed("order", "entity " + std::to_string(s.entity) + " after " +
-                                    std::to_string(d.segments[i - 1].entity));
+      invariant_failed("order",
+                       "entity " + std::to_string(s.entity) + " after " + std::to_string(d.segments[i - 1].entity));
     if (oracle_enabled("line") && (d.binary ? s.source_line != 0 : s.source_line == 0 || s.source_line > lines))
       invariant_failed("line", "source line " + std::to_string(s.source_line) + " of " + std::to_string(lines));
   }

@@ -126,8 +126,8 @@ void run(std::string_view bytes) {
       for (int axis = 0; axis < 3; ++axis) {
         const int d = pulse.delta[axis];
         if (check_event && (d < -1 || d > 1))
-          tk::fuzz::invariant_failed("event", "axis " + std::to_string(axis) + " moved " + std::to_string(d) +
-                                                  " steps in one event");
+          tk::fuzz::invariant_failed(
+              "event", "axis " + std::to_string(axis) + " moved " + std::to_string(d) + " steps in one event");
         any = any || d != 0;
         moved[axis] += d;
       }
@@ -135,8 +135,8 @@ void run(std::string_view bytes) {
       if (check_time) {
         if (!std::isfinite(pulse.t)) tk::fuzz::invariant_failed("time", "a pulse at a non-finite time");
         if (pulse.t < last_t - 1e-9 * std::max(1.0, last_t))
-          tk::fuzz::invariant_failed("time", "a pulse at " + std::to_string(pulse.t) + " s after one at " +
-                                                 std::to_string(last_t) + " s");
+          tk::fuzz::invariant_failed(
+              "time", "a pulse at " + std::to_string(pulse.t) + " s after one at " + std::to_string(last_t) + " s");
       }
       last_t = std::max(last_t, pulse.t);
     }

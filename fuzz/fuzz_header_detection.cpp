@@ -49,8 +49,8 @@ std::string_view first_line(std::string_view bytes) {
   return {};
 }
 
-void read_as(const std::string& path, tk::io::NativeFormatProbe probe, const tk::io::ColumnSets& needs,
-             bool json_first, std::size_t max_lines) {
+void read_as(const std::string& path, tk::io::NativeFormatProbe probe, const tk::io::ColumnSets& needs, bool json_first,
+             std::size_t max_lines) {
   tk::io::RecordReader reader({path}, std::move(probe));
   reader.expect_columns(needs);
   std::size_t errors = 0, records = 0;
@@ -88,8 +88,7 @@ void run(std::string_view bytes) {
   const std::size_t start = first.find_first_not_of(" \t\r\f\v");
   const bool json_first = start != std::string_view::npos && first[start] == '{';
   read_as(file.path(), tk::io::number_column_probe("size"), {{"size"}}, json_first, max_lines);
-  read_as(file.path(), tk::threads::designation_lines_probe("designation"), {{"designation"}}, json_first,
-          max_lines);
+  read_as(file.path(), tk::threads::designation_lines_probe("designation"), {{"designation"}}, json_first, max_lines);
   read_as(file.path(), tk::primes::candidate_format_probe(4096), tk::primes::candidate_columns(), json_first,
           max_lines);
   read_as(file.path(), {}, {{"t", "load"}}, json_first, max_lines);

@@ -45,8 +45,8 @@ void check_max_bits(std::string_view text, std::size_t max_bits) {
   }
   if (tk::fuzz::oracle_enabled("small_max_bits") && bits_of(number.value) > max_bits)
     tk::fuzz::invariant_failed("small_max_bits", "parse_number(" + show(text) + ", " + std::to_string(max_bits) +
-                                               ") returned a number of " + std::to_string(bits_of(number.value)) +
-                                               " bits");
+                                                     ") returned a number of " + std::to_string(bits_of(number.value)) +
+                                                     " bits");
 }
 
 void run(std::string_view text) {
@@ -61,8 +61,8 @@ void run(std::string_view text) {
   }
   if (parsed) {
     if (tk::fuzz::oracle_enabled("max_bits") && bits_of(number.value) > kMaxBits)
-      tk::fuzz::invariant_failed("max_bits", "parse_number(" + show(text) + ") returned " +
-                                                 std::to_string(bits_of(number.value)) + " bits");
+      tk::fuzz::invariant_failed(
+          "max_bits", "parse_number(" + show(text) + ") returned " + std::to_string(bits_of(number.value)) + " bits");
     if (number.form && tk::fuzz::oracle_enabled("form")) {
       mpz_class again;
       try {
@@ -84,8 +84,8 @@ void run(std::string_view text) {
     recorded = true;
   } catch (const tk::Error& e) {
     if (parsed && tk::fuzz::oracle_enabled("roundtrip"))
-      tk::fuzz::invariant_failed("roundtrip", "parse_number accepts " + show(text) +
-                                                  " but record_from_number_text throws: " + e.what());
+      tk::fuzz::invariant_failed(
+          "roundtrip", "parse_number accepts " + show(text) + " but record_from_number_text throws: " + e.what());
   }
   if (recorded && parsed && tk::fuzz::oracle_enabled("roundtrip")) {
     const std::string json = record.dump(-1, ' ', false, tk::Record::error_handler_t::replace);
@@ -93,12 +93,12 @@ void run(std::string_view text) {
     try {
       candidate = tk::primes::candidate_from_record(record, kMaxBits);
     } catch (const tk::Error& e) {
-      tk::fuzz::invariant_failed("roundtrip", "record " + json + " from " + show(text) +
-                                                  " is rejected by candidate_from_record: " + e.what());
+      tk::fuzz::invariant_failed(
+          "roundtrip", "record " + json + " from " + show(text) + " is rejected by candidate_from_record: " + e.what());
     }
     if (candidate.form || candidate.members.size() != 1 || candidate.members[0].number.value != number.value)
-      tk::fuzz::invariant_failed("roundtrip", "record " + json + " from " + show(text) +
-                                                  " reads back as a different candidate");
+      tk::fuzz::invariant_failed("roundtrip",
+                                 "record " + json + " from " + show(text) + " reads back as a different candidate");
   }
 
   check_max_bits(text, kSmallMaxBits);

@@ -44,10 +44,8 @@ std::string with_checksums(std::string_view bytes) {
     if (!whole) end = bytes.size();
     const std::string_view line = bytes.substr(start, end - start);
     const std::size_t tab = line.rfind('\t');
-    if (tab == std::string_view::npos)
-      out += line;
-    else
-      out += fmt::format("{}\t{:016x}", line.substr(0, tab), tk::io::fnv1a(line.substr(0, tab)));
+    if (tab == std::string_view::npos) out += line;
+    else out += fmt::format("{}\t{:016x}", line.substr(0, tab), tk::io::fnv1a(line.substr(0, tab)));
     if (whole) out += '\n';
     start = end + 1;
   }

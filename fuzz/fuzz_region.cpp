@@ -112,7 +112,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     offset_options.tolerance = kOffsetTolerance;
     const RegionOffset region = set.loops.empty() ? RegionOffset{} : offset_region(set.loops, index, offset_options);
     check_closed(region.loops, "offset");
-    const RegionIndex* contour = region.contour.get();  // null for a zero radius: the barrier is then the drawing itself
+    const RegionIndex* contour =
+        region.contour.get();  // null for a zero radius: the barrier is then the drawing itself
     // Loops that touch or overlap themselves or each other (a vertex on an
     // edge, an edge drawn twice) bound hairs of no area: the distance keeps
     // the tool off them, Clipper's union drops them. The oracles on the
@@ -121,9 +122,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const Point& p : probes(set.loops)) {
       const RegionQuery fast = index.query(p), slow = brute_force_query(set.loops, p);
       const double scale = std::max(1.0, std::abs(slow.distance));
-      if (oracle_enabled("index") &&
-          (std::abs(std::abs(fast.distance) - std::abs(slow.distance)) > 1e-9 * scale ||
-           (std::abs(slow.distance) > 1e-6 * scale && fast.inside() != slow.inside())))
+      if (oracle_enabled("index") && (std::abs(std::abs(fast.distance) - std::abs(slow.distance)) > 1e-9 * scale ||
+                                      (std::abs(slow.distance) > 1e-6 * scale && fast.inside() != slow.inside())))
         invariant_failed("index", "at (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")");
       if (set.loops.empty()) continue;
       (void)guard_query(index, p, radius, side);  // the push-out barrier: may end inside in a narrow slot
@@ -131,8 +131,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const double after = guard_query(index, guard.clamped, radius, side).distance;
       if (oracle_enabled("barrier") && clean && !region.loops.empty() && after < -kContourTolerance)
         invariant_failed("barrier", "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ") clamped to (" +
-                                        std::to_string(guard.clamped.x) + ", " + std::to_string(guard.clamped.y) + "), " +
-                                        std::to_string(after) + " deep");
+                                        std::to_string(guard.clamped.x) + ", " + std::to_string(guard.clamped.y) +
+                                        "), " + std::to_string(after) + " deep");
     }
     if (set.loops.empty()) return 0;
     if (oracle_enabled("offset") && clean && radius > 0 && region.polygon_loops == 0)

@@ -60,7 +60,8 @@ void check_resume(const std::string& member, const ProofState& state) {
   int used = 0;
   if (std::sscanf(member.c_str(), "%" SCNu64 "*2^%" SCNu64 "%c1 start=%*s%n", &k, &n, &sign, &used) != 3 || used == 0)
     return;
-  if ((sign != '-' && sign != '+') || k % 2 == 0 || n < 2 || n > 2048 || (n < 64 && k >= (std::uint64_t(1) << n))) return;
+  if ((sign != '-' && sign != '+') || k % 2 == 0 || n < 2 || n > 2048 || (n < 64 && k >= (std::uint64_t(1) << n)))
+    return;
   const std::uint64_t squarings = sign == '-' ? n - 2 : n - 1;
   const mpz_class N = (mpz_class(k) << static_cast<mp_bitcnt_t>(n)) + (sign == '-' ? -1 : 1);
   tk::primes::ProofOptions options;
@@ -102,7 +103,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   load(bytes, kMember);
   const std::string repaired = with_checksum(bytes);
   load(repaired, kMember);
-  const std::size_t first = repaired.find('\n'), second = first == std::string::npos ? first : repaired.find('\n', first + 1);
+  const std::size_t first = repaired.find('\n'),
+                    second = first == std::string::npos ? first : repaired.find('\n', first + 1);
   if (second != std::string::npos) load(repaired, repaired.substr(first + 1, second - first - 1));
   return 0;
 }

@@ -117,8 +117,8 @@ void check(const tk::primes::SieveCheckpoint& checkpoint, const std::string& ide
     tk::fuzz::invariant_failed("identity", "loaded '" + checkpoint.identity + "' when asked for '" + identity + "'");
   if (tk::fuzz::oracle_enabled("bitmap")) {
     if (checkpoint.bitmap.size() != (count + 63) / 64)
-      tk::fuzz::invariant_failed("bitmap", std::to_string(checkpoint.bitmap.size()) + " words for " +
-                                               std::to_string(count) + " candidates");
+      tk::fuzz::invariant_failed(
+          "bitmap", std::to_string(checkpoint.bitmap.size()) + " words for " + std::to_string(count) + " candidates");
     if (count % 64 && (checkpoint.bitmap.back() >> (count % 64)) != 0)
       tk::fuzz::invariant_failed("bitmap", "a survivor at or above the candidate count " + std::to_string(count));
     const std::uint64_t segments = (count + kSegmentBits - 1) / kSegmentBits;
@@ -131,8 +131,7 @@ void check(const tk::primes::SieveCheckpoint& checkpoint, const std::string& ide
   }
   if (tk::fuzz::oracle_enabled("roundtrip")) {
     const auto again = load(file, encode(checkpoint), identity, count);
-    if (!again)
-      tk::fuzz::invariant_failed("roundtrip", "the re-encoded checkpoint does not load");
+    if (!again) tk::fuzz::invariant_failed("roundtrip", "the re-encoded checkpoint does not load");
     if (again->identity != checkpoint.identity || again->next_block != checkpoint.next_block ||
         again->next_segment != checkpoint.next_segment || again->factors_bytes != checkpoint.factors_bytes ||
         again->bitmap != checkpoint.bitmap)

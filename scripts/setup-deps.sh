@@ -17,8 +17,9 @@ build_pkgs=(g++ cmake make pkg-config libcli11-dev libgmp-dev libeigen3-dev
 # ccache: the builds reuse earlier compiles. dpkg-dev, file and man-db let
 # test/bats/toolkit_deb.bats build and check the package; it runs lintian
 # only where the deb tier installed it (~130 packages, minutes of apt).
+# clang-format: the source_format test checks the layout .clang-format sets.
 test_pkgs=(libgtest-dev bats bats-assert bats-support pari-gp python3 python3-ezdxf python3-scipy parallel fuzzylite
-           linuxcnc-uspace ccache dpkg-dev file man-db)
+           linuxcnc-uspace ccache dpkg-dev file man-db clang-format)
 # The Debian package (`make deb`): dpkg-shlibdeps and dpkg-deb, file for
 # CPack's stripping, lintian to check the result, man to check the pages.
 deb_pkgs=(dpkg-dev file lintian man-db)

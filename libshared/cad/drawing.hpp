@@ -23,21 +23,21 @@ struct Point {
 struct Segment {
   Point start, end;
   double bulge = 0;
-  std::uint32_t layer = 0;        ///< index into Drawing::layers
-  std::uint32_t entity = 0;       ///< 0-based index of the source entity in the file
-  std::size_t source_line = 0;    ///< line of the file where that entity starts (0 for binary DXF)
-  bool flattened = false;         ///< a chord of an ELLIPSE or SPLINE
+  std::uint32_t layer = 0;      ///< index into Drawing::layers
+  std::uint32_t entity = 0;     ///< 0-based index of the source entity in the file
+  std::size_t source_line = 0;  ///< line of the file where that entity starts (0 for binary DXF)
+  bool flattened = false;       ///< a chord of an ELLIPSE or SPLINE
 };
 
 /// Everything read from one file.
 struct Drawing {
   std::vector<Segment> segments;
-  std::vector<std::string> layers;                  ///< names as written, in order of first use
-  std::map<std::string, std::size_t> entities_read; ///< supported entity type -> how many
+  std::vector<std::string> layers;                      ///< names as written, in order of first use
+  std::map<std::string, std::size_t> entities_read;     ///< supported entity type -> how many
   std::map<std::string, std::size_t> entities_skipped;  ///< other entity types (TEXT, INSERT, ...) -> how many
-  std::string version;                              ///< $ACADVER, e.g. "AC1015"; empty when absent
-  int insunits = 0;                                 ///< $INSUNITS, 0 when absent
-  bool binary = false;                              ///< read from binary DXF
+  std::string version;                                  ///< $ACADVER, e.g. "AC1015"; empty when absent
+  int insunits = 0;                                     ///< $INSUNITS, 0 when absent
+  bool binary = false;                                  ///< read from binary DXF
 };
 
 /// Millimetres per drawing unit for a $INSUNITS code (1 inch, 2 feet, 4 mm,

@@ -19,9 +19,9 @@ void flatten_ellipse(Point centre, Point major, Point minor, double start, doubl
   double step = relative > 0 ? 4 * std::asin(std::sqrt(relative / 2)) : 0;
   step = std::min(step, std::numbers::pi / 2);
   const double pieces = step > 0 ? std::ceil(span / step) : HUGE_VAL;
-  const std::size_t count =
-      pieces < static_cast<double>(max_points - 1) ? std::max<std::size_t>(1, static_cast<std::size_t>(pieces))
-                                                   : max_points - 1;
+  const std::size_t count = pieces < static_cast<double>(max_points - 1)
+                                ? std::max<std::size_t>(1, static_cast<std::size_t>(pieces))
+                                : max_points - 1;
   const auto at = [&](double t) {
     const double c = std::cos(t), s = std::sin(t);
     return Point{centre.x + c * major.x + s * minor.x, centre.y + c * major.y + s * minor.y};
@@ -124,8 +124,7 @@ SplineResult flatten_spline(int degree, std::span<const double> knots, std::span
   }
   std::vector<double> uniform;
   if (knots.empty()) {  // open uniform: degree + 1 zeros, 1 .. n - p - 1, degree + 1 times n - p
-    for (std::size_t i = 0; i < n + p + 1; ++i)
-      uniform.push_back(static_cast<double>(std::clamp(i, p, n) - p));
+    for (std::size_t i = 0; i < n + p + 1; ++i) uniform.push_back(static_cast<double>(std::clamp(i, p, n) - p));
     knots = uniform;
   }
   if (knots.size() != n + p + 1) return SplineResult::invalid;

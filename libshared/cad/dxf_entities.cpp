@@ -129,23 +129,16 @@ void EntityBuilder::add(const Tag& tag) {
     return;
   }
   switch (tag.code) {
-    case 8:
-      e.layer = tag.text;
-      return;
-    case 67:
-      e.paper = tags_.integer(tag) != 0;
-      return;
-    case 102:
-      e.in_app_group = !tag.text.empty() && tag.text[0] == '{';
-      return;
+    case 8: e.layer = tag.text; return;
+    case 67: e.paper = tags_.integer(tag) != 0; return;
+    case 102: e.in_app_group = !tag.text.empty() && tag.text[0] == '{'; return;
     case 210:
     case 220:
     case 230:
       if (e.kind != Kind::other && e.kind != Kind::insert && e.kind != Kind::line)
         e.extrusion[(tag.code - 210) / 10] = tags_.real(tag);
       return;
-    default:
-      break;
+    default: break;
   }
   const int code = tag.code;
   switch (e.kind) {
@@ -214,8 +207,7 @@ void EntityBuilder::add(const Tag& tag) {
       }
       return;
     }
-    default:
-      return;
+    default: return;
   }
 }
 
@@ -273,9 +265,7 @@ void EntityBuilder::end_entity() {
       if (polyline_.open && e.type == "VERTEX" && !(e.flags & 16))
         polyline_.vertices.push_back({e.p10.x, e.p10.y, e.v42});
       return;
-    case Kind::seqend:
-      close_parent();
-      return;
+    case Kind::seqend: close_parent(); return;
     case Kind::polyline:
       polyline_.open = true;
       polyline_.layer = e.layer;
@@ -317,9 +307,7 @@ void EntityBuilder::end_entity() {
       emit_chords(points_);
       return;
     }
-    case Kind::spline:
-      end_spline(plane);
-      return;
+    case Kind::spline: end_spline(plane); return;
   }
 }
 
@@ -355,12 +343,12 @@ void EntityBuilder::end_spline(Plane plane) {
 void EntityBuilder::end_polyline() {
   Polyline& p = polyline_;
   p.open = false;
-  const char* reason = p.paper                         ? " (paper space)"
-                       : (p.flags & 64)                ? " (polyface mesh)"
-                       : (p.flags & 16)                ? " (polygon mesh)"
-                       : (p.flags & 8)                 ? " (3D)"
+  const char* reason = p.paper                                 ? " (paper space)"
+                       : (p.flags & 64)                        ? " (polyface mesh)"
+                       : (p.flags & 16)                        ? " (polygon mesh)"
+                       : (p.flags & 8)                         ? " (3D)"
                        : plane_of(p.extrusion) == Plane::other ? " (not in XY plane)"
-                                                       : nullptr;
+                                                               : nullptr;
   if (reason) {
     name_ = "POLYLINE";
     name_ += reason;
@@ -391,7 +379,7 @@ void EntityBuilder::emit_arc(Point centre, double radius, double start_degrees, 
   const Point first = on_circle(centre, radius, start_degrees);
   Point from = first;
   for (int i = 1; i <= pieces; ++i) {
-    const Point to = i < pieces ? on_circle(centre, radius, start_degrees + piece)
+    const Point to = i < pieces            ? on_circle(centre, radius, start_degrees + piece)
                      : span_degrees == 360 ? first
                                            : on_circle(centre, radius, start_degrees + span_degrees);
     segment(placed(from), placed(to), mirror ? -bulge : bulge, false);
@@ -403,7 +391,8 @@ void EntityBuilder::emit_vertices(const std::vector<Vertex>& vertices, bool clos
   const auto placed = [mirror](const Vertex& v) { return mirror ? Point{-v.x, v.y} : Point{v.x, v.y}; };
   const auto bulge = [mirror](const Vertex& v) { return mirror && v.bulge != 0 ? -v.bulge : v.bulge; };
   const std::size_t n = vertices.size();
-  for (std::size_t i = 0; i + 1 < n; ++i) segment(placed(vertices[i]), placed(vertices[i + 1]), bulge(vertices[i]), false);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    segment(placed(vertices[i]), placed(vertices[i + 1]), bulge(vertices[i]), false);
   if (closed && n > 1) segment(placed(vertices[n - 1]), placed(vertices[0]), bulge(vertices[n - 1]), false);
 }
 
@@ -412,13 +401,11 @@ void EntityBuilder::emit_chords(const std::vector<Point>& points) {
 }
 
 void EntityBuilder::segment(Point a, Point b, double bulge, bool flattened) {
-  if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y) ||
-      !std::isfinite(bulge))
+  if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y) || !std::isfinite(bulge))
     tags_.fail_at(out_start_, "coordinates out of range");
   if (a.x == b.x && a.y == b.y) return;  // zero length: nothing to cut
   if (drawing_.segments.size() >= options_.max_segments) too_many_segments(out_start_);
-  drawing_.segments.push_back(
-      Segment{a, b, bulge, out_layer_, out_index_, tags_.source_line(out_start_), flattened});
+  drawing_.segments.push_back(Segment{a, b, bulge, out_layer_, out_index_, tags_.source_line(out_start_), flattened});
 }
 
 }  // namespace tk::cad::dxf

@@ -35,7 +35,19 @@ class EntityBuilder {
   void finish();
 
  private:
-  enum class Kind : std::uint8_t { other, line, arc, circle, lwpolyline, polyline, ellipse, spline, insert, child, seqend };
+  enum class Kind : std::uint8_t {
+    other,
+    line,
+    arc,
+    circle,
+    lwpolyline,
+    polyline,
+    ellipse,
+    spline,
+    insert,
+    child,
+    seqend
+  };
   struct Vertex {
     double x = 0, y = 0, bulge = 0;
   };

@@ -108,8 +108,8 @@ Drawing read_dxf(std::string_view contents, const std::string& name, const DxfRe
     const std::size_t section_start = tags.start_of(tag);
     if (!tags.next(tag)) tags.fail_at(section_start, "SECTION without a name at the end of the file");
     if (tag.code != 2)
-      tags.fail(tag, "expected the section name (group code 2) after SECTION, found group code " +
-                         std::to_string(tag.code));
+      tags.fail(tag,
+                "expected the section name (group code 2) after SECTION, found group code " + std::to_string(tag.code));
     if (tag.text == "HEADER") {
       more = read_header(tags, tag, drawing);
     } else if (tag.text == "ENTITIES") {

@@ -243,7 +243,9 @@ bool TagReader::next_binary(Tag& tag) {
 }
 
 void TagReader::fail_number(const Tag& tag, const char* what) const {
-  std::string text = tag.typed ? (std::isnan(tag.number) ? "nan" : std::isinf(tag.number) ? "inf" : std::to_string(tag.number))
+  std::string text = tag.typed ? (std::isnan(tag.number)   ? "nan"
+                                  : std::isinf(tag.number) ? "inf"
+                                                           : std::to_string(tag.number))
                                : shown(tag.text);
   fail(tag, std::string(what) + " '" + text + "' for group code " + std::to_string(tag.code));
 }

@@ -64,9 +64,9 @@ class TagReader {
   std::string_view data_;
   std::string name_;
   bool binary_ = false;
-  bool two_byte_codes_ = true;  ///< binary DXF R13 and later; R12 used one byte
-  std::size_t pos_ = 0;         ///< next byte to read
-  std::size_t line_ = 0;        ///< ASCII: lines read so far
+  bool two_byte_codes_ = true;                ///< binary DXF R13 and later; R12 used one byte
+  std::size_t pos_ = 0;                       ///< next byte to read
+  std::size_t line_ = 0;                      ///< ASCII: lines read so far
   std::size_t nul_ = std::string_view::npos;  ///< ASCII: first NUL byte
 };
 

@@ -40,12 +40,15 @@ PositionCheck InvasionGuard::check(Point p, std::optional<double> t) {
       approach = std::max(0.0, (last_distance_ - distance) / dt);
       const Point velocity{(p.x - last_at_.x) / dt, (p.y - last_at_.y) / dt};
       ahead = {p.x + velocity.x * options_.latency_s, p.y + velocity.y * options_.latency_s};
-      if (!std::isfinite(velocity.x) || !std::isfinite(velocity.y) || !std::isfinite(ahead.x) || !std::isfinite(ahead.y))
+      if (!std::isfinite(velocity.x) || !std::isfinite(velocity.y) || !std::isfinite(ahead.x) ||
+          !std::isfinite(ahead.y))
         throw Error(fmt::format("a move of {:g} mm in {:g} s is too fast to tell where a stop would take effect",
                                 std::hypot(p.x - last_at_.x, p.y - last_at_.y), dt));
     }
     result.approach_mm_s = approach;
-    const SignedDistance region = [&](Point q) { return guard_query(index_, q, options_.tool_radius, options_.side).distance; };
+    const SignedDistance region = [&](Point q) {
+      return guard_query(index_, q, options_.tool_radius, options_.side).distance;
+    };
     result.stop = first_below(region, p, ahead, options_.margin_mm).has_value();
     if (*result.stop) ++summary_.stops;
     last_t_ = t;

@@ -17,8 +17,8 @@ namespace tk::cad {
 struct GuardOptions {
   double tool_radius = 0;
   MachiningSide side = MachiningSide::outside;
-  double latency_s = 0.09;   ///< from a sample to the stop taking effect
-  double margin_mm = 0.02;   ///< distance the stop aims to keep
+  double latency_s = 0.09;  ///< from a sample to the stop taking effect
+  double margin_mm = 0.02;  ///< distance the stop aims to keep
 };
 
 struct PositionCheck {
@@ -29,9 +29,9 @@ struct PositionCheck {
 
 struct GuardSummary {
   std::size_t positions = 0, invasions = 0, stops = 0;
-  double deepest_mm = 0;           ///< deepest invasion (>= 0)
+  double deepest_mm = 0;  ///< deepest invasion (>= 0)
   Point deepest_at;
-  double closest_mm = 0;           ///< smallest distance seen
+  double closest_mm = 0;  ///< smallest distance seen
 };
 
 class InvasionGuard {

@@ -149,7 +149,8 @@ StrokeLengths stroke_lengths(const std::vector<double>& tolerances_mm, const Inv
   if (!(options.latency_s >= 0) || !std::isfinite(options.latency_s)) throw Error("the latency must not be negative");
   if (!(options.margin_mm >= 0) || !std::isfinite(options.margin_mm)) throw Error("the margin must not be negative");
   if (options.strokes == 0 || options.strokes > 10'000'000) throw Error("strokes must be between 1 and 10000000");
-  if (!(options.max_angle_deg >= 0 && options.max_angle_deg < 90)) throw Error("the stroke angle must be in [0, 90) degrees");
+  if (!(options.max_angle_deg >= 0 && options.max_angle_deg < 90))
+    throw Error("the stroke angle must be in [0, 90) degrees");
   double largest = options.margin_mm;
   for (double t : tolerances_mm) {
     if (!(t >= 0) || !std::isfinite(t) || t > 1e6) throw Error("tolerances must be numbers of mm from 0 to 1e6");
@@ -160,9 +161,12 @@ StrokeLengths stroke_lengths(const std::vector<double>& tolerances_mm, const Inv
   const double coast = options.feed_mm_s * (options.latency_s + 2 * options.period_s);
   const double approach = largest + 3 * coast + 10;
   const double travel_limit = approach + coast + 10;
-  if (!(travel_limit <= 1e6)) throw Error("strokes of more than a kilometre: the feed, the latency, a tolerance or the margin is too large");
+  if (!(travel_limit <= 1e6))
+    throw Error("strokes of more than a kilometre: the feed, the latency, a tolerance or the margin is too large");
   if (!(travel_limit / (options.feed_mm_s * options.period_s) <= 1e7))
-    throw Error("more than 10 million control readings a stroke: the period is too short for the feed, or the latency too long");
+    throw Error(
+        "more than 10 million control readings a stroke: the period is too short for the feed, or the latency too "
+        "long");
   return {approach, travel_limit};
 }
 

@@ -45,14 +45,14 @@ struct InvasionSimOptions {
 
 /// One guard's figures over all strokes.
 struct InvasionSimResult {
-  std::string guard;              ///< "fixed-tolerance" or "latency-aware"
-  double tolerance_mm = 0;        ///< T for the fixed guard; the margin for ours
+  std::string guard;        ///< "fixed-tolerance" or "latency-aware"
+  double tolerance_mm = 0;  ///< T for the fixed guard; the margin for ours
   std::uint32_t strokes = 0;
-  std::uint32_t invasions = 0;    ///< strokes that entered the region on the way or where they stopped
-  double success_rate = 0;        ///< 1 - invasions / strokes
-  double mean_undercut_mm = 0;    ///< over the strokes that stopped outside
+  std::uint32_t invasions = 0;  ///< strokes that entered the region on the way or where they stopped
+  double success_rate = 0;      ///< 1 - invasions / strokes
+  double mean_undercut_mm = 0;  ///< over the strokes that stopped outside
   double max_undercut_mm = 0;
-  double mean_invasion_mm = 0;    ///< deepest point of the path, over the invading strokes
+  double mean_invasion_mm = 0;  ///< deepest point of the path, over the invading strokes
   double max_invasion_mm = 0;
 };
 

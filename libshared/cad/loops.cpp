@@ -125,8 +125,7 @@ void pair_ends(std::vector<std::pair<double, std::size_t>> around, std::vector<s
   for (std::size_t skip : skips)
     for (std::size_t phase = 0; phase < 2; ++phase) {
       const Cost cost = cost_of(skip, phase).first;
-      const bool later = have && !(best < cost) && skip != SIZE_MAX &&
-                         around[skip].second > around[best_skip].second;
+      const bool later = have && !(best < cost) && skip != SIZE_MAX && around[skip].second > around[best_skip].second;
       if (!have || cost < best || later) {
         have = true, best = cost, best_skip = skip, best_phase = phase;
       }
@@ -282,8 +281,7 @@ double signed_area(const std::vector<Segment>& loop) {
 }
 
 LoopSet build_loops(const std::vector<Segment>& segments, double join_tolerance) {
-  if (!std::isfinite(join_tolerance) || join_tolerance < 0)
-    throw Error("join tolerance must be a finite number >= 0");
+  if (!std::isfinite(join_tolerance) || join_tolerance < 0) throw Error("join tolerance must be a finite number >= 0");
   const double tol = join_tolerance;
   LoopSet result;
 
@@ -292,8 +290,8 @@ LoopSet build_loops(const std::vector<Segment>& segments, double join_tolerance)
   std::vector<std::size_t> input_index;
   for (std::size_t i = 0; i < segments.size(); ++i) {
     const Segment& s = segments[i];
-    if (!std::isfinite(s.start.x) || !std::isfinite(s.start.y) || !std::isfinite(s.end.x) ||
-        !std::isfinite(s.end.y) || !std::isfinite(s.bulge))
+    if (!std::isfinite(s.start.x) || !std::isfinite(s.start.y) || !std::isfinite(s.end.x) || !std::isfinite(s.end.y) ||
+        !std::isfinite(s.bulge))
       throw Error("entity " + std::to_string(s.entity) + " (line " + std::to_string(s.source_line) +
                   ") has a non-finite coordinate");
     const double length = segment_length(s);

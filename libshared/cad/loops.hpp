@@ -33,15 +33,15 @@ struct LooseEnd {
 /// An end of one segment lying on the interior of another.
 struct TJunction {
   Point at;
-  std::uint32_t entity = 0;          ///< the entity whose end it is
+  std::uint32_t entity = 0;  ///< the entity whose end it is
   std::size_t source_line = 0;
   std::uint32_t touched_entity = 0;  ///< the entity whose interior it touches
   std::size_t touched_source_line = 0;
 };
 
 struct LoopSet {
-  std::vector<Loop> loops;                ///< outer boundaries before their holes
-  std::vector<Segment> open_segments;     ///< segments of chains that did not close
+  std::vector<Loop> loops;             ///< outer boundaries before their holes
+  std::vector<Segment> open_segments;  ///< segments of chains that did not close
   std::vector<LooseEnd> loose_ends;
   std::vector<TJunction> t_junctions;
 };

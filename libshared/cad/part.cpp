@@ -44,12 +44,13 @@ void warn_vanishing_entities(const std::vector<Segment>& segments, double join_t
   }
   for (const auto& [entity, state] : entities)
     if (state.second && warn)
-      warn(fmt::format("{}:{}: entity {} vanishes: every segment of it is shorter than --join-tol {:g} mm", name, state.first,
-                       entity, join_tolerance));
+      warn(fmt::format("{}:{}: entity {} vanishes: every segment of it is shorter than --join-tol {:g} mm", name,
+                       state.first, entity, join_tolerance));
 }
 }  // namespace
 
-Part load_part(const std::string& path, const PartOptions& options, const std::function<void(const std::string&)>& warn) {
+Part load_part(const std::string& path, const PartOptions& options,
+               const std::function<void(const std::string&)>& warn) {
   Part part;
   const double given = options.units.empty() ? 0 : millimetres_per_named_unit(options.units);
   DxfReadOptions read_options;
@@ -62,7 +63,8 @@ Part load_part(const std::string& path, const PartOptions& options, const std::f
     part.millimetres_per_unit = declared;
     part.units_source = "$INSUNITS";
     if (given > 0 && given != declared)
-      warn(name + ": $INSUNITS says " + std::to_string(declared) + " mm per unit: --units " + options.units + " is not used");
+      warn(name + ": $INSUNITS says " + std::to_string(declared) + " mm per unit: --units " + options.units +
+           " is not used");
   } else if (given > 0) {
     part.millimetres_per_unit = given;
     part.units_source = "--units";
@@ -79,7 +81,8 @@ Part load_part(const std::string& path, const PartOptions& options, const std::f
       if (found == d.layers.end()) {
         std::string list;
         for (const std::string& l : d.layers) list += (list.empty() ? "" : ", ") + l;
-        throw Error("no layer '" + layer + "' with supported entities (layers: " + (list.empty() ? "none" : list) + ")", {name, 0});
+        throw Error("no layer '" + layer + "' with supported entities (layers: " + (list.empty() ? "none" : list) + ")",
+                    {name, 0});
       }
       keep[found - d.layers.begin()] = true;
     }
@@ -97,8 +100,8 @@ Part load_part(const std::string& path, const PartOptions& options, const std::f
       throw Error("coordinates overflow when scaled to millimetres", {name, s.source_line});
     for (const double v : {s.start.x, s.start.y, s.end.x, s.end.y})
       if (std::abs(v) > kMaxCoordinateMm)
-        throw Error(fmt::format("coordinate {:g} mm is beyond ±{:g} mm (entity {}): not a part drawing", v, kMaxCoordinateMm,
-                                s.entity),
+        throw Error(fmt::format("coordinate {:g} mm is beyond ±{:g} mm (entity {}): not a part drawing", v,
+                                kMaxCoordinateMm, s.entity),
                     {name, s.source_line});
   }
   warn_vanishing_entities(d.segments, options.join_tolerance, name, warn);

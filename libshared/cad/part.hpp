@@ -27,9 +27,9 @@ struct PartOptions {
 inline constexpr double kMaxCoordinateMm = 1e9;
 
 struct Part {
-  Drawing drawing;                  ///< in mm, only the chosen layers' segments
+  Drawing drawing;  ///< in mm, only the chosen layers' segments
   double millimetres_per_unit = 1;
-  std::string units_source;         ///< "$INSUNITS", "--units" or "assumed"
+  std::string units_source;  ///< "$INSUNITS", "--units" or "assumed"
   LoopSet loops;
   std::unique_ptr<RegionIndex> index;  ///< over loops.loops
 };
@@ -41,6 +41,7 @@ double millimetres_per_named_unit(const std::string& name);
 /// Reads and prepares `path`; `warn` receives what the user should know
 /// (units assumed, layers missing from the selection ...). Error when a
 /// chosen layer does not exist.
-Part load_part(const std::string& path, const PartOptions& options, const std::function<void(const std::string&)>& warn);
+Part load_part(const std::string& path, const PartOptions& options,
+               const std::function<void(const std::string&)>& warn);
 
 }  // namespace tk::cad

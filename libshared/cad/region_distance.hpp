@@ -13,8 +13,8 @@
 namespace tk::cad {
 
 struct RegionQuery {
-  double distance = 0;   ///< to the boundary: positive outside the region, negative inside
-  Point nearest;         ///< the nearest boundary point
+  double distance = 0;      ///< to the boundary: positive outside the region, negative inside
+  Point nearest;            ///< the nearest boundary point
   std::size_t element = 0;  ///< index into RegionIndex::elements() of the nearest element
   bool inside() const { return distance < 0; }
 };

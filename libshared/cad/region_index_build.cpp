@@ -95,7 +95,8 @@ void RegionIndex::Impl::build_covers() {
     std::size_t distinct = 0;
     cell_touch_first[cell] = static_cast<std::uint32_t>(cell_touches.size());
     for (; t < touches.size() && touches[t].cell == cell; ++t)
-      if (t == begin || touches[t].element != touches[t - 1].element) ++distinct, cell_touches.push_back(touches[t].element);
+      if (t == begin || touches[t].element != touches[t - 1].element)
+        ++distinct, cell_touches.push_back(touches[t].element);
     // Enough leaves for about kLeafCovers elements touching each, and, up to
     // a point, about kLeafCandidates that may be nearest (roughly as many
     // as Voronoi regions cross the leaf, so in proportion to its width).
@@ -155,7 +156,8 @@ void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::siz
   if (!pruned) {
     double nearest2 = kInf;
     if (far2.size() < end) far2.resize(end);
-    for (std::size_t i = begin; i < end; ++i) nearest2 = std::min(nearest2, far2[i] = distance2(kernels[scratch[i]], q));
+    for (std::size_t i = begin; i < end; ++i)
+      nearest2 = std::min(nearest2, far2[i] = distance2(kernels[scratch[i]], q));
     const double reach = (std::sqrt(nearest2) + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
     first = scratch.size();
     for (std::size_t i = begin; i < end; ++i)
@@ -201,7 +203,8 @@ void RegionIndex::Impl::build_leaves(std::size_t cell, std::uint32_t x0, std::ui
     }
 }
 
-void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y, const std::vector<std::uint32_t>& list) {
+void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y,
+                                   const std::vector<std::uint32_t>& list) {
   const std::size_t leaf = coarse[cell].first_leaf + y * coarse[cell].split + x;
   const double leaf_size = size / coarse[cell].split;
   const Point c = centre(cell % nx, cell / nx, coarse[cell].split, x, y);
@@ -212,7 +215,7 @@ void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint3
   const std::vector<std::uint32_t> listed = leaf_window(cell, c, leaf_size / 2, list.data(), list.size());
   const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaves[leaf].nearest = float_above(nearest);
-  leaves[leaf].complete = window.wide                       ? 0
+  leaves[leaf].complete = window.wide                      ? 0
                           : listed.size() > kMaxCandidates ? float_below(near[listed[kMaxCandidates]])
                                                            : INFINITY;
   for (std::size_t i = 0; i < std::min(listed.size(), kMaxCandidates); ++i) {
@@ -282,8 +285,8 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_uniqu
       for (std::uint32_t x = 0; x < split; ++x) m.build_leaf(cell, x, y, m.leaf_lists[y * split + x]);
   }
   m.build_inside();
-  m.stamp = {}, m.near = {}, m.far2 = {}, m.scratch = {}, m.windows = {}, m.window_elements = {},
-  m.cell_touches = {}, m.cell_touch_first = {}, m.leaf_lists = {};
+  m.stamp = {}, m.near = {}, m.far2 = {}, m.scratch = {}, m.windows = {}, m.window_elements = {}, m.cell_touches = {},
+  m.cell_touch_first = {}, m.leaf_lists = {};
 }
 
 }  // namespace tk::cad

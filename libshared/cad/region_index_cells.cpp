@@ -101,8 +101,9 @@ std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(std::size_t cell, Poin
   ++mark;
   refine(c, half, 0, scratch.size(), 0, listed, true);
   for (std::uint32_t e : listed) near[e] = std::sqrt(distance2(kernels[e], c));
-  std::sort(listed.begin(), listed.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return std::pair{near[a], a} < std::pair{near[b], b}; });
+  std::sort(listed.begin(), listed.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::pair{near[a], a} < std::pair{near[b], b};
+  });
   return listed;
 }
 
@@ -125,10 +126,12 @@ bool RegionIndex::Impl::chain_parity(Point from, Point to, const std::vector<std
 void RegionIndex::Impl::build_inside() {
   std::vector<std::uint32_t> elements;
   const auto add_cell = [&](std::size_t cell) {
-    elements.insert(elements.end(), cell_touches.begin() + cell_touch_first[cell], cell_touches.begin() + cell_touch_first[cell + 1]);
+    elements.insert(elements.end(), cell_touches.begin() + cell_touch_first[cell],
+                    cell_touches.begin() + cell_touch_first[cell + 1]);
   };
   const auto add_leaf = [&](std::size_t leaf) {
-    for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m) elements.push_back(covers[m].packed & kElementBits);
+    for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m)
+      elements.push_back(covers[m].packed & kElementBits);
   };
   // Two neighbouring squares of one size make a rectangle: the segment
   // joining points of theirs stays in it, so only their elements can cross it.

@@ -33,11 +33,11 @@ constexpr std::size_t kWideWindow = 4 * kMaxCandidates;  // a cell with a longer
 /// across it, mirrored so the arc bulges toward -v; the centre is at
 /// (0, centre offset), the ends at (+-half chord, 0).
 struct alignas(64) Kernel {  // one cache line
-  double x = 0, y = 0;    ///< line: start; arc: chord midpoint
-  double dx = 0, dy = 0;  ///< line: end - start; arc: unit chord direction
-  double k0 = 0;          ///< line: 1 / |end - start|^2; arc: half chord
-  double k1 = 0, k2 = 0;  ///< arc: centre offset, radius
-  double side = 0;        ///< 0 line, +1 counter-clockwise arc, -1 clockwise
+  double x = 0, y = 0;       ///< line: start; arc: chord midpoint
+  double dx = 0, dy = 0;     ///< line: end - start; arc: unit chord direction
+  double k0 = 0;             ///< line: 1 / |end - start|^2; arc: half chord
+  double k1 = 0, k2 = 0;     ///< arc: centre offset, radius
+  double side = 0;           ///< 0 line, +1 counter-clockwise arc, -1 clockwise
 };
 
 inline Kernel make_kernel(const Segment& s) {
@@ -188,12 +188,12 @@ struct RegionIndex::Impl {
     std::uint32_t element = 0;
   };
   static constexpr std::size_t kHead = 4;
-  struct alignas(64) Leaf {  // one cache line; leaves[i + 1].candidates / .covers end leaf i's lists
+  struct alignas(64) Leaf {        // one cache line; leaves[i + 1].candidates / .covers end leaf i's lists
     std::uint32_t candidates = 0;  // the list after the head
     std::uint32_t covers : 31 = 0, inside : 1 = 0;  // inside: whether ref is
-    float complete = 0;  // every element that can win and is nearer the centre than this is listed
-    float nearest = 0;   // the centre's distance to the boundary, rounded up
-    Point ref;           // a point of the leaf clear of the boundary
+    float complete = 0;     // every element that can win and is nearer the centre than this is listed
+    float nearest = 0;      // the centre's distance to the boundary, rounded up
+    Point ref;              // a point of the leaf clear of the boundary
     Candidate head[kHead];  // the list's first entries (key infinity: none), at hand with the rest
   };
   struct Cover {  // an element that may touch a leaf, with its ends at hand
@@ -222,7 +222,7 @@ struct RegionIndex::Impl {
   };
   std::vector<CellWindow> windows;
   std::vector<std::uint32_t> window_elements;
-  std::vector<std::vector<std::uint32_t>> leaf_lists;  // while building: a cell's leaves' windows
+  std::vector<std::vector<std::uint32_t>> leaf_lists;         // while building: a cell's leaves' windows
   std::vector<std::uint32_t> cell_touches, cell_touch_first;  // while building: the elements that may touch each cell
   /// Each leaf's inside flag: the ray test at the first leaf of each row of
   /// cells, then from leaf to leaf by the crossings of the segments joining

@@ -188,7 +188,8 @@ std::vector<Point> from_clipper(const ClipperLib::Path& path) {
 
 Loop polygon_loop(const std::vector<Point>& polygon) {
   Loop loop;
-  for (std::size_t i = 0; i < polygon.size(); ++i) loop.segments.push_back({polygon[i], polygon[(i + 1) % polygon.size()]});
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    loop.segments.push_back({polygon[i], polygon[(i + 1) % polygon.size()]});
   return loop;
 }
 
@@ -240,7 +241,7 @@ std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const Drawi
       std::optional<Point> crossing;
       if (norm(on_before - on_after) > 1e-9) crossing = crossing_near(before, runs[r].prim, vertex);
       joints[r] = crossing && norm(*crossing - vertex) < 1e3 * tolerance + 0.1 * radius ? *crossing
-                                                                                      : 0.5 * (on_before + on_after);
+                                                                                        : 0.5 * (on_before + on_after);
     }
     for (std::size_t r = 0; r < runs.size(); ++r) {
       const Point from = joints[r], to = joints[(r + 1) % runs.size()];
@@ -312,8 +313,8 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
           }
         }
         const double depth = std::max(gaps[deepest], gap_at(s, 0.5 * (lo + hi)));
-        spans.push_back({point_at(s, static_cast<double>(begin) / samples), point_at(s, static_cast<double>(i - 1) / samples),
-                         depth, s.entity, s.source_line});
+        spans.push_back({point_at(s, static_cast<double>(begin) / samples),
+                         point_at(s, static_cast<double>(i - 1) / samples), depth, s.entity, s.source_line});
       }
     }
     // A corner shared by two elements shows up at the end of one and the start of the next.
@@ -362,7 +363,9 @@ class StageClock {
 double offset_vertices_estimate(const std::vector<Loop>& loops, double tool_radius, double tolerance) {
   // Chords of sagitta `tolerance` on a turn of θ at radius R: about
   // θ / (2 acos(1 - tol/R)) ~ θ/2 sqrt(R / (2 tol)).
-  const auto chords = [tolerance](double turn, double radius) { return turn / 2 * std::sqrt(radius / (2 * tolerance)); };
+  const auto chords = [tolerance](double turn, double radius) {
+    return turn / 2 * std::sqrt(radius / (2 * tolerance));
+  };
   double vertices = 0;
   if (tool_radius == 0) return vertices;  // the loops are the region: nothing is flattened
   for (const Loop& loop : loops) {

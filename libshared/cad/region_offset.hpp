@@ -32,13 +32,13 @@ struct OffsetStageTimes {
 };
 
 struct OffsetOptions {
-  double tool_radius = 0;          ///< mm, >= 0
+  double tool_radius = 0;  ///< mm, >= 0
   MachiningSide side = MachiningSide::outside;
-  double tolerance = 1e-4;         ///< mm: flattening for Clipper, and the checks of the exact recovery
-  double uncut_report_mm = 1e-3;   ///< material left thicker than this is reported
+  double tolerance = 1e-4;        ///< mm: flattening for Clipper, and the checks of the exact recovery
+  double uncut_report_mm = 1e-3;  ///< material left thicker than this is reported
   /// The polygon stage's vertices (offset_vertices_estimate) beyond which
   /// the offset is refused before it starts (a usage error: dxf2region(1)).
-  double max_vertices = 3e5;  // its time grows with them: a drawing estimated at 124,000 took 7 s
+  double max_vertices = 3e5;                // its time grows with them: a drawing estimated at 124,000 took 7 s
   OffsetStageTimes* stage_times = nullptr;  ///< filled when given
 };
 
@@ -53,8 +53,8 @@ double offset_vertices_estimate(const std::vector<Loop>& loops, double tool_radi
 /// fit in).
 struct UncutSpan {
   Point from, to;
-  double depth = 0;              ///< mm of material left, at the worst point
-  std::uint32_t entity = 0;      ///< the drawing entity
+  double depth = 0;          ///< mm of material left, at the worst point
+  std::uint32_t entity = 0;  ///< the drawing entity
   std::size_t source_line = 0;
 };
 
@@ -79,8 +79,8 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
 /// The tool's side of the prohibited region: the signed distance (positive
 /// where the tool centre may be) and the barrier point, for one query.
 struct GuardAnswer {
-  double distance = 0;   ///< to the prohibited region's boundary; negative inside it
-  Point clamped;         ///< the point itself when allowed, else the nearest allowed point
+  double distance = 0;      ///< to the prohibited region's boundary; negative inside it
+  Point clamped;            ///< the point itself when allowed, else the nearest allowed point
   std::size_t element = 0;  ///< nearest element of the drawing (RegionIndex::elements())
 };
 

@@ -16,10 +16,41 @@
 namespace tk::cad {
 
 std::vector<std::string> region_record_fields() {
-  return {"record", "loop",      "depth",    "hole",  "area_mm2", "length_mm", "elements", "polyline", "x",
-          "y",      "x0",        "y0",       "x1",    "y1",       "depth_mm",  "entity",   "dxf_line", "touched_entity",
-          "touched_dxf_line", "file", "version", "units", "mm_per_unit", "entities_read", "entities_skipped", "loops",
-          "holes", "open_segments", "loose_ends", "t_junctions", "uncut", "polygon_loops", "tool_radius", "side", "doubled_edges"};
+  return {"record",
+          "loop",
+          "depth",
+          "hole",
+          "area_mm2",
+          "length_mm",
+          "elements",
+          "polyline",
+          "x",
+          "y",
+          "x0",
+          "y0",
+          "x1",
+          "y1",
+          "depth_mm",
+          "entity",
+          "dxf_line",
+          "touched_entity",
+          "touched_dxf_line",
+          "file",
+          "version",
+          "units",
+          "mm_per_unit",
+          "entities_read",
+          "entities_skipped",
+          "loops",
+          "holes",
+          "open_segments",
+          "loose_ends",
+          "t_junctions",
+          "uncut",
+          "polygon_loops",
+          "tool_radius",
+          "side",
+          "doubled_edges"};
 }
 
 Record loop_record(const Loop& loop, std::size_t number, double flatten_tolerance, bool with_sources) {
@@ -61,20 +92,23 @@ Record loop_record(const Loop& loop, std::size_t number, double flatten_toleranc
 }
 
 Record loose_end_record(const LooseEnd& end) {
-  return Record{{"record", "loose_end"}, {"x", end.at.x}, {"y", end.at.y}, {"entity", end.entity}, {"dxf_line", end.source_line}};
+  return Record{
+      {"record", "loose_end"}, {"x", end.at.x}, {"y", end.at.y}, {"entity", end.entity}, {"dxf_line", end.source_line}};
 }
 
 Record t_junction_record(const TJunction& junction) {
-  return Record{{"record", "t_junction"},        {"x", junction.at.x},
-                {"y", junction.at.y},            {"entity", junction.entity},
-                {"dxf_line", junction.source_line}, {"touched_entity", junction.touched_entity},
+  return Record{{"record", "t_junction"},
+                {"x", junction.at.x},
+                {"y", junction.at.y},
+                {"entity", junction.entity},
+                {"dxf_line", junction.source_line},
+                {"touched_entity", junction.touched_entity},
                 {"touched_dxf_line", junction.touched_source_line}};
 }
 
 Record uncut_record(const UncutSpan& span) {
-  return Record{{"record", "uncut"},       {"x0", span.from.x},        {"y0", span.from.y}, {"x1", span.to.x},
-                {"y1", span.to.y},         {"depth_mm", span.depth},   {"entity", span.entity},
-                {"dxf_line", span.source_line}};
+  return Record{{"record", "uncut"}, {"x0", span.from.x},      {"y0", span.from.y},     {"x1", span.to.x},
+                {"y1", span.to.y},   {"depth_mm", span.depth}, {"entity", span.entity}, {"dxf_line", span.source_line}};
 }
 
 Record drawing_record(const Part& part, const RegionOffset& region) {

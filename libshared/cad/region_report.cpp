@@ -3,7 +3,8 @@
 
 namespace tk::cad {
 
-Record invasion_sim_record(const InvasionSimResult& r, const std::string& invasion_check, const InvasionSimOptions& options) {
+Record invasion_sim_record(const InvasionSimResult& r, const std::string& invasion_check,
+                           const InvasionSimOptions& options) {
   return Record{{"guard", r.guard},
                 {"invasion_check", r.guard == "fixed-tolerance" ? invasion_check : "exact"},
                 {"tolerance_mm", r.tolerance_mm},
@@ -20,9 +21,11 @@ Record invasion_sim_record(const InvasionSimResult& r, const std::string& invasi
 }
 
 std::vector<std::string> position_check_fields(bool summary) {
-  std::vector<std::string> fields{"inside", "distance", "clamped_x", "clamped_y", "element", "entity", "dxf_line", "approach_mm_s", "stop"};
+  std::vector<std::string> fields{"inside", "distance", "clamped_x",     "clamped_y", "element",
+                                  "entity", "dxf_line", "approach_mm_s", "stop"};
   if (summary)  // CSV: the summary's columns too, empty in the positions' rows
-    fields.insert(fields.end(), {"summary", "positions", "invasions", "deepest_invasion_mm", "deepest_x", "deepest_y", "closest_mm", "stops"});
+    fields.insert(fields.end(), {"summary", "positions", "invasions", "deepest_invasion_mm", "deepest_x", "deepest_y",
+                                 "closest_mm", "stops"});
   return fields;
 }
 
@@ -39,7 +42,8 @@ void add_position_fields(Record& record, const PositionCheck& c, const std::vect
 }
 
 Record guard_summary_record(const GuardSummary& s) {
-  Record last{{"summary", true}, {"positions", s.positions}, {"invasions", s.invasions}, {"deepest_invasion_mm", s.deepest_mm}};
+  Record last{
+      {"summary", true}, {"positions", s.positions}, {"invasions", s.invasions}, {"deepest_invasion_mm", s.deepest_mm}};
   if (s.invasions > 0) {
     last["deepest_x"] = s.deepest_at.x;
     last["deepest_y"] = s.deepest_at.y;

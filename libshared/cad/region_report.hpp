@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "cad/drawing.hpp"
 #include "cad/invasion_check.hpp"
 #include "cad/invasion_sim.hpp"
-#include "cad/drawing.hpp"
 #include "io/record.hpp"
 
 namespace tk::cad {

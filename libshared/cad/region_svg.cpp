@@ -24,8 +24,8 @@ void append_path(std::string& d, const std::vector<Segment>& segments, bool clos
   for (const Segment& s : segments) {
     if (is_arc(s)) {
       const ArcShape arc = arc_shape(s);
-      d += fmt::format(" A{:.6g} {:.6g} 0 {} {} {:.6g} {:.6g}", arc.radius, arc.radius, std::abs(arc.sweep) > M_PI ? 1 : 0,
-                       arc.sweep > 0 ? 1 : 0, s.end.x, s.end.y);
+      d += fmt::format(" A{:.6g} {:.6g} 0 {} {} {:.6g} {:.6g}", arc.radius, arc.radius,
+                       std::abs(arc.sweep) > M_PI ? 1 : 0, arc.sweep > 0 ? 1 : 0, s.end.x, s.end.y);
     } else {
       d += fmt::format(" L{:.6g} {:.6g}", s.end.x, s.end.y);
     }
@@ -57,8 +57,10 @@ struct Styles {
       : part(fmt::format("fill=\"none\" stroke=\"black\" stroke-width=\"{:.3g}\"", stroke)),
         region_fill("fill=\"#e8a0a0\" fill-opacity=\"0.5\""),
         contour(fmt::format("stroke=\"#2050c0\" stroke-width=\"{:.3g}\"", stroke)),
-        open(fmt::format("fill=\"none\" stroke=\"#808080\" stroke-dasharray=\"{:.3g}\" stroke-width=\"{:.3g}\"", 4 * stroke, stroke)),
-        uncut(fmt::format("fill=\"none\" stroke=\"#f08000\" stroke-width=\"{:.3g}\" stroke-linecap=\"round\"", 4 * stroke)),
+        open(fmt::format("fill=\"none\" stroke=\"#808080\" stroke-dasharray=\"{:.3g}\" stroke-width=\"{:.3g}\"",
+                         4 * stroke, stroke)),
+        uncut(fmt::format("fill=\"none\" stroke=\"#f08000\" stroke-width=\"{:.3g}\" stroke-linecap=\"round\"",
+                          4 * stroke)),
         loose_end(fmt::format("fill=\"none\" stroke=\"red\" stroke-width=\"{:.3g}\"", stroke)) {}
 };
 
@@ -99,17 +101,20 @@ void write_region_svg(const std::string& path, const SvgLayers& layers) {
   const double x0 = extent.min_x - margin, y0 = extent.min_y - margin;
   const double h = extent.max_y - extent.min_y + 2 * margin;
   double w = extent.max_x - extent.min_x + 2 * margin;
-  for (const sim::LegendEntry& entry : legend) w = std::max(w, sim::text_width(entry.label, font) + 3.1 * font + 2 * margin);
+  for (const sim::LegendEntry& entry : legend)
+    w = std::max(w, sim::text_width(entry.label, font) + 3.1 * font + 2 * margin);
   const double legend_top = -y0, bar_y = legend_top + sim::legend_height(legend.size(), font) + 1.8 * font;
   const double band = bar_y - legend_top + margin;
   std::string svg = fmt::format(
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{:.6g} {:.6g} {:.6g} {:.6g}\" width=\"{:.0f}mm\" height=\"{:.0f}mm\">\n",
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"{:.6g} {:.6g} {:.6g} {:.6g}\" width=\"{:.0f}mm\" "
+      "height=\"{:.0f}mm\">\n",
       x0, -(y0 + h), w, h + band, std::max(w, 1.0), std::max(h + band, 1.0));
   std::string title = layers.title;
   std::erase_if(title, [](char c) { return c == '<' || c == '>' || c == '&'; });
   svg += "<title>" + title + "</title>\n";
-  svg += fmt::format("<rect x=\"{:.6g}\" y=\"{:.6g}\" width=\"{:.6g}\" height=\"{:.6g}\" fill=\"white\"/>\n", x0, -(y0 + h), w, h + band);
+  svg += fmt::format("<rect x=\"{:.6g}\" y=\"{:.6g}\" width=\"{:.6g}\" height=\"{:.6g}\" fill=\"white\"/>\n", x0,
+                     -(y0 + h), w, h + band);
   svg += "<g transform=\"scale(1,-1)\">\n";
   auto loops_path = [&](const std::vector<Loop>* loops, const std::string& css_class, const std::string& look) {
     if (!has(loops)) return;
@@ -126,15 +131,16 @@ void write_region_svg(const std::string& path, const SvgLayers& layers) {
   }
   if (layers.uncut)
     for (const UncutSpan& span : *layers.uncut)
-      svg += fmt::format("<path class=\"uncut\" {} d=\"M{:.6g} {:.6g} L{:.6g} {:.6g}\"/>\n", style.uncut, span.from.x, span.from.y,
-                         span.to.x, span.to.y);
+      svg += fmt::format("<path class=\"uncut\" {} d=\"M{:.6g} {:.6g} L{:.6g} {:.6g}\"/>\n", style.uncut, span.from.x,
+                         span.from.y, span.to.x, span.to.y);
   if (layers.loose_ends)
     for (const LooseEnd& end : *layers.loose_ends)
-      svg += fmt::format("<circle class=\"loose-end\" cx=\"{:.6g}\" cy=\"{:.6g}\" r=\"{:.3g}\" {}/>\n", end.at.x, end.at.y, 6 * stroke,
-                         style.loose_end);
+      svg += fmt::format("<circle class=\"loose-end\" cx=\"{:.6g}\" cy=\"{:.6g}\" r=\"{:.3g}\" {}/>\n", end.at.x,
+                         end.at.y, 6 * stroke, style.loose_end);
   svg += "</g>\n";
   svg += sim::svg_legend(legend, x0 + margin, legend_top, font);
-  svg += sim::svg_scale_bar(sim::nearest_125(std::max(extent.max_x - extent.min_x, size / 4) / 5), 1, x0 + margin, bar_y, font, stroke);
+  svg += sim::svg_scale_bar(sim::nearest_125(std::max(extent.max_x - extent.min_x, size / 4) / 5), 1, x0 + margin,
+                            bar_y, font, stroke);
   svg += "</svg>\n";
   io::write_file_atomically(path, svg);
 }

@@ -13,9 +13,9 @@
 namespace tk::cad {
 
 struct SvgLayers {
-  const std::vector<Loop>* drawn = nullptr;       ///< thin black
-  const std::vector<Segment>* open = nullptr;     ///< grey, dashed
-  const std::vector<Loop>* region = nullptr;      ///< filled, the prohibited region
+  const std::vector<Loop>* drawn = nullptr;    ///< thin black
+  const std::vector<Segment>* open = nullptr;  ///< grey, dashed
+  const std::vector<Loop>* region = nullptr;   ///< filled, the prohibited region
   const std::vector<LooseEnd>* loose_ends = nullptr;
   const std::vector<UncutSpan>* uncut = nullptr;
   std::string title;

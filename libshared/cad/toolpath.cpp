@@ -48,7 +48,8 @@ void check(double value, const char* what) {
 std::string toolpath_gcode(const std::vector<Loop>& loops, const ToolpathOptions& options) {
   check(options.cut_z, "the cut depth");
   check(options.safe_z, "the safe height");
-  if (!(options.feed > 0) || !(options.plunge_feed > 0) || !std::isfinite(options.feed) || !std::isfinite(options.plunge_feed))
+  if (!(options.feed > 0) || !(options.plunge_feed > 0) || !std::isfinite(options.feed) ||
+      !std::isfinite(options.plunge_feed))
     throw Error("toolpath: feeds must be positive and finite");
   if (!(options.safe_z > options.cut_z)) throw Error("toolpath: the safe height must be above the cut depth");
   motion::GcodeWriter out(motion::kFixedMicrons);
@@ -78,7 +79,8 @@ std::string toolpath_gcode(const std::vector<Loop>& loops, const ToolpathOptions
         const PrintedNumber i_word = out.printed(arc.centre.x - from.x), j_word = out.printed(arc.centre.y - from.y);
         const Point centre{from.x + i_word.value, from.y + j_word.value};
         if (!write_as_line(s, from, {end_x.value, end_y.value}, centre))
-          line = (arc.sweep > 0 ? "G3 X" : "G2 X") + end_x.text + " Y" + end_y.text + " I" + i_word.text + " J" + j_word.text;
+          line = (arc.sweep > 0 ? "G3 X" : "G2 X") + end_x.text + " Y" + end_y.text + " I" + i_word.text + " J" +
+                 j_word.text;
       }
       if (line.empty()) line = "G1 X" + end_x.text + " Y" + end_y.text;
       if (!feed_set) line += " F" + mm(options.feed);

@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "io/error.hpp"
@@ -50,7 +50,8 @@ std::uint64_t parse_count(std::string_view text, std::string_view option) {
   std::string whole(mantissa.substr(0, mantissa.find('.')));
   std::string fraction(mantissa.find('.') == std::string_view::npos ? "" : mantissa.substr(mantissa.find('.') + 1));
   while (!fraction.empty() && fraction.back() == '0') fraction.pop_back();
-  if (whole.empty() || !digits(whole, value) || (!fraction.empty() && fraction.find_first_not_of("0123456789") != std::string::npos))
+  if (whole.empty() || !digits(whole, value) ||
+      (!fraction.empty() && fraction.find_first_not_of("0123456789") != std::string::npos))
     throw not_integer();
   if (fraction.size() > exponent) throw bad("is not a whole number");
   std::string all = whole + fraction + std::string(exponent - fraction.size(), '0');
@@ -61,10 +62,13 @@ std::uint64_t parse_count(std::string_view text, std::string_view option) {
 
 std::pair<std::uint64_t, std::uint64_t> parse_range(std::string_view text, std::string_view option) {
   const std::size_t colon = text.find(':');
-  if (colon == std::string_view::npos) throw UsageError(std::string(option) + " '" + std::string(text.substr(0, 40)) + "' is not a range A:B");
+  if (colon == std::string_view::npos)
+    throw UsageError(std::string(option) + " '" + std::string(text.substr(0, 40)) + "' is not a range A:B");
   const std::uint64_t low = parse_count(text.substr(0, colon), option);
   const std::uint64_t high = parse_count(text.substr(colon + 1), option);
-  if (high < low) throw UsageError(std::string(option) + " range " + std::string(text.substr(0, 80)) + " is empty: its end is below its start");
+  if (high < low)
+    throw UsageError(std::string(option) + " range " + std::string(text.substr(0, 80)) +
+                     " is empty: its end is below its start");
   return {low, high};
 }
 
@@ -74,7 +78,8 @@ std::pair<unsigned, unsigned> parse_shard(std::string_view text, std::string_vie
   if (slash == std::string_view::npos) throw UsageError(quoted + " is not K/N");
   const std::uint64_t index = parse_count(text.substr(0, slash), option);
   const std::uint64_t count = parse_count(text.substr(slash + 1), option);
-  if (count == 0 || count > 1000000 || index == 0 || index > count) throw UsageError(quoted + " needs 1 <= K <= N <= 1000000");
+  if (count == 0 || count > 1000000 || index == 0 || index > count)
+    throw UsageError(quoted + " needs 1 <= K <= N <= 1000000");
   return {static_cast<unsigned>(index - 1), static_cast<unsigned>(count)};
 }
 
@@ -84,15 +89,16 @@ std::optional<double> finite_number(std::string_view part) {
   if (part.starts_with('+')) part.remove_prefix(1);
   double value = 0;
   const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
-  if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value)) return std::nullopt;
+  if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value))
+    return std::nullopt;
   return value;
 }
 }  // namespace
 
 std::vector<double> parse_numbers(std::string_view text, std::string_view option, std::size_t count) {
   const auto bad = [&] {
-    return UsageError(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' is not " + std::to_string(count) +
-                 " finite numbers separated by commas");
+    return UsageError(std::string(option) + " '" + std::string(text.substr(0, 60)) + "' is not " +
+                      std::to_string(count) + " finite numbers separated by commas");
   };
   std::vector<double> values;
   for (std::size_t at = 0; at <= text.size();) {
@@ -124,7 +130,8 @@ std::vector<double> parse_grid(std::string_view text, std::string_view option, s
   const double count = std::floor((to - from) / step * (1 + 1e-12)) + 1;  // TO itself when the steps land on it
   if (count > static_cast<double>(max_values)) throw bad("has more than " + std::to_string(max_values) + " values");
   std::vector<double> values;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i) values.push_back(from + static_cast<double>(i) * step);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(count); ++i)
+    values.push_back(from + static_cast<double>(i) * step);
   return values;
 }
 

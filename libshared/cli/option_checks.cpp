@@ -40,7 +40,8 @@ CLI::Validator number_check(NumberDomain domain) {
         char* end = nullptr;
         double v = std::strtod(text.c_str(), &end);
         if (text.empty() || end != text.c_str() + text.size()) return fmt::format("'{}' is not a number", text);
-        if (errno == ERANGE) v = std::numeric_limits<double>::quiet_NaN();  // overflow or underflow: out of every domain
+        if (errno == ERANGE)
+          v = std::numeric_limits<double>::quiet_NaN();  // overflow or underflow: out of every domain
         const std::string problem = out_of_domain(v, domain);
         return problem.empty() ? problem : fmt::format("{}, not {}", problem, text);
       },
@@ -71,7 +72,8 @@ CLI::Validator range_check(double low, double high, ZeroAllowed zero) {
         char* end = nullptr;
         double v = std::strtod(text.c_str(), &end);
         if (text.empty() || end != text.c_str() + text.size()) return fmt::format("'{}' is not a number", text);
-        if (errno == ERANGE && std::abs(v) > 1) v = std::numeric_limits<double>::quiet_NaN();  // overflow: out of every range
+        if (errno == ERANGE && std::abs(v) > 1)
+          v = std::numeric_limits<double>::quiet_NaN();  // overflow: out of every range
         const std::string problem = out_of_range(v, low, high, zero);
         return problem.empty() ? problem : fmt::format("{}, not {}", problem, text);
       },
@@ -85,7 +87,8 @@ void require_range(double v, double low, double high, std::string_view option, Z
 
 void require_run_size(double implied, double cap, std::string_view what, std::string_view options) {
   if (!(implied <= cap))
-    throw UsageError(fmt::format("{} imply {:.3g} {}, more than the {:g} this tool allows", options, implied, what, cap));
+    throw UsageError(
+        fmt::format("{} imply {:.3g} {}, more than the {:g} this tool allows", options, implied, what, cap));
 }
 
 }  // namespace tk::cli

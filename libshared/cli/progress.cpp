@@ -22,8 +22,9 @@ void Progress::update(std::uint64_t done, double fraction, std::string_view deta
   if (now - last_ < std::chrono::milliseconds(terminal ? 200 : 2000)) return;
   last_ = now;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  std::string text = detail.empty() ? fmt::format("{}: {} done, {:.1f}/s", tool_, done, elapsed > 0 ? done / elapsed : 0.0)
-                                    : fmt::format("{}: {}", tool_, detail);
+  std::string text = detail.empty()
+                         ? fmt::format("{}: {} done, {:.1f}/s", tool_, done, elapsed > 0 ? done / elapsed : 0.0)
+                         : fmt::format("{}: {}", tool_, detail);
   if (fraction > 0.0 && fraction <= 1.0)
     text += fmt::format(", {:.1f}%, eta {:.0f} s", 100.0 * fraction, elapsed * (1.0 - fraction) / fraction);
   if (terminal) {

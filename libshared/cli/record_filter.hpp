@@ -31,8 +31,8 @@ struct RecordJob {
 struct RecordOutcome {
   Record record;  ///< written when `write` is set
   bool write = true;
-  Location where;               ///< the record's, filled in by the driver
-  std::optional<Error> error;   ///< the record's bad data, filled in by the driver
+  Location where;              ///< the record's, filled in by the driver
+  std::optional<Error> error;  ///< the record's bad data, filled in by the driver
 };
 
 /// The tool's part. Only `work` is required.
@@ -90,7 +90,8 @@ void set_seconds(Record& record, double seconds);
 
 /// Runs the filter over the tool's inputs to the end, or until a stop signal.
 template <class Job, class Outcome>
-void run_record_filter(ToolApp& tool, const RecordFilterSettings& settings, const RecordFilterSteps<Job, Outcome>& steps) {
+void run_record_filter(ToolApp& tool, const RecordFilterSettings& settings,
+                       const RecordFilterSteps<Job, Outcome>& steps) {
   RecordFilterRun run(tool, settings);
   auto work = [&](std::vector<Job>& batch) {
     std::vector<Outcome> outcomes(batch.size());
@@ -106,7 +107,8 @@ void run_record_filter(ToolApp& tool, const RecordFilterSettings& settings, cons
     return outcomes;
   };
   auto emit = [&](std::vector<Outcome>& outcomes) {
-    for (Outcome& outcome : outcomes) run.emit(outcome, [&] {
+    for (Outcome& outcome : outcomes)
+      run.emit(outcome, [&] {
         if (steps.accept) steps.accept(outcome);
       });
   };

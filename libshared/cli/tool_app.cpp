@@ -3,8 +3,8 @@
 
 #include <unistd.h>
 
-#include <csignal>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <new>
@@ -42,9 +42,7 @@ io::OutputFormat ToolApp::output_format() const {
   return common_.csv ? io::OutputFormat::csv : io::OutputFormat::json_lines;
 }
 
-bool ToolApp::show_progress() const {
-  return !common_.quiet && (common_.progress || isatty(STDERR_FILENO));
-}
+bool ToolApp::show_progress() const { return !common_.quiet && (common_.progress || isatty(STDERR_FILENO)); }
 
 void ToolApp::warn(const std::string& message) const {
   if (!common_.quiet) std::fprintf(stderr, "%s: %s\n", name_.c_str(), message.c_str());
@@ -59,8 +57,8 @@ int ToolApp::run(int argc, char** argv, const std::function<void()>& body) {
   if (!isatty(STDOUT_FILENO)) std::setvbuf(stdout, stdout_buffer, _IOFBF, sizeof stdout_buffer);
   auto usage_error = [&](const std::string& message) {
     std::fflush(stdout);
-    std::fprintf(stderr, "%s: %s\nTry '%s --help' for more information.\n", name_.c_str(),
-                 message.c_str(), name_.c_str());
+    std::fprintf(stderr, "%s: %s\nTry '%s --help' for more information.\n", name_.c_str(), message.c_str(),
+                 name_.c_str());
     return 2;
   };
   try {

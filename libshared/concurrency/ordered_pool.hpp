@@ -26,7 +26,8 @@ class OrderedPool {
   using Emit = std::function<void(Result&)>;
 
   OrderedPool(unsigned threads, Work work, Emit emit, std::size_t window = 0)
-      : work_(std::move(work)), emit_(std::move(emit)),
+      : work_(std::move(work)),
+        emit_(std::move(emit)),
         window_(window ? window : 4 * static_cast<std::size_t>(threads)) {
     if (threads > 1)
       for (unsigned i = 0; i < threads; ++i) workers_.emplace_back([this] { run_worker(); });

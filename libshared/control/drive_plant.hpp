@@ -12,10 +12,12 @@ namespace tk::control {
 struct DriveMechanics {
   double mass_kg = 10;
   double damping_kg_s = 250;
-  double mass_end_kg = -1;     ///< < 0: constant mass
+  double mass_end_kg = -1;       ///< < 0: constant mass
   double damping_end_kg_s = -1;  ///< < 0: constant damping
 
-  double mass_at(double fraction) const { return mass_end_kg < 0 ? mass_kg : mass_kg + fraction * (mass_end_kg - mass_kg); }
+  double mass_at(double fraction) const {
+    return mass_end_kg < 0 ? mass_kg : mass_kg + fraction * (mass_end_kg - mass_kg);
+  }
   double damping_at(double fraction) const {
     return damping_end_kg_s < 0 ? damping_kg_s : damping_kg_s + fraction * (damping_end_kg_s - damping_kg_s);
   }

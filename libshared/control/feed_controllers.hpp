@@ -30,18 +30,18 @@ const char* controller_name(ControllerKind kind);
 /// kg/s³, 1/s, kg) mean the same in any unit.
 struct ControllerGains {
   ControllerKind kind = ControllerKind::smc;
-  double mu = 2, lambda = 1;     ///< the surface S = ė + μ e + λ ∫e
-  double switching = 40;         ///< Λ, classical SMC
-  double boundary_layer = 0;     ///< > 0: sat(S/φ) instead of sign(S), in L/s
-  double alpha = 200, beta = 200;  ///< super-twisting
-  double switching_sign = +1;    ///< −1 reproduces the seed's written sign (unstable)
-  bool printed_bracket = false;  ///< the seed's m̂ [ẍ_ref + (b̂/m̂) ẋ_ref + λ e] instead of F_eq
-  double pid_bandwidth_hz = 20;  ///< PID default gains: a triple pole of m̂ s³ + ... at 2π·this
+  double mu = 2, lambda = 1;         ///< the surface S = ė + μ e + λ ∫e
+  double switching = 40;             ///< Λ, classical SMC
+  double boundary_layer = 0;         ///< > 0: sat(S/φ) instead of sign(S), in L/s
+  double alpha = 200, beta = 200;    ///< super-twisting
+  double switching_sign = +1;        ///< −1 reproduces the seed's written sign (unstable)
+  bool printed_bracket = false;      ///< the seed's m̂ [ẍ_ref + (b̂/m̂) ẋ_ref + λ e] instead of F_eq
+  double pid_bandwidth_hz = 20;      ///< PID default gains: a triple pole of m̂ s³ + ... at 2π·this
   double kp = -1, ki = -1, kd = -1;  ///< < 0: from the bandwidth
-  double pid_feedforward = 1;    ///< PID: share of m̂ ẍ_ref + b̂ ẋ_ref fed forward, 0-1
-  double position_gain = 30;     ///< P-PD: K_v, 1/s (velocity command per unit error)
-  double velocity_p = -1;        ///< P-PD: kg/s; < 0: m̂·2π·velocity_bandwidth
-  double velocity_d = 0;         ///< P-PD: kg (on the derivative of the velocity error)
+  double pid_feedforward = 1;        ///< PID: share of m̂ ẍ_ref + b̂ ẋ_ref fed forward, 0-1
+  double position_gain = 30;         ///< P-PD: K_v, 1/s (velocity command per unit error)
+  double velocity_p = -1;            ///< P-PD: kg/s; < 0: m̂·2π·velocity_bandwidth
+  double velocity_d = 0;             ///< P-PD: kg (on the derivative of the velocity error)
   double velocity_bandwidth_hz = 100;
   double velocity_feedforward = 0;  ///< P-PD: share of ẋ_ref fed forward, 0-1
 
@@ -69,7 +69,7 @@ class FeedController {
   ControllerGains g_;
   double m_hat_, b_hat_, period_;
   double kp_, ki_, kd_, kpv_;
-  double twisting_integral_ = 0;       ///< the super-twisting w
+  double twisting_integral_ = 0;        ///< the super-twisting w
   double previous_velocity_error_ = 0;  ///< P-PD's derivative
   bool first_ = true;
 };

@@ -28,11 +28,12 @@ void FeedDrivePlot::write(const std::string& path, const std::string& title) con
                   .series = {{value(&FeedDriveSample::force_n), "#1f5fbf", 1.2, "control force F"},
                              {value(&FeedDriveSample::disturbance_n), "#e0a030", 1, "cutting force F_d"}},
                   .range = TimePanel::Range::symmetric};
-  sim::write_time_panels_svg(path, {.title = title,
-                                    .samples = samples_.size(),
-                                    .time_s = value(&FeedDriveSample::t_s),
-                                    .panels = {std::move(position), std::move(error), std::move(error_rate), std::move(force)},
-                                    .panel_height = 180});
+  sim::write_time_panels_svg(
+      path, {.title = title,
+             .samples = samples_.size(),
+             .time_s = value(&FeedDriveSample::t_s),
+             .panels = {std::move(position), std::move(error), std::move(error_rate), std::move(force)},
+             .panel_height = 180});
 }
 
 }  // namespace tk::control

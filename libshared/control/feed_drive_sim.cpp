@@ -35,7 +35,8 @@ void FeedDriveConfig::validate() const {
   };
   positive(plant.mass_kg, "the mass"), non_negative(plant.damping_kg_s, "the damping");
   if (plant.mass_end_kg >= 0 || std::isnan(plant.mass_end_kg)) positive(plant.mass_end_kg, "the final mass");
-  if (plant.damping_end_kg_s >= 0 || std::isnan(plant.damping_end_kg_s)) non_negative(plant.damping_end_kg_s, "the final damping");
+  if (plant.damping_end_kg_s >= 0 || std::isnan(plant.damping_end_kg_s))
+    non_negative(plant.damping_end_kg_s, "the final damping");
   positive(mass_estimate_kg, "the mass estimate"), non_negative(damping_estimate_kg_s, "the damping estimate");
   positive(amplifier_a_v, "K_t"), positive(force_constant_n_a, "K_a"), positive(voltage_limit_v, "the voltage limit");
   positive(duration_s, "the duration"), positive(period_s, "the control period");
@@ -45,14 +46,17 @@ void FeedDriveConfig::validate() const {
   non_negative(position_filter_hz, "the position filter"), non_negative(velocity_filter_hz, "the velocity filter");
   positive(length_unit_m, "the length unit");
   non_negative(settle_s, "the settling time"), non_negative(hf_cutoff_hz, "the chattering cut-off");
-  require(settle_s < duration_s, fmt::format("the settling time {} s leaves nothing of a {} s run", settle_s, duration_s));
+  require(settle_s < duration_s,
+          fmt::format("the settling time {} s leaves nothing of a {} s run", settle_s, duration_s));
   require(!std::isinf(initial_position_mm) && !std::isinf(initial_velocity_mm_s), "initial conditions must be finite");
   positive(divergence_mm, "the divergence limit");
   gains.validate();
   cut.validate();
 }
 
-std::uint64_t FeedDriveConfig::periods() const { return static_cast<std::uint64_t>(std::llround(duration_s / period_s)); }
+std::uint64_t FeedDriveConfig::periods() const {
+  return static_cast<std::uint64_t>(std::llround(duration_s / period_s));
+}
 
 double high_frequency_share(std::vector<double> samples, double period_s, double cutoff_hz) {
   const std::size_t n = samples.size();
@@ -86,8 +90,11 @@ namespace {
 class ExactIntegrator final : public PeriodIntegrator {
  public:
   explicit ExactIntegrator(const FeedDriveConfig& c)
-      : cutting_(c.cut), disturbance_(cutting_, c.period_s / c.substeps), step_s_(c.period_s / c.substeps),
-        from_n_(1 / c.length_unit_m), substeps_(c.substeps) {}
+      : cutting_(c.cut),
+        disturbance_(cutting_, c.period_s / c.substeps),
+        step_s_(c.period_s / c.substeps),
+        from_n_(1 / c.length_unit_m),
+        substeps_(c.substeps) {}
 
   void configure(double mass_kg, double damping_kg_s) override { plant_.configure(mass_kg, damping_kg_s, step_s_); }
 
@@ -112,20 +119,22 @@ class ExactIntegrator final : public PeriodIntegrator {
 
 }  // namespace
 
-FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, const FeedDriveSampleSink& on_sample, std::uint64_t every) {
+FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, const FeedDriveSampleSink& on_sample,
+                                     std::uint64_t every) {
   ExactIntegrator integrator(c);  // the loop validates c; the cut validates itself first
   return simulate_feed_drive(c, integrator, on_sample, every);
 }
 
-FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, PeriodIntegrator& integrator, const FeedDriveSampleSink& on_sample,
-                                     std::uint64_t every) {
+FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, PeriodIntegrator& integrator,
+                                     const FeedDriveSampleSink& on_sample, std::uint64_t every) {
   c.validate();
   const double L = c.length_unit_m, from_mm = 1e-3 / L, to_mm = L / 1e-3, from_n = 1 / L, to_n = L;
   const double T = c.period_s;
   const std::uint64_t periods = c.periods();
   const double force_limit = c.amplifier_a_v * c.force_constant_n_a * c.voltage_limit_v * from_n;
   const double quantum = c.encoder_mm * from_mm;
-  const double position_alpha = low_pass_alpha(c.position_filter_hz, T), velocity_alpha = low_pass_alpha(c.velocity_filter_hz, T);
+  const double position_alpha = low_pass_alpha(c.position_filter_hz, T),
+               velocity_alpha = low_pass_alpha(c.velocity_filter_hz, T);
 
   FeedController controller(c.gains, c.mass_estimate_kg, c.damping_estimate_kg_s, T);
   const MillingForce cutting(c.cut);  // F_d for the samples; the integrator has its own
@@ -147,7 +156,8 @@ FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, PeriodIntegrator&
 
   for (std::uint64_t k = 0; k < periods; ++k) {
     const double t = static_cast<double>(k) * T;
-    if (c.plant.varies()) integrator.configure(c.plant.mass_at((k + 0.5) / periods), c.plant.damping_at((k + 0.5) / periods));
+    if (c.plant.varies())
+      integrator.configure(c.plant.mass_at((k + 0.5) / periods), c.plant.damping_at((k + 0.5) / periods));
     if (k > 0) {  // the encoder, differenced for velocity, each through its filter
       const double reading = measure(axis.x);
       x_hat += position_alpha * (reading - x_hat);
@@ -168,7 +178,8 @@ FeedDriveSummary simulate_feed_drive(const FeedDriveConfig& c, PeriodIntegrator&
     if (saturating) force = std::isnan(force) ? 0 : std::copysign(force_limit, force);
     const double force_n = force * to_n;
     if (on_sample && k % every == 0)
-      on_sample({t, r_mm.x_mm, axis.x * to_mm, true_error * to_mm, true_rate * to_mm, surface * to_mm, force_n, cutting.at(t)});
+      on_sample({t, r_mm.x_mm, axis.x * to_mm, true_error * to_mm, true_rate * to_mm, surface * to_mm, force_n,
+                 cutting.at(t)});
     if (t >= c.settle_s) {
       const double e_mm = true_error * to_mm, ev_mm = true_rate * to_mm, s_mm = surface * to_mm;
       sum_e2 += e_mm * e_mm, sum_ev2 += ev_mm * ev_mm, sum_s2 += s_mm * s_mm, sum_f2 += force_n * force_n;

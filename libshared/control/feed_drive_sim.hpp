@@ -18,27 +18,27 @@
 namespace tk::control {
 
 struct FeedDriveConfig {
-  DriveMechanics plant;           ///< the real axis (seed: 10 kg, 250 kg/s)
-  double mass_estimate_kg = 7;    ///< m̂, what the controller believes
+  DriveMechanics plant;                ///< the real axis (seed: 10 kg, 250 kg/s)
+  double mass_estimate_kg = 7;         ///< m̂, what the controller believes
   double damping_estimate_kg_s = 200;  ///< b̂
-  double amplifier_a_v = 2;       ///< K_t, current amplifier
-  double force_constant_n_a = 50;  ///< K_a, motor
-  double voltage_limit_v = 10;    ///< the amplifier input saturates here
+  double amplifier_a_v = 2;            ///< K_t, current amplifier
+  double force_constant_n_a = 50;      ///< K_a, motor
+  double voltage_limit_v = 10;         ///< the amplifier input saturates here
   ControllerGains gains;
   MillingCut cut;
   Reference reference = Reference::sine(1, 3);
   double duration_s = 10;
-  double period_s = 1e-4;         ///< control period
-  int substeps = 10;              ///< plant steps per control period
-  double encoder_mm = 1e-5;       ///< resolution (10 nm, a precision linear scale); 0: none
-  double position_filter_hz = 0;  ///< first-order low-pass cut-off; 0: none
+  double period_s = 1e-4;            ///< control period
+  int substeps = 10;                 ///< plant steps per control period
+  double encoder_mm = 1e-5;          ///< resolution (10 nm, a precision linear scale); 0: none
+  double position_filter_hz = 0;     ///< first-order low-pass cut-off; 0: none
   double velocity_filter_hz = 1000;  ///< on the differenced encoder position; 0: none
-  double length_unit_m = 1e-3;    ///< the unit the controller's gains are written in
-  double settle_s = 0;            ///< summary figures from this time on
-  double hf_cutoff_hz = 1000;     ///< chattering share: F's power above this
+  double length_unit_m = 1e-3;       ///< the unit the controller's gains are written in
+  double settle_s = 0;               ///< summary figures from this time on
+  double hf_cutoff_hz = 1000;        ///< chattering share: F's power above this
   double initial_position_mm = std::numeric_limits<double>::quiet_NaN();  ///< NaN: on the reference
   double initial_velocity_mm_s = std::numeric_limits<double>::quiet_NaN();
-  double divergence_mm = 1000;    ///< the run stops, marked diverged, beyond this error
+  double divergence_mm = 1000;  ///< the run stops, marked diverged, beyond this error
 
   /// Throws tk::Error (no location) for a configuration that cannot run.
   void validate() const;
@@ -52,10 +52,10 @@ struct FeedDriveSample {
 
 struct FeedDriveSummary {
   double rms_error_mm = 0, max_error_mm = 0, rms_velocity_error_mm_s = 0, rms_s = 0;
-  double chattering_n_s = 0;   ///< total variation of F per second
-  double hf_share = 0;         ///< share of F's power above hf_cutoff_hz (periodogram)
+  double chattering_n_s = 0;  ///< total variation of F per second
+  double hf_share = 0;        ///< share of F's power above hf_cutoff_hz (periodogram)
   double effort_rms_n = 0, max_force_n = 0, saturated_share = 0;
-  double measured_s = 0;       ///< the span the figures cover
+  double measured_s = 0;  ///< the span the figures cover
   std::uint64_t plant_steps = 0;
   bool diverged = false;
   double diverged_at_s = 0;

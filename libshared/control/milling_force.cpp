@@ -26,9 +26,11 @@ void MillingCut::validate() const {
   positive(diameter_mm, "the tool diameter");
   positive(spindle_rpm, "the spindle speed");
   positive(axial_depth_mm, "the axial depth");
-  if (!(feed_mm_min >= 0 && std::isfinite(feed_mm_min))) throw Error(fmt::format("the feed must be >= 0, not {}", feed_mm_min));
+  if (!(feed_mm_min >= 0 && std::isfinite(feed_mm_min)))
+    throw Error(fmt::format("the feed must be >= 0, not {}", feed_mm_min));
   if ((radial_depth_mm >= 0 || std::isnan(radial_depth_mm)) && !(radial_depth_mm > 0 && radial_depth_mm <= diameter_mm))
-    throw Error(fmt::format("the radial depth {} mm must be above 0 and at most the diameter {} mm", radial_depth_mm, diameter_mm));
+    throw Error(fmt::format("the radial depth {} mm must be above 0 and at most the diameter {} mm", radial_depth_mm,
+                            diameter_mm));
   for (const double k : {ktc_n_mm2, krc_n_mm2, kte_n_mm, kre_n_mm})
     if (!std::isfinite(k)) throw Error("cutting coefficients must be finite numbers");
 }
@@ -53,7 +55,10 @@ double MillingForce::at(double t_s) const {
 }
 
 MillingForce::Stepper::Stepper(const MillingForce& force, double step_s)
-    : force_(&force), step_angle_(wrap_angle(force.omega_rad_s_ * step_s)), step_cos_(std::cos(step_angle_)), step_sin_(std::sin(step_angle_)) {}
+    : force_(&force),
+      step_angle_(wrap_angle(force.omega_rad_s_ * step_s)),
+      step_cos_(std::cos(step_angle_)),
+      step_sin_(std::sin(step_angle_)) {}
 
 void MillingForce::Stepper::start(double t_s) {
   angle_ = wrap_angle(force_->omega_rad_s_ * t_s);

@@ -35,7 +35,8 @@ class Reference {
  private:
   enum class Kind { sine, step, ramp, samples } kind_ = Kind::sine;
   /// A reference of two finite parameters, described by `description` (a format of both).
-  static Reference analytic(Kind kind, std::pair<double, const char*> p1, std::pair<double, const char*> p2, const char* description);
+  static Reference analytic(Kind kind, std::pair<double, const char*> p1, std::pair<double, const char*> p2,
+                            const char* description);
   double p1_ = 0, p2_ = 0;
   std::vector<double> t_, x_, v_, a_;
   std::string description_;

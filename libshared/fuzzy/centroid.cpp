@@ -71,7 +71,8 @@ void integrate_envelope(std::span<const std::array<double, 2>> lines, double l, 
       }
     }
     const double x0 = l + s * (r - l), x1 = next_s >= 1 ? r : l + next_s * (r - l);
-    integrate_piece(x0, cur[0] + s * cur_rise, x1, next_s >= 1 ? cur[1] : cur[0] + next_s * cur_rise, ref, area, moment);
+    integrate_piece(x0, cur[0] + s * cur_rise, x1, next_s >= 1 ? cur[1] : cur[0] + next_s * cur_rise, ref, area,
+                    moment);
     s = next_s;
     current = next;
   }
@@ -132,10 +133,8 @@ void sweep(std::span<const Corners> shapes, double lo, double hi, double ref, Sc
       if (p < 0 || p >= 3) continue;  // outside the term: 0
       lines.push_back(piece_on(c, p, l, r));
     }
-    if (lines.size() == 1)
-      integrate_piece(l, lines[0][0], r, lines[0][1], ref, area, moment);
-    else if (!lines.empty())
-      integrate_envelope(lines, l, r, ref, area, moment);
+    if (lines.size() == 1) integrate_piece(l, lines[0][0], r, lines[0][1], ref, area, moment);
+    else if (!lines.empty()) integrate_envelope(lines, l, r, ref, area, moment);
   }
 }
 
@@ -202,14 +201,13 @@ CentroidResult exact_centroid(std::span<const ImpliedTerm> terms, Implication im
       if (last == first + 2)
         sweep_pair(shapes[first], shapes[first + 1], std::max(lo, min), std::min(end, max), ref, area, moment);
       else
-        sweep(std::span<const Corners>(shapes.data() + first, last - first), std::max(lo, min), std::min(end, max),
-              ref, scratch, area, moment);
+        sweep(std::span<const Corners>(shapes.data() + first, last - first), std::max(lo, min), std::min(end, max), ref,
+              scratch, area, moment);
     }
     first = last;
   }
   if (!(area > 0)) return {kNaN, 0};
   return {ref + moment / area, area};
 }
-
 
 }  // namespace tk::fuzzy

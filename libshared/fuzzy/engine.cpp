@@ -19,7 +19,8 @@ std::size_t index_by_name(const Vars& variables, const std::string& name) {
 void validate_variable(const Variable& v, const char* kind) {
   if (v.name.empty()) throw Error(fmt::format("{} without a name", kind));
   if (!std::isfinite(v.min) || !std::isfinite(v.max) || !(v.min < v.max))
-    throw Error(fmt::format("{} '{}': range {} {} is not a finite interval with min < max", kind, v.name, v.min, v.max));
+    throw Error(
+        fmt::format("{} '{}': range {} {} is not a finite interval with min < max", kind, v.name, v.min, v.max));
   if (v.terms.empty()) throw Error(fmt::format("{} '{}' has no terms", kind, v.name));
   for (std::size_t i = 0; i < v.terms.size(); ++i) {
     const Term& t = v.terms[i];
@@ -40,7 +41,9 @@ std::size_t Variable::term_index(const std::string& term_name) const { return in
 
 std::size_t Engine::input_index(const std::string& variable_name) const { return index_by_name(inputs, variable_name); }
 
-std::size_t Engine::output_index(const std::string& variable_name) const { return index_by_name(outputs, variable_name); }
+std::size_t Engine::output_index(const std::string& variable_name) const {
+  return index_by_name(outputs, variable_name);
+}
 
 std::string_view implication_name(Implication implication) {
   return implication == Implication::minimum ? "minimum" : "product";
@@ -56,9 +59,11 @@ void validate(const Engine& engine) {
       throw Error(fmt::format("output variable '{}': resolution must be at least 1", v.name));
   }
   for (std::size_t i = 0; i < engine.inputs.size() + engine.outputs.size(); ++i) {
-    const std::string& name = i < engine.inputs.size() ? engine.inputs[i].name : engine.outputs[i - engine.inputs.size()].name;
+    const std::string& name =
+        i < engine.inputs.size() ? engine.inputs[i].name : engine.outputs[i - engine.inputs.size()].name;
     for (std::size_t j = 0; j < i; ++j) {
-      const std::string& other = j < engine.inputs.size() ? engine.inputs[j].name : engine.outputs[j - engine.inputs.size()].name;
+      const std::string& other =
+          j < engine.inputs.size() ? engine.inputs[j].name : engine.outputs[j - engine.inputs.size()].name;
       if (other == name) throw Error(fmt::format("variable '{}' defined twice", name));
     }
   }

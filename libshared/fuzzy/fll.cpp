@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "io/error.hpp"
 #include "fuzzy/fll_names.hpp"
+#include "io/error.hpp"
 #include "io/input_file.hpp"
 
 namespace tk::fuzzy {
@@ -118,10 +118,10 @@ class Reader {
     } else if (section_ == Section::rules) {
       if (rule_block_entry(key, value)) return;
     }
-    constexpr std::array<std::string_view, 16> known{
-        "enabled",     "range",       "lock-range",  "term",        "aggregation",   "accumulation",
-        "defuzzifier", "default",     "lock-previous", "lock-valid", "conjunction",  "disjunction",
-        "implication", "activation",  "rule",        "description"};
+    constexpr std::array<std::string_view, 16> known{"enabled",       "range",        "lock-range",  "term",
+                                                     "aggregation",   "accumulation", "defuzzifier", "default",
+                                                     "lock-previous", "lock-valid",   "conjunction", "disjunction",
+                                                     "implication",   "activation",   "rule",        "description"};
     if (!contains(known, key)) fail(fmt::format("unknown key '{}'", key));
     constexpr std::array<std::string_view, 5> names{"", "Engine", "InputVariable", "OutputVariable", "RuleBlock"};
     fail(fmt::format("key '{}' does not belong in {}", key, names[static_cast<int>(section_)]));
@@ -270,8 +270,10 @@ class Reader {
       conjunction_none_ = value == "none";
       const auto t = tnorm(value);
       if (!t && !conjunction_none_)
-        fail(fmt::format("conjunction '{}' is not supported (Minimum, AlgebraicProduct, DrasticProduct, "
-                         "BoundedDifference, HamacherProduct, Trigonometric or none)", value));
+        fail(
+            fmt::format("conjunction '{}' is not supported (Minimum, AlgebraicProduct, DrasticProduct, "
+                        "BoundedDifference, HamacherProduct, Trigonometric or none)",
+                        value));
       block.conjunction = t.value_or(TNorm::minimum);
     } else if (key == "disjunction") {
       if (value != "none" && !contains(kSNorms, value)) fail(fmt::format("unknown disjunction '{}'", value));
@@ -305,8 +307,9 @@ class Reader {
     const std::size_t v = input ? engine_.input_index(name) : engine_.output_index(name);
     if (v == Variable::npos) {
       const bool other = (input ? engine_.output_index(name) : engine_.input_index(name)) != Variable::npos;
-      if (other) fail(fmt::format("'{}' is an {} variable and cannot be {}", name, input ? "output" : "input",
-                                  input ? "in a rule's if part" : "in a rule's then part"));
+      if (other)
+        fail(fmt::format("'{}' is an {} variable and cannot be {}", name, input ? "output" : "input",
+                         input ? "in a rule's if part" : "in a rule's then part"));
       fail(fmt::format("unknown {} variable '{}'", input ? "input" : "output", name));
     }
     const Variable& var = input ? engine_.inputs[v] : static_cast<const Variable&>(engine_.outputs[v]);

@@ -21,8 +21,8 @@ constexpr std::array<std::pair<TNorm, std::string_view>, 6> kConjunctions{{{TNor
                                                                            {TNorm::lukasiewicz, "BoundedDifference"},
                                                                            {TNorm::hamacher, "HamacherProduct"},
                                                                            {TNorm::trigonometric, "Trigonometric"}}};
-constexpr std::array<std::string_view, 9> kSNorms{"Maximum",     "AlgebraicSum",     "BoundedSum",
-                                                  "DrasticSum",  "EinsteinSum",      "HamacherSum",
+constexpr std::array<std::string_view, 9> kSNorms{"Maximum",          "AlgebraicSum",  "BoundedSum",
+                                                  "DrasticSum",       "EinsteinSum",   "HamacherSum",
                                                   "NilpotentMaximum", "NormalizedSum", "UnboundedSum"};
 // Words a rule gives meaning to: as names they would make rules ambiguous.
 constexpr std::array<std::string_view, 6> kKeywords{"if", "is", "and", "or", "then", "with"};

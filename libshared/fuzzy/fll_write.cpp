@@ -64,9 +64,9 @@ std::string write_fll(const Engine& engine) {
     write_variable(out, v, "OutputVariable");
     const bool exact = v.defuzzifier.kind == Defuzzifier::Kind::exact;
     out += "  aggregation: Maximum\n  defuzzifier: ";
-    out += exact && v.defuzzifier.resolution == 100 ? std::string("ExactCentroid")
-                                                    : fmt::format("{} {}", exact ? "ExactCentroid" : "Centroid",
-                                                                  v.defuzzifier.resolution);
+    out += exact && v.defuzzifier.resolution == 100
+               ? std::string("ExactCentroid")
+               : fmt::format("{} {}", exact ? "ExactCentroid" : "Centroid", v.defuzzifier.resolution);
     out += std::isnan(v.default_value) ? std::string("\n  default: nan\n")
                                        : fmt::format("\n  default: {}\n", v.default_value);
     out += "  lock-previous: false\n";
@@ -84,12 +84,14 @@ std::string write_fll(const Engine& engine) {
     out += "  rule: if";
     for (std::size_t i = 0; i < rule.antecedents.size(); ++i) {
       const Variable& v = engine.inputs[rule.antecedents[i].variable];
-      fmt::format_to(std::back_inserter(out), "{} {} is {}", i ? " and" : "", v.name, v.terms[rule.antecedents[i].term].name);
+      fmt::format_to(std::back_inserter(out), "{} {} is {}", i ? " and" : "", v.name,
+                     v.terms[rule.antecedents[i].term].name);
     }
     out += " then";
     for (std::size_t i = 0; i < rule.consequents.size(); ++i) {
       const Variable& v = engine.outputs[rule.consequents[i].variable];
-      fmt::format_to(std::back_inserter(out), "{} {} is {}", i ? " and" : "", v.name, v.terms[rule.consequents[i].term].name);
+      fmt::format_to(std::back_inserter(out), "{} {} is {}", i ? " and" : "", v.name,
+                     v.terms[rule.consequents[i].term].name);
     }
     if (rule.weight != 1) fmt::format_to(std::back_inserter(out), " with {}", rule.weight);
     out += '\n';
@@ -143,7 +145,8 @@ std::string engine_difference(const Engine& a, const Engine& b) {
   if (p.rules.size() != q.rules.size()) return "number of rules";
   for (std::size_t i = 0; i < p.rules.size(); ++i)
     if (!same_propositions(p.rules[i].antecedents, q.rules[i].antecedents) ||
-        !same_propositions(p.rules[i].consequents, q.rules[i].consequents) || !same(p.rules[i].weight, q.rules[i].weight))
+        !same_propositions(p.rules[i].consequents, q.rules[i].consequents) ||
+        !same(p.rules[i].weight, q.rules[i].weight))
       return fmt::format("rule {}", i + 1);
   return {};
 }

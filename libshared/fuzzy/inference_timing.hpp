@@ -19,8 +19,8 @@ namespace tk::fuzzy {
 std::vector<std::array<double, 3>> protocol_triples(int adc_bits);
 
 struct InferenceTiming {
-  double ns_per_inference = 0;  ///< median over rounds of many protocol blocks
-  double ms_per_2x1024 = 0;     ///< the paper's protocol: one block, median over rounds
+  double ns_per_inference = 0;   ///< median over rounds of many protocol blocks
+  double ms_per_2x1024 = 0;      ///< the paper's protocol: one block, median over rounds
   std::uint64_t inferences = 0;  ///< how many were timed in all
 };
 

@@ -19,7 +19,7 @@ struct RuleRow {
 
 // R1-R7 for the left motor as the paper prints them (seed 000, lines 658-670).
 constexpr RuleRow kRules[] = {
-    {L, L, L, "STOP"},    {L, L, D, "FORWARD_MAX"}, {L, D, D, "FORWARD"},        {L, D, L, "FORWARD"},
+    {L, L, L, "STOP"},     {L, L, D, "FORWARD_MAX"},  {L, D, D, "FORWARD"},         {L, D, L, "FORWARD"},
     {D, D, L, "BACKWARD"}, {D, L, L, "BACKWARD_MAX"}, {D, D, D, "BACKWARD_SLOWLY"},
 };
 
@@ -53,8 +53,8 @@ Engine line_follower_engine(const LineFollowerOptions& options) {
     throw Error("the speed factor must be a finite number above 0");
   Engine engine;
   engine.name = "line_follower";
-  engine.description = fmt::format("Konczol & Gal line follower, {}-bit ADC, speed factor {}", options.adc_bits,
-                                   options.speed_factor);
+  engine.description =
+      fmt::format("Konczol & Gal line follower, {}-bit ADC, speed factor {}", options.adc_bits, options.speed_factor);
   const Trapezoid light = light_term(options.adc_bits), dark = dark_term(options.adc_bits);
   for (const char* name : {"left", "mid", "right"}) {
     Variable v;
@@ -105,14 +105,17 @@ namespace {
 
 struct BoardFigures {
   TNorm tnorm;
-  double uno_ms, esp32_ms;              // Tables 3 and 4, 2 x 1024 inferences
-  double uno_laps_s, esp32_laps_s;      // Tables 1 and 2, 3 laps; 0: "-"
+  double uno_ms, esp32_ms;          // Tables 3 and 4, 2 x 1024 inferences
+  double uno_laps_s, esp32_laps_s;  // Tables 1 and 2, 3 laps; 0: "-"
 };
 
 constexpr BoardFigures kPaperFigures[] = {
-    {TNorm::minimum, 3704, 367, 34.23, 32.49},       {TNorm::product, 3758, 378, 36.95, 28.25},
-    {TNorm::drastic, 3756, 321, 0, 0},               {TNorm::lukasiewicz, 4035, 344, 37.72, 27.35},
-    {TNorm::trigonometric, 11665, 1188, 43.99, 27.63}, {TNorm::hamacher, 4448, 471, 33.41, 30.22},
+    {TNorm::minimum, 3704, 367, 34.23, 32.49},
+    {TNorm::product, 3758, 378, 36.95, 28.25},
+    {TNorm::drastic, 3756, 321, 0, 0},
+    {TNorm::lukasiewicz, 4035, 344, 37.72, 27.35},
+    {TNorm::trigonometric, 11665, 1188, 43.99, 27.63},
+    {TNorm::hamacher, 4448, 471, 33.41, 30.22},
 };
 
 const BoardFigures& figures(TNorm t) {

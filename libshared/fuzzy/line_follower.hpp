@@ -14,7 +14,7 @@
 namespace tk::fuzzy {
 
 struct LineFollowerOptions {
-  int adc_bits = 10;           ///< 10 (Arduino Uno) or 12 (ESP32)
+  int adc_bits = 10;          ///< 10 (Arduino Uno) or 12 (ESP32)
   double speed_factor = 2.0;  ///< the paper's Tables 1-2 (1.92 in its first measurements)
   /// BACKWARD_SLOWLY, which the paper's R7 uses without giving its corners:
   /// ours, before scaling, sits between STOP and BACKWARD.

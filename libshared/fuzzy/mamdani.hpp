@@ -55,7 +55,7 @@ class Mamdani {
     std::vector<Trapezoid> terms;
     std::size_t first_level = 0;  ///< index of its first term in levels_
     SampleGrid grid{0, 1, 1};
-    std::vector<GridTerm> grid_terms;  ///< terms prepared for the grid
+    std::vector<GridTerm> grid_terms;   ///< terms prepared for the grid
     std::vector<std::size_t> by_start;  ///< term indices by first corner, as the exact centroid takes them
   };
   struct CompiledRule {
@@ -77,11 +77,11 @@ class Mamdani {
   std::vector<CompiledInput> inputs_;
   std::vector<CompiledOutput> outputs_;
   std::vector<CompiledRule> rules_;
-  std::vector<std::size_t> antecedents_;  ///< indices into degrees_
-  std::vector<std::size_t> consequents_;  ///< indices into levels_
+  std::vector<std::size_t> antecedents_;   ///< indices into degrees_
+  std::vector<std::size_t> consequents_;   ///< indices into levels_
   std::vector<std::size_t> level_output_;  ///< output of each level
-  std::vector<double> degrees_;  ///< membership of each input term (or its inner form)
-  std::vector<double> levels_;   ///< activation of each output term
+  std::vector<double> degrees_;            ///< membership of each input term (or its inner form)
+  std::vector<double> levels_;             ///< activation of each output term
   std::vector<unsigned> fired_;
   std::vector<ImpliedTerm> implied_;
   std::vector<double> rule_degrees_;  ///< scratch of fire_rules_generic

@@ -82,8 +82,7 @@ CentroidResult SampleGrid::centroid(std::span<const GridTerm> terms, std::span<c
   for (std::size_t k = 1; k < spans_.size(); ++k) {
     if (spans_[k].first <= spans_[merged].second)
       spans_[merged].second = std::max(spans_[merged].second, spans_[k].second);
-    else
-      spans_[++merged] = spans_[k];
+    else spans_[++merged] = spans_[k];
   }
   spans_.resize(merged + 1);
 
@@ -92,10 +91,8 @@ CentroidResult SampleGrid::centroid(std::span<const GridTerm> terms, std::span<c
   for (const auto& [from, to] : spans_) std::fill(y + from, y + to, 0.0);
   for (std::size_t k = 0; k < terms.size(); ++k) {
     if (!(levels[k] > 0)) continue;
-    if (implication == Implication::minimum)
-      raise_to_term<Implication::minimum>(x, y, terms[k], levels[k]);
-    else
-      raise_to_term<Implication::product>(x, y, terms[k], levels[k]);
+    if (implication == Implication::minimum) raise_to_term<Implication::minimum>(x, y, terms[k], levels[k]);
+    else raise_to_term<Implication::product>(x, y, terms[k], levels[k]);
   }
   // Two running sums each, so that the additions overlap in the pipeline.
   double area[2] = {0, 0}, moment[2] = {0, 0};

@@ -15,8 +15,8 @@ namespace tk::fuzzy {
 
 /// An output term ready for sampling.
 struct GridTerm {
-  double a = 0, d = 0;        ///< the support [a, d]
-  double rise = 0, fall = 0;  ///< 1 / (b - a) and 1 / (d - c); +inf for a vertical edge
+  double a = 0, d = 0;                ///< the support [a, d]
+  double rise = 0, fall = 0;          ///< 1 / (b - a) and 1 / (d - c); +inf for a vertical edge
   std::ptrdiff_t first = 0, end = 0;  ///< the samples [first, end) that can be inside [a, d]
 };
 

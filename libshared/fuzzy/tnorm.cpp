@@ -39,8 +39,7 @@ double tnorm(TNorm t, double a, double b) {
 double tnorm(TNorm t, std::span<const double> mu) {
   if (mu.empty()) return 1;  // the t-norms' identity
   switch (t) {
-    case TNorm::minimum:
-      return *std::min_element(mu.begin(), mu.end());
+    case TNorm::minimum: return *std::min_element(mu.begin(), mu.end());
     case TNorm::product: {
       double p = 1;
       for (double m : mu) p *= m;

@@ -102,8 +102,8 @@ AtomicFile::~AtomicFile() {
 void AtomicFile::commit() {
   std::FILE* file = file_;
   file_ = nullptr;
-  const bool written = std::fflush(file) == 0 && !std::ferror(file) &&
-                       (temporary_.empty() || ::fsync(fileno(file)) == 0);
+  const bool written =
+      std::fflush(file) == 0 && !std::ferror(file) && (temporary_.empty() || ::fsync(fileno(file)) == 0);
   const int error = errno;
   const bool closed = std::fclose(file) == 0;
   if (!written || !closed) {

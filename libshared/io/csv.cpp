@@ -75,7 +75,9 @@ std::optional<std::vector<std::string>> split_csv_line(std::string_view line) {
 }
 
 bool names_columns(const std::vector<std::string>& header, const ColumnSets& wanted) {
-  const auto has = [&header](const std::string& name) { return std::find(header.begin(), header.end(), name) != header.end(); };
+  const auto has = [&header](const std::string& name) {
+    return std::find(header.begin(), header.end(), name) != header.end();
+  };
   return std::any_of(wanted.begin(), wanted.end(),
                      [&has](const std::vector<std::string>& set) { return std::all_of(set.begin(), set.end(), has); });
 }

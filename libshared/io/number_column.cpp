@@ -51,9 +51,9 @@ NativeFormatProbe number_column_probe(std::string field) {
     const std::optional<double> value = whole_number(line);
     if (!value) {
       const std::string shown(line.substr(0, 40));
-      throw Error("'" + shown + (line.size() > 40 ? "...'" : "'") + " is not a finite number (" + field +
-                      ", one per line)",
-                  where);
+      throw Error(
+          "'" + shown + (line.size() > 40 ? "...'" : "'") + " is not a finite number (" + field + ", one per line)",
+          where);
     }
     return *value;
   };

@@ -33,8 +33,10 @@ std::optional<double> optional_number_field(const Record& record, std::string_vi
     if (text.empty()) return std::nullopt;
     switch (parse_number_text(text, value)) {
       case NumberText::ok: break;
-      case NumberText::out_of_range: throw Error("field '" + std::string(key) + "' is out of range: '" + text + "'", where);
-      case NumberText::not_a_number: throw Error("field '" + std::string(key) + "' is not a number: '" + text + "'", where);
+      case NumberText::out_of_range:
+        throw Error("field '" + std::string(key) + "' is out of range: '" + text + "'", where);
+      case NumberText::not_a_number:
+        throw Error("field '" + std::string(key) + "' is not a number: '" + text + "'", where);
       case NumberText::not_finite: throw Error("field '" + std::string(key) + "' is not finite", where);
     }
   } else {

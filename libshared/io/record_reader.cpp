@@ -3,7 +3,6 @@
 
 #include <unordered_set>
 
-
 namespace tk::io {
 
 namespace {
@@ -124,9 +123,8 @@ bool RecordReader::next_csv(std::string_view line, Record& out) {
     return false;
   }
   if (fields.size() != csv_header_.size())
-    throw Error("expected " + std::to_string(csv_header_.size()) + " csv fields, found " +
-                    std::to_string(fields.size()),
-                at);
+    throw Error(
+        "expected " + std::to_string(csv_header_.size()) + " csv fields, found " + std::to_string(fields.size()), at);
   out = Record::object();
   for (std::size_t i = 0; i < fields.size(); ++i) out[csv_header_[i]] = std::move(fields[i]);
   return true;

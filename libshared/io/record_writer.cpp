@@ -6,8 +6,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 
 #include <fmt/compile.h>
@@ -32,8 +32,7 @@ double coarse_now() {
 }  // namespace
 
 RecordWriter::RecordWriter(OutputFormat format, std::FILE* out)
-    : format_(format), out_(out), interactive_(isatty(fileno(out)) != 0),
-      last_flush_(coarse_now()) {}
+    : format_(format), out_(out), interactive_(isatty(fileno(out)) != 0), last_flush_(coarse_now()) {}
 
 std::string cell_text(const Record& value) {
   switch (value.type()) {
@@ -105,8 +104,7 @@ void RecordWriter::write_csv(const Record& record) {
   if (columns_.empty()) {
     // Pass-through fields in input order, then the tool's own in declared order.
     for (const auto& item : record.items())
-      if (std::find(declared_.begin(), declared_.end(), item.key()) == declared_.end())
-        columns_.push_back(item.key());
+      if (std::find(declared_.begin(), declared_.end(), item.key()) == declared_.end()) columns_.push_back(item.key());
     columns_.insert(columns_.end(), declared_.begin(), declared_.end());
     for (std::size_t i = 0; i < columns_.size(); ++i) {
       if (i) line_ += ',';
@@ -116,8 +114,7 @@ void RecordWriter::write_csv(const Record& record) {
   }
   for (const auto& item : record.items())
     if (std::find(columns_.begin(), columns_.end(), item.key()) == columns_.end())
-      throw Error("csv output: field '" + item.key() +
-                  "' is not among the columns set by the first record");
+      throw Error("csv output: field '" + item.key() + "' is not among the columns set by the first record");
   for (std::size_t i = 0; i < columns_.size(); ++i) {
     if (i) line_ += ',';
     auto found = record.find(columns_[i]);
@@ -135,8 +132,7 @@ void RecordWriter::declare_fields(std::vector<std::string> names) {
 
 template <class AppendCell>
 void RecordWriter::write_declared(std::size_t count, const AppendCell& append) {
-  if (count > declared_.size())
-    throw Error(fmt::format("{} values for {} declared fields", count, declared_.size()));
+  if (count > declared_.size()) throw Error(fmt::format("{} values for {} declared fields", count, declared_.size()));
   line_.clear();
   if (format_ == OutputFormat::csv) {
     if (columns_.empty()) {  // the header, once, whichever of write() and the fast paths comes first
@@ -148,7 +144,8 @@ void RecordWriter::write_declared(std::size_t count, const AppendCell& append) {
       line_ += '\n';
     }
     if (count > columns_.size())
-      throw Error(fmt::format("csv output: {} values for the {} columns set by the first record", count, columns_.size()));
+      throw Error(
+          fmt::format("csv output: {} values for the {} columns set by the first record", count, columns_.size()));
     for (std::size_t i = 0; i < count; ++i) {
       if (i) line_ += ',';
       append(i, line_);
@@ -183,8 +180,7 @@ void RecordWriter::write_numbers(std::span<const double> values, std::uint64_t i
   write_declared(values.size(), [&](std::size_t i, std::string& line) {
     if (integers >> i & 1 && std::isfinite(values[i]))
       fmt::format_to(std::back_inserter(line), FMT_COMPILE("{}"), static_cast<long long>(values[i]));
-    else
-      append_number(line, values[i], json);
+    else append_number(line, values[i], json);
   });
 }
 

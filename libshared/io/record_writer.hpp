@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <memory>
 #include <span>
-#include <string_view>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/atomic_file.hpp"
@@ -86,7 +86,7 @@ class RecordWriter {
   std::vector<std::string> json_keys_;  ///< the declared names as JSON keys, "name": (escaped), for the fast paths
   std::vector<std::string> columns_;
   std::string line_;
-  std::string pending_;  ///< whole records not yet handed to out_
+  std::string pending_;    ///< whole records not yet handed to out_
   double last_flush_ = 0;  ///< seconds, CLOCK_MONOTONIC_COARSE
 };
 

@@ -35,7 +35,8 @@ void validate(const FeedOverrideParams& params) {
          p.initial_override_pct);
   within(p.min_override_pct >= 0 && p.min_override_pct < kMaxOverridePct, "--min-override", "[0, 200) %",
          p.min_override_pct);
-  if (p.initial_override_pct < p.min_override_pct) throw UsageError("--initial-override must not be below --min-override");
+  if (p.initial_override_pct < p.min_override_pct)
+    throw UsageError("--initial-override must not be below --min-override");
 }
 
 namespace {

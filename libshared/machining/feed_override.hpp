@@ -79,10 +79,8 @@ inline double aggregate_override(const FeedOverrideParams& law, bool below_mz, d
   double on;
   if (below_mz)
     on = oa + wk * (200 - oa);  // (3), 200 (O_a/200 + W_k - W_k O_a/200) multiplied out: never below O_a in rounding
-  else if (law.variant == OverrideVariant::original)
-    on = wk * oa;  // (4)
-  else
-    on = wk * (oa - law.d_pct) + law.d_pct;  // (7)
+  else if (law.variant == OverrideVariant::original) on = wk * oa;  // (4)
+  else on = wk * (oa - law.d_pct) + law.d_pct;                      // (7)
   return std::clamp(on, law.min_override_pct, kMaxOverridePct);
 }
 

@@ -73,8 +73,9 @@ void check_design_shape(std::span<const CalibrationPoint> points) {
   if (const std::size_t depths = distinct_count(points, [](const CalibrationPoint& p) { return p.a; }); depths < 3)
     throw Error(fmt::format("the calibration needs at least 3 distinct depths a; it has {}", depths));
   if (collinear(points))
-    throw Error("the calibration's (a, f) lie on one line (a and f collinear), so the six coefficients are not "
-                "determined; vary a and f independently");
+    throw Error(
+        "the calibration's (a, f) lie on one line (a and f collinear), so the six coefficients are not "
+        "determined; vary a and f independently");
 }
 
 }  // namespace
@@ -101,17 +102,18 @@ ForceErrorFit fit_force_error_model(std::span<const CalibrationPoint> points) {
 
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design);
   // Q is orthogonal, so the singular values of the design are those of R (6×6).
-  const Eigen::Matrix<double, kTerms, kTerms> r =
-      qr.matrixQR().topRows(kTerms).triangularView<Eigen::Upper>();
+  const Eigen::Matrix<double, kTerms, kTerms> r = qr.matrixQR().topRows(kTerms).triangularView<Eigen::Upper>();
   const auto sigma = Eigen::JacobiSVD<Eigen::Matrix<double, kTerms, kTerms>>(r).singularValues();
-  const double condition = sigma(kTerms - 1) > 0 ? sigma(0) / sigma(kTerms - 1) : std::numeric_limits<double>::infinity();
+  const double condition =
+      sigma(kTerms - 1) > 0 ? sigma(0) / sigma(kTerms - 1) : std::numeric_limits<double>::infinity();
   if (condition > kSingularCondition)
-    throw Error(fmt::format("the calibration's (a, f) lie on one conic, so the six coefficients are not determined "
-                            "(condition number {:.1e} of the scaled design); spread the calibration's a and f",
-                            condition));
+    throw Error(
+        fmt::format("the calibration's (a, f) lie on one conic, so the six coefficients are not determined "
+                    "(condition number {:.1e} of the scaled design); spread the calibration's a and f",
+                    condition));
   if (condition > kMaxDesignCondition)
-    throw Error(fmt::format("ill-conditioned: condition number {:.1e} of the scaled design; spread the calibration's a and f",
-                            condition));
+    throw Error(fmt::format(
+        "ill-conditioned: condition number {:.1e} of the scaled design; spread the calibration's a and f", condition));
 
   const Eigen::Matrix<double, kTerms, 1> beta = qr.solve(y).cwiseQuotient(scale);
   ForceErrorFit fit;
@@ -215,8 +217,6 @@ FeedChoice feed_for_error(const ForceErrorModel& m, double a, double target, dou
   return choice;
 }
 
-std::string_view feed_status_name(FeedStatus status) {
-  return status == FeedStatus::solved ? "solved" : "none";
-}
+std::string_view feed_status_name(FeedStatus status) { return status == FeedStatus::solved ? "solved" : "none"; }
 
 }  // namespace tk::machining

@@ -69,8 +69,8 @@ struct FeedChoice {
   FeedStatus status = FeedStatus::none;
   double feed = std::numeric_limits<double>::quiet_NaN();   ///< the chosen feed when solved
   double error = std::numeric_limits<double>::quiet_NaN();  ///< y(a, feed) when solved
-  double error_min = 0, error_max = 0;  ///< range of y(a, f) over [f_min, f_max]
-  int roots_in_range = 0;               ///< distinct roots of y(a, f) = target in range
+  double error_min = 0, error_max = 0;                      ///< range of y(a, f) over [f_min, f_max]
+  int roots_in_range = 0;                                   ///< distinct roots of y(a, f) = target in range
   /// y(a, ·) is constant and equals target, so every feed does: feed is
   /// f_max then and roots_in_range is 1.
   bool every_feed = false;

@@ -28,11 +28,14 @@ std::optional<ForceErrorModel> model_from_record(const Record& record, const Loc
   for (const char* name : kCoefficientNames)
     if (!record.contains(name)) return std::nullopt;
   ForceErrorModel m;
-  for (std::size_t k = 0; k < kCoefficientNames.size(); ++k) *coefficients(m)[k] = io::number_field(record, kCoefficientNames[k], where);
+  for (std::size_t k = 0; k < kCoefficientNames.size(); ++k)
+    *coefficients(m)[k] = io::number_field(record, kCoefficientNames[k], where);
   return m;
 }
 
-std::vector<std::string> feed_choice_fields() { return {"feed", "predicted_error", "feed_status", "error_min", "error_max"}; }
+std::vector<std::string> feed_choice_fields() {
+  return {"feed", "predicted_error", "feed_status", "error_min", "error_max"};
+}
 
 std::vector<std::string> correction_fields() { return {"predicted_error", "correction"}; }
 

@@ -25,7 +25,8 @@ std::vector<AllowanceSegment> read_profile(const std::string& path) {
       AllowanceSegment s{io::number_field(record, "z_from", where), io::number_field(record, "z_to", where),
                          io::number_field(record, "depth", where)};
       if (!(s.z_from_mm < s.z_to_mm)) throw Error("z_to must be greater than z_from", where);
-      if (!first && s.z_from_mm != profile.back().z_to_mm) throw Error("z_from must be where the segment before ends", where);
+      if (!first && s.z_from_mm != profile.back().z_to_mm)
+        throw Error("z_from must be where the segment before ends", where);
       check_depth(s.depth_mm, where);
       profile.push_back(s);
     } else {

@@ -135,7 +135,8 @@ void validate(const TurningParams& p) {
   require_range(p.above_tolerance, 0, 10, "--above-tol");
   // The revolution history holds one position per IPO cycle of a revolution.
   if (!(1 / (spindle_speed_rev_s(p) * p.ipo_s) <= 1e6))
-    throw UsageError("a spindle revolution lasts more than 10^6 IPO cycles: raise --cutting-speed or --ipo, or lower --diameter");
+    throw UsageError(
+        "a spindle revolution lasts more than 10^6 IPO cycles: raise --cutting-speed or --ipo, or lower --diameter");
 }
 
 double spindle_speed_rev_s(const TurningParams& params) {
@@ -166,7 +167,8 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
 
   // A law that keeps the feed near 0 would otherwise run for ever.
   const double baseline_cycles = baseline_time_s(params) / T;
-  cli::require_run_size(baseline_cycles, params.max_cycles, "IPO cycles for the cut at 100 % (raise --feed or --ipo, or shorten the profile)",
+  cli::require_run_size(baseline_cycles, params.max_cycles,
+                        "IPO cycles for the cut at 100 % (raise --feed or --ipo, or shorten the profile)",
                         "--feed, --cutting-speed, --diameter, --ipo and the profile's length");
   const double cycle_limit = std::min(params.max_cycles, std::max(1e6, 1000 * baseline_cycles));
 
@@ -187,9 +189,10 @@ RunStats simulate_turning(const TurningParams& params, const std::optional<FeedO
   double weighted_load = 0, override_sum = 0;
   for (std::uint64_t cycle = 0;; ++cycle) {
     if (static_cast<double>(cycle) > cycle_limit)
-      throw Error(fmt::format("the cut takes more than {:g} IPO cycles ({:g} times the cut at 100 %){}", cycle_limit,
-                              cycle_limit / baseline_cycles,
-                              cycle_limit == params.max_cycles ? ", the simulation's limit" : ": the override stays near 0"));
+      throw Error(
+          fmt::format("the cut takes more than {:g} IPO cycles ({:g} times the cut at 100 %){}", cycle_limit,
+                      cycle_limit / baseline_cycles,
+                      cycle_limit == params.max_cycles ? ", the simulation's limit" : ": the override stays near 0"));
     const double t = static_cast<double>(cycle) * T;
     while (segment + 1 < params.profile.size() && z >= params.profile[segment].z_to_mm) {
       if (!recorder.empty()) run.segments.push_back(recorder.finish());

@@ -142,13 +142,13 @@ double axis_lag_s(const TurningParams& params);
 
 /// One IPO cycle as the trace shows it.
 struct TraceSample {
-  double t_s;              ///< start of the cycle
-  double z_mm;             ///< tool position along the cut
-  double depth_mm;         ///< allowance under the tool
-  double chip_mm;          ///< the feed per revolution being cut: z(t) - z(t - one revolution)
-  double load_true_pct;    ///< the cutting load now (no smoothing, no noise)
-  double load_pct;         ///< M_a, the signal the law reads: smoothed, noisy, 0-100
-  OverrideStep step;       ///< what the law made of it
+  double t_s;            ///< start of the cycle
+  double z_mm;           ///< tool position along the cut
+  double depth_mm;       ///< allowance under the tool
+  double chip_mm;        ///< the feed per revolution being cut: z(t) - z(t - one revolution)
+  double load_true_pct;  ///< the cutting load now (no smoothing, no noise)
+  double load_pct;       ///< M_a, the signal the law reads: smoothed, noisy, 0-100
+  OverrideStep step;     ///< what the law made of it
 };
 
 struct SegmentStats {

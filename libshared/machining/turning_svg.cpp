@@ -24,16 +24,19 @@ void TurningSvg::write(const std::string& path, const TurningPlotInfo& info) con
   double load_max = 100, depth_max = 0;
   for (const Sample& s : samples_) load_max = std::max(load_max, s.load_true), depth_max = std::max(depth_max, s.depth);
 
-  TimePanel load{.y_label = "spindle load M_a, % of rated", .range = TimePanel::Range::fixed, .y_min = 0,
-                 .y_max = std::ceil(load_max / 20) * 20, .y_step = 20};
+  TimePanel load{.y_label = "spindle load M_a, % of rated",
+                 .range = TimePanel::Range::fixed,
+                 .y_min = 0,
+                 .y_max = std::ceil(load_max / 20) * 20,
+                 .y_step = 20};
   load.levels.push_back({info.mz_pct, info.mz_pct, "#c8281e", fmt::format("M_z = {:g} %", info.mz_pct)});
   load.series = {{field_of(samples_, &Sample::load), "#9aa7b8", 1, "measured M_a (smoothed, noise)"},
                  {field_of(samples_, &Sample::load_true), "#1b1b1b", 1.5, "true load"}};
 
   TimePanel feed{.y_label = "feed override O, %", .range = TimePanel::Range::fixed, .y_min = 0, .y_max = 200};
   if (depth_max > 0)  // the allowance as a step under the override, its top at a quarter of the axis
-    feed.series.push_back({[this, depth_max](std::size_t i) { return samples_[i].depth / depth_max * 50; }, "#e0a030", 2,
-                           fmt::format("allowance a_p (top of the orange step = {:g} mm)", depth_max)});
+    feed.series.push_back({[this, depth_max](std::size_t i) { return samples_[i].depth / depth_max * 50; }, "#e0a030",
+                           2, fmt::format("allowance a_p (top of the orange step = {:g} mm)", depth_max)});
   feed.series.push_back({field_of(samples_, &Sample::override_pct), "#1f5fbf", 1.2, "override O_n"});
 
   sim::write_time_panels_svg(path, {.title = info.title,

@@ -57,7 +57,8 @@ double arc_sweep(const Motion& arc) { return arc_geometry(arc).sweep; }
 void check_arc_radii(double start_radius, double end_radius, bool inches) {
   const double tolerance = inches ? 0.0005 * kMmPerInch : 0.005;
   if (std::min(start_radius, end_radius) < tolerance)
-    throw Error(fmt::format("zero-radius arc (radius {:g} mm at the start, {:g} mm at the end)", start_radius, end_radius));
+    throw Error(
+        fmt::format("zero-radius arc (radius {:g} mm at the start, {:g} mm at the end)", start_radius, end_radius));
   const double difference = std::abs(end_radius - start_radius);
   const double limit = inches ? 0.05 * kMmPerInch : 0.5;
   if (difference > limit || (difference > tolerance && difference > 0.001 * std::max(start_radius, end_radius)))

@@ -10,14 +10,14 @@
 namespace tk::motion {
 
 struct ArcGeometry {
-  int a0 = 0, a1 = 1, a2 = 2;   ///< plane axes and normal
-  double c0 = 0, c1 = 0;        ///< centre in the plane (mm)
-  double start_angle = 0;       ///< of the start point, radians
-  double sweep = 0;             ///< > 0, radians, extra turns included
-  double turn = 1;              ///< +1 counter-clockwise, -1 clockwise (seen from +a2)
+  int a0 = 0, a1 = 1, a2 = 2;  ///< plane axes and normal
+  double c0 = 0, c1 = 0;       ///< centre in the plane (mm)
+  double start_angle = 0;      ///< of the start point, radians
+  double sweep = 0;            ///< > 0, radians, extra turns included
+  double turn = 1;             ///< +1 counter-clockwise, -1 clockwise (seen from +a2)
   double r_start = 0, r_end = 0;
   double z_start = 0, z_rise = 0;
-  double length = 0;            ///< mm along the helix
+  double length = 0;  ///< mm along the helix
 
   double radius_per_radian = 0, rise_per_radian = 0;  ///< (r_end - r_start) / sweep, z_rise / sweep
 

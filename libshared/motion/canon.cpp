@@ -21,17 +21,54 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 /// Commands that neither move nor time anything here: counted, not run.
 const std::set<std::string, std::less<>>& passive_commands() {
-  static const std::set<std::string, std::less<>> names = {
-      "CHANGE_TOOL", "CHANGE_TOOL_NUMBER", "CLAMP_AXIS", "CLEAR_AUX_OUTPUT_BIT", "CLEAR_MOTION_OUTPUT_BIT",
-      "COMMENT", "DISABLE_ADAPTIVE_FEED", "DISABLE_FEED_HOLD", "DISABLE_FEED_OVERRIDE", "DISABLE_SPEED_OVERRIDE",
-      "ENABLE_ADAPTIVE_FEED", "ENABLE_FEED_HOLD", "ENABLE_FEED_OVERRIDE", "ENABLE_SPEED_OVERRIDE", "FINISH",
-      "FLOOD_OFF", "FLOOD_ON", "LOG", "LOGAPPEND", "LOGCLOSE", "LOGOPEN", "MESSAGE", "MIST_OFF", "MIST_ON",
-      "ON_RESET", "OPTIONAL_PROGRAM_STOP", "ORIENT_SPINDLE", "PALLET_SHUTTLE", "PROGRAM_STOP",
-      "SELECT_TOOL", "SET_AUX_OUTPUT_BIT", "SET_AUX_OUTPUT_VALUE", "SET_CUTTER_RADIUS_COMPENSATION",
-      "SET_FEED_REFERENCE", "SET_MOTION_CONTROL_MODE", "SET_MOTION_OUTPUT_BIT", "SET_MOTION_OUTPUT_VALUE",
-      "SET_NAIVECAM_TOLERANCE", "SET_TOOL_TABLE_ENTRY", "START_CHANGE", "START_CUTTER_RADIUS_COMPENSATION",
-      "STOP_CUTTER_RADIUS_COMPENSATION", "TURN_PROBE_OFF", "TURN_PROBE_ON", "UNCLAMP_AXIS",
-      "USE_NO_SPINDLE_FORCE", "USE_SPINDLE_FORCE", "WAIT_SPINDLE_ORIENT_COMPLETE"};
+  static const std::set<std::string, std::less<>> names = {"CHANGE_TOOL",
+                                                           "CHANGE_TOOL_NUMBER",
+                                                           "CLAMP_AXIS",
+                                                           "CLEAR_AUX_OUTPUT_BIT",
+                                                           "CLEAR_MOTION_OUTPUT_BIT",
+                                                           "COMMENT",
+                                                           "DISABLE_ADAPTIVE_FEED",
+                                                           "DISABLE_FEED_HOLD",
+                                                           "DISABLE_FEED_OVERRIDE",
+                                                           "DISABLE_SPEED_OVERRIDE",
+                                                           "ENABLE_ADAPTIVE_FEED",
+                                                           "ENABLE_FEED_HOLD",
+                                                           "ENABLE_FEED_OVERRIDE",
+                                                           "ENABLE_SPEED_OVERRIDE",
+                                                           "FINISH",
+                                                           "FLOOD_OFF",
+                                                           "FLOOD_ON",
+                                                           "LOG",
+                                                           "LOGAPPEND",
+                                                           "LOGCLOSE",
+                                                           "LOGOPEN",
+                                                           "MESSAGE",
+                                                           "MIST_OFF",
+                                                           "MIST_ON",
+                                                           "ON_RESET",
+                                                           "OPTIONAL_PROGRAM_STOP",
+                                                           "ORIENT_SPINDLE",
+                                                           "PALLET_SHUTTLE",
+                                                           "PROGRAM_STOP",
+                                                           "SELECT_TOOL",
+                                                           "SET_AUX_OUTPUT_BIT",
+                                                           "SET_AUX_OUTPUT_VALUE",
+                                                           "SET_CUTTER_RADIUS_COMPENSATION",
+                                                           "SET_FEED_REFERENCE",
+                                                           "SET_MOTION_CONTROL_MODE",
+                                                           "SET_MOTION_OUTPUT_BIT",
+                                                           "SET_MOTION_OUTPUT_VALUE",
+                                                           "SET_NAIVECAM_TOLERANCE",
+                                                           "SET_TOOL_TABLE_ENTRY",
+                                                           "START_CHANGE",
+                                                           "START_CUTTER_RADIUS_COMPENSATION",
+                                                           "STOP_CUTTER_RADIUS_COMPENSATION",
+                                                           "TURN_PROBE_OFF",
+                                                           "TURN_PROBE_ON",
+                                                           "UNCLAMP_AXIS",
+                                                           "USE_NO_SPINDLE_FORCE",
+                                                           "USE_SPINDLE_FORCE",
+                                                           "WAIT_SPINDLE_ORIENT_COMPLETE"};
   return names;
 }
 
@@ -164,7 +201,9 @@ void CanonInterpreter::execute(std::string_view text, std::size_t line_number, s
     if (plane == "CANON_PLANE_XY") plane_ = 17;
     else if (plane == "CANON_PLANE_XZ") plane_ = 18;
     else if (plane == "CANON_PLANE_YZ") plane_ = 19;
-    else throw Error(fmt::format("SELECT_PLANE({}): only the XY, XZ and YZ planes are supported", printable(plane.substr(0, 40))));
+    else
+      throw Error(
+          fmt::format("SELECT_PLANE({}): only the XY, XZ and YZ planes are supported", printable(plane.substr(0, 40))));
   } else if (name == "USE_LENGTH_UNITS") {
     const std::string_view units = command.arguments;
     if (units == "CANON_UNITS_MM") unit_ = 1;
@@ -186,7 +225,8 @@ void CanonInterpreter::execute(std::string_view text, std::size_t line_number, s
   } else if (name == "PROGRAM_END") {
     ended_ = true;
   } else if (name == "NURBS_FEED") {
-    throw Error("NURBS_FEED (G5.1, G5.2 splines): rs274 -g does not print the spline's points, so it cannot be stepped");
+    throw Error(
+        "NURBS_FEED (G5.1, G5.2 splines): rs274 -g does not print the spline's points, so it cannot be stepped");
   } else {
     const std::string message = fmt::format("canonical command {} is not supported", name);
     if (!options_.lenient) throw Error(message);

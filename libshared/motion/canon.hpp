@@ -55,7 +55,7 @@ class CanonInterpreter {
   const Vec3& position() const { return position_; }
   const std::map<std::string, std::uint64_t>& unused_words() const { return unused_; }
   std::uint64_t blocks() const { return commands_; }  ///< canonical commands read
-  bool program_ended() const { return ended_; }        ///< PROGRAM_END() seen
+  bool program_ended() const { return ended_; }       ///< PROGRAM_END() seen
 
  private:
   struct Command;
@@ -69,14 +69,14 @@ class CanonInterpreter {
 
   InterpreterOptions options_;
   std::function<void(const std::string&)> warn_;
-  Vec3 position_;                ///< machine, mm
-  double unit_ = 1;              ///< mm per program unit (USE_LENGTH_UNITS)
-  Vec3 g5x_, g92_, tool_;        ///< mm
-  double rotation_deg_ = 0;      ///< SET_XY_ROTATION
-  int plane_ = 17;               ///< 17 XY, 18 XZ, 19 YZ
-  double feed_ = 0;              ///< SET_FEED_RATE: mm/min, or mm per revolution
+  Vec3 position_;                     ///< machine, mm
+  double unit_ = 1;                   ///< mm per program unit (USE_LENGTH_UNITS)
+  Vec3 g5x_, g92_, tool_;             ///< mm
+  double rotation_deg_ = 0;           ///< SET_XY_ROTATION
+  int plane_ = 17;                    ///< 17 XY, 18 XZ, 19 YZ
+  double feed_ = 0;                   ///< SET_FEED_RATE: mm/min, or mm per revolution
   bool feed_per_revolution_ = false;  ///< SET_FEED_MODE(_, 1), G95
-  bool synchronised_ = false;    ///< between START_SPEED_FEED_SYNC and STOP_SPEED_FEED_SYNCH
+  bool synchronised_ = false;         ///< between START_SPEED_FEED_SYNC and STOP_SPEED_FEED_SYNCH
   double sync_per_revolution_ = 0;    ///< mm per spindle revolution
   bool sync_velocity_only_ = false;   ///< its second argument: speed follows, position does not
   double spindle_rpm_ = 0;

@@ -177,9 +177,8 @@ class GcodeInterpreter {
   /// times they came: M codes other than M2/M30 ("M3", "M6", "M62": M03
   /// counts as "M3"; M3, M4 and M5 only decide whether G33 may run; T, M6
   /// and M61 choose the tool G43 measures), T, D, H other than G43's, and
-  /// G40 G54-G59.3 G61 G61.1 G64 G96 G97 G98 G99 (and G80 when ignored). Argument words of these (M62 P, G64 P Q) are not
-  /// counted. Modal codes and values that act (G7, G17, G20, G90..., F, and
-  /// S, which times G33) are not here.
+  /// G40 G54-G59.3 G61 G61.1 G64 G96 G97 G98 G99 (and G80 when ignored). Argument words of these (M62 P, G64 P Q) are
+  /// not counted. Modal codes and values that act (G7, G17, G20, G90..., F, and S, which times G33) are not here.
   const std::map<std::string, std::uint64_t>& unused_words() const { return unused_; }
   /// Lines executed that hold a word other than N (blank, comment-only,
   /// '%' and block-deleted lines do not count).
@@ -207,16 +206,16 @@ class GcodeInterpreter {
   std::string skipped_mode_;
   int plane_ = 17;
   bool inches_ = false, incremental_ = false, arc_incremental_ = true, inverse_time_ = false;
-  bool diameter_mode_ = false;  ///< G7: X words are diameters
-  double feed_ = 0;  ///< mm/min (converted from in/min)
-  double spindle_speed_ = 0;  ///< the last S word: rpm, or a surface speed under G96
-  bool spindle_turning_ = false;  ///< M3 or M4 since the last M5
+  bool diameter_mode_ = false;           ///< G7: X words are diameters
+  double feed_ = 0;                      ///< mm/min (converted from in/min)
+  double spindle_speed_ = 0;             ///< the last S word: rpm, or a surface speed under G96
+  bool spindle_turning_ = false;         ///< M3 or M4 since the last M5
   bool constant_surface_speed_ = false;  ///< G96
   std::map<std::string, std::uint64_t> unused_;
   std::uint64_t blocks_ = 0;
   bool ended_ = false;
   int selected_tool_ = 0, loaded_tool_ = 0;  ///< T; M6 or M61 Q
-  Vec3 tool_offset_;  ///< added to absolute coordinates (G43, G43.1; G49 clears it)
+  Vec3 tool_offset_;                         ///< added to absolute coordinates (G43, G43.1; G49 clears it)
 };
 
 }  // namespace tk::motion

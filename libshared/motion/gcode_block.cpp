@@ -131,12 +131,31 @@ const GcodeInfo* find_gcode(int code) {
 /// LinuxCNC's M code groups; empty for codes in none.
 std::string_view m_group(int m) {
   switch (m) {
-    case 0: case 1: case 2: case 30: case 60: return "stopping";
-    case 3: case 4: case 5: return "spindle";
+    case 0:
+    case 1:
+    case 2:
+    case 30:
+    case 60: return "stopping";
+    case 3:
+    case 4:
+    case 5: return "spindle";
     case 6: return "tool change";
-    case 7: case 8: case 9: return "coolant";
-    case 48: case 49: case 50: case 51: case 52: case 53: return "override";
-    case 62: case 63: case 64: case 65: case 66: case 67: case 68: return "input/output";
+    case 7:
+    case 8:
+    case 9: return "coolant";
+    case 48:
+    case 49:
+    case 50:
+    case 51:
+    case 52:
+    case 53: return "override";
+    case 62:
+    case 63:
+    case 64:
+    case 65:
+    case 66:
+    case 67:
+    case 68: return "input/output";
     default: return {};
   }
 }
@@ -182,8 +201,7 @@ void GcodeBlock::add_gcode(double number) {
 }
 
 void GcodeBlock::add_mcode(double number) {
-  if (number < 0 || number != std::floor(number) || number > 1e6)
-    throw Error(fmt::format("bad M code M{:g}", number));
+  if (number < 0 || number != std::floor(number) || number > 1e6) throw Error(fmt::format("bad M code M{:g}", number));
   const int m = static_cast<int>(number);
   for (const int other : mcodes) {
     if ((m == 7 && other == 8) || (m == 8 && other == 7)) continue;  // mist and flood together

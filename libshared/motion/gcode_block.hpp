@@ -17,8 +17,20 @@
 namespace tk::motion {
 
 enum class GcodeGroup : std::uint8_t {
-  non_modal, motion, plane, distance, arc_distance, feed_mode, units, cutter_compensation,
-  tool_length, coordinate_system, path_control, return_mode, spindle_mode, lathe_mode,
+  non_modal,
+  motion,
+  plane,
+  distance,
+  arc_distance,
+  feed_mode,
+  units,
+  cutter_compensation,
+  tool_length,
+  coordinate_system,
+  path_control,
+  return_mode,
+  spindle_mode,
+  lathe_mode,
 };
 
 /// What the interpreter does with a code: executes it, counts it in

@@ -148,10 +148,10 @@ void GcodeInterpreter::set_tool_offset(GcodeBlock& block) {
       return;
     }
     if (!options_.has_tool_table) {
-      const std::string message =
-          fmt::format("G43 (tool length offset) of tool {}: its length is unknown without a tool table "
-                      "(--tool-table FILE)",
-                      tool);
+      const std::string message = fmt::format(
+          "G43 (tool length offset) of tool {}: its length is unknown without a tool table "
+          "(--tool-table FILE)",
+          tool);
       if (!options_.lenient) throw Error(message);
       warn("skipped " + message);
       return;
@@ -233,7 +233,8 @@ void GcodeInterpreter::move(GcodeBlock& block, bool skip_motion, std::size_t lin
     if (letter == 'X' && diameter_mode_) value /= 2;
     target[axis] = incremental_ ? position_[axis] + value : value + (machine_coordinates ? 0 : tool_offset_[axis]);
     if (!(std::abs(target[axis]) <= options_.max_coordinate_mm))
-      throw Error(fmt::format("coordinate {}{:.10g} beyond ±{:.10g} mm", letter, target[axis], options_.max_coordinate_mm));
+      throw Error(
+          fmt::format("coordinate {}{:.10g} beyond ±{:.10g} mm", letter, target[axis], options_.max_coordinate_mm));
   }
   const bool moves = target.x != position_.x || target.y != position_.y || target.z != position_.z;
   Motion motion;
@@ -317,7 +318,8 @@ void GcodeInterpreter::arc(GcodeBlock& block, Motion& motion) const {
   const char first = "IJK"[axes[0]], second = "IJK"[axes[1]], normal = "IJK"[axes[2]];
   const std::string centre_words = fmt::format("{}/{}", std::min(first, second), std::max(first, second));
   if (block.has(normal))
-    throw Error(fmt::format("{} word with {} in the G{} plane: its centre words are {}", normal, g, plane_, centre_words));
+    throw Error(
+        fmt::format("{} word with {} in the G{} plane: its centre words are {}", normal, g, plane_, centre_words));
   const bool radius_format = block.has('R');
   if (radius_format && (block.has(first) || block.has(second)))
     throw Error(fmt::format("{} with both R and {} words", g, centre_words));
@@ -358,7 +360,8 @@ void GcodeInterpreter::arc(GcodeBlock& block, Motion& motion) const {
     const double offset1 = block.has(second) ? block.take(second) * unit() : 0;
     centre0 = arc_incremental_ ? start0 + offset0 : offset0 + tool_offset_[axes[0]];
     centre1 = arc_incremental_ ? start1 + offset1 : offset1 + tool_offset_[axes[1]];
-    check_arc_radii(std::hypot(start0 - centre0, start1 - centre1), std::hypot(end0 - centre0, end1 - centre1), inches_);
+    check_arc_radii(std::hypot(start0 - centre0, start1 - centre1), std::hypot(end0 - centre0, end1 - centre1),
+                    inches_);
   }
   motion.center = motion.start;
   motion.center[axes[0]] = centre0;

@@ -78,12 +78,9 @@ double parse_number(const std::string& digits, const std::string& shown) {
   std::size_t digit_count = 0, dot_count = 0;
   bool inner_sign = false;
   for (std::size_t i = first; i < digits.size(); ++i) {
-    if (digits[i] == '.')
-      ++dot_count;
-    else if (std::isdigit(static_cast<unsigned char>(digits[i])))
-      ++digit_count;
-    else
-      inner_sign = true;
+    if (digits[i] == '.') ++dot_count;
+    else if (std::isdigit(static_cast<unsigned char>(digits[i]))) ++digit_count;
+    else inner_sign = true;
   }
   if (digit_count == 0 || dot_count > 1 || inner_sign) throw Error(fmt::format("bad number '{}'", shown));
   // from_chars takes no '+'; the minus sign it reads itself.
@@ -91,8 +88,7 @@ double parse_number(const std::string& digits, const std::string& shown) {
   const char* end = digits.data() + digits.size();
   double value = 0;
   const auto [stop, error] = std::from_chars(begin, end, value);
-  if (error != std::errc{} || stop != end || !std::isfinite(value))
-    throw Error(fmt::format("bad number '{}'", shown));
+  if (error != std::errc{} || stop != end || !std::isfinite(value)) throw Error(fmt::format("bad number '{}'", shown));
   return value;
 }
 

@@ -45,14 +45,10 @@ std::string gcode_comment(std::string_view text) {
   body.reserve(text.size());
   for (char c : text) {
     const auto byte = static_cast<unsigned char>(c);
-    if (c == '(')
-      body += '[';
-    else if (c == ')')
-      body += ']';
-    else if (byte < 0x20 || byte == 0x7f)
-      body += ' ';
-    else
-      body += c;
+    if (c == '(') body += '[';
+    else if (c == ')') body += ']';
+    else if (byte < 0x20 || byte == 0x7f) body += ' ';
+    else body += c;
   }
   const bool quoted = reads_as_directive(body);
   const std::size_t room = kMaxCommentBytes - 2 - (quoted ? 2 : 0);

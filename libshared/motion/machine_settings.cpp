@@ -99,8 +99,8 @@ void MachineSettings::apply_to(PulseOptions& options) const {
   if (start) {
     for (int axis = 0; axis < 3; ++axis)
       if (!(std::fabs((*start)[axis]) <= options.interpreter.max_coordinate_mm))
-        throw Error(fmt::format("start: must be three numbers from {0:g} to {1:g}, the coordinate range", -options.interpreter.max_coordinate_mm,
-                                options.interpreter.max_coordinate_mm));
+        throw Error(fmt::format("start: must be three numbers from {0:g} to {1:g}, the coordinate range",
+                                -options.interpreter.max_coordinate_mm, options.interpreter.max_coordinate_mm));
     options.interpreter.start = Vec3{(*start)[0], (*start)[1], (*start)[2]};
   }
 }

@@ -42,7 +42,9 @@ inline constexpr SettingRange kJunctionDeviationRange{0, 1e6};
 /// Blocks planned together: the planner holds that many.
 inline constexpr SettingRange kLookaheadRange{1, 1e5};
 /// Where the machine starts, each axis in mm: the interpreter's coordinate range.
-inline SettingRange start_range() { return {-InterpreterOptions{}.max_coordinate_mm, InterpreterOptions{}.max_coordinate_mm}; }
+inline SettingRange start_range() {
+  return {-InterpreterOptions{}.max_coordinate_mm, InterpreterOptions{}.max_coordinate_mm};
+}
 
 struct MachineSettings {
   std::optional<std::array<double, 3>> steps_per_mm, axis_max_feed, axis_accel, start;

@@ -25,10 +25,8 @@ void PathSvg::keep(std::vector<std::array<double, 2>>& polyline, std::vector<std
   const bool now_inside = inside(x, y);
   if (now_inside) {
     if (!was_inside && !polyline.empty()) breaks.push_back(polyline.size());
-    if (polyline.size() < kMaxPoints)
-      polyline.push_back({x, y});
-    else
-      truncated_ = true;
+    if (polyline.size() < kMaxPoints) polyline.push_back({x, y});
+    else truncated_ = true;
   }
   was_inside = now_inside;
 }
@@ -84,7 +82,8 @@ void PathSvg::write(const std::string& path) const {
   const double stroke = std::max(width, height) / 1500;
   std::string svg = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"1000\" height=\"{:.0f}\" viewBox=\"0 0 {:.6g} {:.6g}\">\n"
-      "<title>gcode-pulse: ideal path (blue) and stepped path (red), X {:.6g} to {:.6g} mm, Y {:.6g} to {:.6g} mm</title>\n"
+      "<title>gcode-pulse: ideal path (blue) and stepped path (red), X {:.6g} to {:.6g} mm, Y {:.6g} to {:.6g} "
+      "mm</title>\n"
       "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
       1000 * height / width, width, height, window_.x0, window_.x1, window_.y0, window_.y1);
   svg += fmt::format("<path d=\"{}\" fill=\"none\" stroke=\"#1f5fbf\" stroke-width=\"{:.6g}\"/>\n",

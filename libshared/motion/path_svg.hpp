@@ -24,7 +24,7 @@ class PathSvg {
 
   explicit PathSvg(SvgWindow window);
 
-  void add_motion(const Motion& motion);  ///< the ideal path of a line or arc
+  void add_motion(const Motion& motion);     ///< the ideal path of a line or arc
   void add_point(double x_mm, double y_mm);  ///< a lattice point reached
   /// Writes the drawing; throws tk::Error when the file cannot be written.
   void write(const std::string& path) const;
@@ -32,7 +32,8 @@ class PathSvg {
 
  private:
   bool inside(double x, double y) const;
-  void keep(std::vector<std::array<double, 2>>& polyline, std::vector<std::size_t>& breaks, double x, double y, bool& was_inside);
+  void keep(std::vector<std::array<double, 2>>& polyline, std::vector<std::size_t>& breaks, double x, double y,
+            bool& was_inside);
 
   SvgWindow window_;
   std::vector<std::array<double, 2>> ideal_, stepped_;

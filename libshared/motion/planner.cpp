@@ -119,8 +119,8 @@ void Planner::add(const Motion& motion, const Sink& ready) {
   const double a = limit_by_axes(limits_.acceleration, limits_.axis_acceleration, share);
   next.block.acceleration = a;
   double nominal = motion.kind == MotionKind::rapid ? limits_.rapid_speed
-                   : motion.inverse_time           ? next.block.length / motion.duration
-                                                   : motion.feed;
+                   : motion.inverse_time            ? next.block.length / motion.duration
+                                                    : motion.feed;
   // G0 runs as fast as the slowest axis it needs allows; a feed above
   // what the machine can do is capped (and counted).
   const double machine_speed = speed_cap(limits_, motion, share);
@@ -190,8 +190,8 @@ void Planner::plan() {
     PlannedBlock& b = pending_[i].block;
     if (i > 0) {
       const PlannedBlock& before = pending_[i - 1].block;
-      b.entry_speed =
-          std::min(b.entry_speed, std::sqrt(before.entry_speed * before.entry_speed + 2 * before.acceleration * before.length));
+      b.entry_speed = std::min(
+          b.entry_speed, std::sqrt(before.entry_speed * before.entry_speed + 2 * before.acceleration * before.length));
       pending_[i - 1].block.exit_speed = b.entry_speed;
     }
   }

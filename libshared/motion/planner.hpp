@@ -30,12 +30,12 @@ namespace tk::motion {
 /// largest share any of its tangents gives an axis, cos of its slope for
 /// the plane's axes and sin for the normal axis).
 struct MachineLimits {
-  double acceleration = 500;           ///< mm/s^2 along the path
-  double rapid_speed = 5000.0 / 60;    ///< mm/s for G0
-  double max_speed = 5000.0 / 60;      ///< mm/s: programmed feeds above it are capped
-  double junction_deviation = 0.01;    ///< mm
-  std::size_t lookahead = 256;         ///< blocks planned together
-  std::array<double, 3> axis_speed{kNoLimit, kNoLimit, kNoLimit};         ///< mm/s per axis
+  double acceleration = 500;                                       ///< mm/s^2 along the path
+  double rapid_speed = 5000.0 / 60;                                ///< mm/s for G0
+  double max_speed = 5000.0 / 60;                                  ///< mm/s: programmed feeds above it are capped
+  double junction_deviation = 0.01;                                ///< mm
+  std::size_t lookahead = 256;                                     ///< blocks planned together
+  std::array<double, 3> axis_speed{kNoLimit, kNoLimit, kNoLimit};  ///< mm/s per axis
   std::array<double, 3> axis_acceleration{kNoLimit, kNoLimit, kNoLimit};  ///< mm/s^2 per axis
 
   static constexpr double kNoLimit = 1e300;
@@ -47,7 +47,7 @@ struct PlannedBlock {
   double length = 0;  ///< mm along the path
   double entry_speed = 0, cruise_speed = 0, exit_speed = 0;
   double acceleration = 0;
-  double duration = 0;  ///< s
+  double duration = 0;       ///< s
   bool feed_capped = false;  ///< the programmed feed exceeded max_speed or an axis' speed
   /// Where the cruise starts and ends (mm) and when (s): set with the profile.
   double cruise_from = 0, cruise_to = 0, cruise_starts = 0, cruise_ends = 0;

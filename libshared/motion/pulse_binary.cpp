@@ -148,8 +148,8 @@ PulseStreamInfo read_pulse_binary(const std::string& path, const PulseEventSink&
   }
   const std::uint64_t events = in.need_u64("the trailer"), last_ns = in.need_u64("the trailer");
   if (events != info.events || last_ns != ns)
-    in.fail(fmt::format("the trailer says {} events ending at {} ns; the stream has {} ending at {} ns", events, last_ns,
-                        info.events, ns));
+    in.fail(fmt::format("the trailer says {} events ending at {} ns; the stream has {} ending at {} ns", events,
+                        last_ns, info.events, ns));
   if (in.next() >= 0) in.fail("bytes after the trailer");
   info.last_ns = ns;
   return info;

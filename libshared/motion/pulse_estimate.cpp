@@ -31,7 +31,8 @@ double implied_pulses(const Motion& motion, const std::array<double, 3>& steps_p
   double pulses = 0;
   if (motion.kind != MotionKind::arc) {
     for (int axis = 0; axis < 3; ++axis)
-      pulses += std::abs(std::round(motion.end[axis] * steps_per_mm[axis]) - std::round(motion.start[axis] * steps_per_mm[axis]));
+      pulses += std::abs(std::round(motion.end[axis] * steps_per_mm[axis]) -
+                         std::round(motion.start[axis] * steps_per_mm[axis]));
     return pulses;
   }
   const ArcGeometry g = arc_geometry(motion);

@@ -118,9 +118,10 @@ void PulseRun::check_synchronised_speed(const Motion& motion) const {
   if (!motion.spindle_synchronised) return;
   const double cap = machine_speed_cap(options_.limits, motion);
   if (motion.feed > cap * (1 + 1e-12))
-    throw Error(fmt::format("G33 needs {:.6g} mm/min along its line (K times S), more than the machine allows there "
-                            "({:.6g} mm/min)",
-                            motion.feed * 60, cap * 60));
+    throw Error(
+        fmt::format("G33 needs {:.6g} mm/min along its line (K times S), more than the machine allows there "
+                    "({:.6g} mm/min)",
+                    motion.feed * 60, cap * 60));
 }
 
 // Before the block is planned: a move of a kilometre at fine steps implies
@@ -128,8 +129,9 @@ void PulseRun::check_synchronised_speed(const Motion& motion) const {
 void PulseRun::check_implied_pulses(const Motion& motion) {
   implied_pulses_ += implied_pulses(motion, options_.steps_per_mm);
   if (implied_pulses_ > options_.max_pulses)
-    throw Error(fmt::format("the program implies {:.4g} step pulses up to this block, more than --max-pulses {:g} allows",
-                            implied_pulses_, options_.max_pulses));
+    throw Error(
+        fmt::format("the program implies {:.4g} step pulses up to this block, more than --max-pulses {:g} allows",
+                    implied_pulses_, options_.max_pulses));
 }
 
 void PulseRun::finish() { planner_.finish(ready_); }
@@ -167,10 +169,8 @@ void PulseRun::on_block(const PlannedBlock& block) {
         ++summary_.pulses[axis];
         if (last_step_time_[axis] >= 0) {
           const double interval = t - last_step_time_[axis];
-          if (interval > 0)
-            shortest_interval_[axis] = std::min(shortest_interval_[axis], interval);
-          else
-            ++summary_.coincident_steps;
+          if (interval > 0) shortest_interval_[axis] = std::min(shortest_interval_[axis], interval);
+          else ++summary_.coincident_steps;
         }
         last_step_time_[axis] = t;
       }
@@ -198,7 +198,8 @@ PulseSummary PulseRun::summary() const {
     out.final_mm[axis] = static_cast<double>(stepper_.position()[axis]) / options_.steps_per_mm[axis];
     // Over positive intervals; two steps of one axis at one instant are
     // counted in coincident_steps instead.
-    out.peak_rate[axis] = std::isfinite(shortest_interval_[axis]) && shortest_interval_[axis] > 0 ? 1.0 / shortest_interval_[axis] : 0.0;
+    out.peak_rate[axis] =
+        std::isfinite(shortest_interval_[axis]) && shortest_interval_[axis] > 0 ? 1.0 / shortest_interval_[axis] : 0.0;
   }
   out.blocks = options_.canon ? canon_.blocks() : interpreter_.blocks();
   out.unused_words = options_.canon ? canon_.unused_words() : interpreter_.unused_words();

@@ -45,7 +45,7 @@ struct PulseSummary {
   double max_deviation_mm = 0;
   double deviation_sq_sum = 0;
   std::uint64_t events = 0;
-  std::array<double, 3> peak_rate{};  ///< steps/s: 1 / the shortest positive interval between two steps of an axis
+  std::array<double, 3> peak_rate{};   ///< steps/s: 1 / the shortest positive interval between two steps of an axis
   std::uint64_t coincident_steps = 0;  ///< steps of an axis at the same instant as its previous one
   std::uint64_t blocks = 0, motions = 0, feed_capped = 0;
   std::map<std::string, std::uint64_t> unused_words;

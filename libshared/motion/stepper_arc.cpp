@@ -316,13 +316,14 @@ void Stepper::ArcWalk::walk_nearest() {
 }
 
 void Stepper::ArcWalk::walk_bresenham() {
-  walk_planar([this](const Heading& h, int rise) { return bresenham_move(h, rise); },
-              [this](int rise) {
-                // On a steep helix: the rise alone while it lags a step.
-                if (rise)
-                  while ((g_.height(phi_) - static_cast<double>(at2_) * h2_) * rise >= 1.5 * h2_ && at2_ != target_[a2_])
-                    emit(0, 0, rise);
-              });
+  walk_planar(
+      [this](const Heading& h, int rise) { return bresenham_move(h, rise); },
+      [this](int rise) {
+        // On a steep helix: the rise alone while it lags a step.
+        if (rise)
+          while ((g_.height(phi_) - static_cast<double>(at2_) * h2_) * rise >= 1.5 * h2_ && at2_ != target_[a2_])
+            emit(0, 0, rise);
+      });
 }
 
 // Sample the ideal path finely enough that no axis moves more than half a

@@ -44,7 +44,9 @@ class Stepper::LineWalk {
     double along, last_along;
   };
   Cursor cursor() const { return {at_, remaining_, e_, along_, last_along_}; }
-  void settle(const Cursor& c) { at_ = c.at, remaining_ = c.remaining, e_ = c.e, along_ = c.along, last_along_ = c.last_along; }
+  void settle(const Cursor& c) {
+    at_ = c.at, remaining_ = c.remaining, e_ = c.e, along_ = c.along, last_along_ = c.last_along;
+  }
   /// Moves the axes of `mask` (bit i = axis i) one step each and emits the event.
   void apply(Cursor& c, int mask) const;
   /// The axes with steps left, as a mask.
@@ -67,7 +69,11 @@ class Stepper::LineWalk {
 };
 
 Stepper::LineWalk::LineWalk(const Stepper& stepper, const Motion& motion, Chunk& out)
-    : motion_(motion), out_(out), step_mm_(stepper.step_mm_), target_(stepper.quantise(motion.end)), at_(stepper.position_) {
+    : motion_(motion),
+      out_(out),
+      step_mm_(stepper.step_mm_),
+      target_(stepper.quantise(motion.end)),
+      at_(stepper.position_) {
   for (int axis = 0; axis < 3; ++axis) {
     remaining_[axis] = target_[axis] - at_[axis];
     sign_[axis] = (remaining_[axis] > 0) - (remaining_[axis] < 0);

@@ -130,9 +130,9 @@ bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_cla
     if (cancelled(cancel)) return false;
     mpz_mul(high.get_mpz_t(), u_next.get_mpz_t(), u_next.get_mpz_t());  // U_k+1^2
     mpz_sub(diff.get_mpz_t(), u_next.get_mpz_t(), u.get_mpz_t());
-    mpz_mul(low.get_mpz_t(), diff.get_mpz_t(), diff.get_mpz_t());        // (U_k+1 - U_k)^2
-    mpz_mul(square.get_mpz_t(), u.get_mpz_t(), u.get_mpz_t());           // U_k^2
-    mpz_sub(low.get_mpz_t(), high.get_mpz_t(), low.get_mpz_t());         // U_2k
+    mpz_mul(low.get_mpz_t(), diff.get_mpz_t(), diff.get_mpz_t());  // (U_k+1 - U_k)^2
+    mpz_mul(square.get_mpz_t(), u.get_mpz_t(), u.get_mpz_t());     // U_k^2
+    mpz_sub(low.get_mpz_t(), high.get_mpz_t(), low.get_mpz_t());   // U_2k
     if (q >= 0) mpz_submul_ui(high.get_mpz_t(), square.get_mpz_t(), static_cast<unsigned long>(q));
     else mpz_addmul_ui(high.get_mpz_t(), square.get_mpz_t(), static_cast<unsigned long>(-q));  // U_2k+1
     if (mpz_tstbit(k.get_mpz_t(), bit)) {

@@ -22,8 +22,8 @@ bool strong_probable_prime(const Modulus& N, const mpz_class& base, const std::a
 
 /// Result of choosing Selfridge's D for N.
 struct SelfridgeChoice {
-  std::int64_t d = 0;       ///< 0 when N is a perfect square
-  mpz_class factor = 0;     ///< a nontrivial factor found on the way, else 0
+  std::int64_t d = 0;    ///< 0 when N is a perfect square
+  mpz_class factor = 0;  ///< a nontrivial factor found on the way, else 0
 };
 SelfridgeChoice selfridge_d(const mpz_class& N);
 

@@ -23,8 +23,7 @@ mpz_class integer_field(const Record& record, const char* name, std::size_t max_
   if (value.is_number_integer()) return mpz_class(value.get<long>());
   if (value.is_number_float()) {
     const double d = value.get<double>();
-    if (!std::isfinite(d) || d != std::floor(d))
-      throw Error(std::string("field '") + name + "' is not an integer");
+    if (!std::isfinite(d) || d != std::floor(d)) throw Error(std::string("field '") + name + "' is not an integer");
     // 1e5 is an integer written as a float; above 2^53 digits may be lost.
     if (std::fabs(d) <= static_cast<double>(kMaxSafeJsonInteger)) return mpz_class(d);
     throw Error(std::string("field '") + name +
@@ -98,8 +97,7 @@ Candidate candidate_from_record(const Record& record, std::size_t max_bits) {
   if (record.contains("form")) {
     if (!record["form"].is_string()) throw Error("field 'form' must be a string");
     const std::string form = record["form"].get<std::string>();
-    if (!is_known_form(form))
-      throw Error("unknown form '" + form + "' (expected riesel, proth, twin, sg, cc1 or cc2)");
+    if (!is_known_form(form)) throw Error("unknown form '" + form + "' (expected riesel, proth, twin, sg, cc1 or cc2)");
     if (record.contains("b") && word_field(record, "b", ~std::uint64_t{0}) != 2)
       throw Error("forms are defined for base 2 only");
     candidate.form = form;
@@ -108,9 +106,13 @@ Candidate candidate_from_record(const Record& record, std::size_t max_bits) {
     };
     if (form == "riesel") add(n, -1);
     else if (form == "proth") add(n, 1);
-    else if (form == "twin") { add(n, -1); add(n, 1); }
-    else if (form == "sg") { add(n, -1); add(n + 1, -1); }
-    else {
+    else if (form == "twin") {
+      add(n, -1);
+      add(n, 1);
+    } else if (form == "sg") {
+      add(n, -1);
+      add(n + 1, -1);
+    } else {
       const std::uint64_t length = word_field(record, "length", 64);
       if (length < 1) throw Error("field 'length' must be at least 1");
       for (std::uint64_t i = 0; i < length; ++i) add(n + i, form == "cc1" ? -1 : 1);

@@ -38,7 +38,8 @@ std::string abc_expression(const SieveSpec& spec, bool n_as_variable) {
     case SieveForm::cc2: {
       std::string text;
       for (const SieveMember& member : spec.members())
-        text += fmt::format("{}$a*2^{}{}", text.empty() ? "" : " & ", n + member.exponent_offset, member.c < 0 ? "-1" : "+1");
+        text += fmt::format("{}$a*2^{}{}", text.empty() ? "" : " & ", n + member.exponent_offset,
+                            member.c < 0 ? "-1" : "+1");
       return text;
     }
   }
@@ -70,7 +71,8 @@ CandidateHeader candidate_header_kind(std::string_view text) {
   if (word == "ABC2") return CandidateHeader::abc2;
   // LLR takes any line that starts "<digits>:" for a NewPGen header.
   const auto digits_end = text.find_first_not_of("0123456789");
-  if (digits_end != 0 && digits_end != std::string_view::npos && text[digits_end] == ':') return CandidateHeader::newpgen;
+  if (digits_end != 0 && digits_end != std::string_view::npos && text[digits_end] == ':')
+    return CandidateHeader::newpgen;
   return CandidateHeader::none;
 }
 
@@ -88,7 +90,8 @@ std::string sieve_header_line(const SieveHeader& header) {
   switch (header.kind) {
     case CandidateHeader::newpgen: return fmt::format("{}:{}", header.depth, header.key);
     case CandidateHeader::abc: return fmt::format("{}{}{}", header.key, kSievedTo, header.depth);
-    case CandidateHeader::abcd: return fmt::format("{} [{}]{}{}", header.key, header.abcd_start, kSievedTo, header.depth);
+    case CandidateHeader::abcd:
+      return fmt::format("{} [{}]{}{}", header.key, header.abcd_start, kSievedTo, header.depth);
     default: return {};
   }
 }

@@ -27,7 +27,6 @@ using io::trim;
 constexpr std::uint64_t kMaxExponent = 0xFFFFFFFFu;  // n must fit 32 bits
 constexpr std::uint64_t kMaxChainLength = 64;        // the most candidate_from_record accepts
 
-
 /// Whitespace-separated words; stops after `limit` + 1 so a huge junk line
 /// cannot make a huge vector.
 std::vector<std::string_view> words(std::string_view text, std::size_t limit) {
@@ -47,7 +46,8 @@ bool all_digits(std::string_view text) {
 
 std::optional<std::uint64_t> parse_u64(std::string_view text) {
   std::uint64_t value = 0;
-  const bool fits = all_digits(text) && std::from_chars(text.data(), text.data() + text.size(), value).ec == std::errc();
+  const bool fits =
+      all_digits(text) && std::from_chars(text.data(), text.data() + text.size(), value).ec == std::errc();
   return fits ? std::optional(value) : std::nullopt;
 }
 
@@ -77,7 +77,8 @@ void check_size(const mpz_class& k, std::uint64_t b, std::uint64_t n, std::size_
 mpz_class parse_k(std::string_view text, std::size_t max_bits) {
   if (text.starts_with('+')) text.remove_prefix(1);
   if (!all_digits(text)) throw Error("k " + quoted(text) + " is not a positive decimal integer");
-  if (text.size() > max_decimal_digits(max_bits)) throw Error("k has more bits than --max-bits " + std::to_string(max_bits));
+  if (text.size() > max_decimal_digits(max_bits))
+    throw Error("k has more bits than --max-bits " + std::to_string(max_bits));
   const mpz_class k(std::string(text), 10);
   if (k == 0) throw Error("k must be positive");
   return k;
@@ -105,8 +106,16 @@ Record form_record(const mpz_class& k, std::uint64_t n, const std::string& form,
 
 // Mask bits as NewPGen, LLR and PFGW name them (see the research note).
 enum : std::uint64_t {
-  kPlus = 0x1, kMinus = 0x2, k2Plus = 0x4, k2Minus = 0x8, k4Plus = 0x10, k4Minus = 0x20,
-  kPrimorial = 0x40, kKSieve = 0x100, kNotGeneralised = 0x400, kDual = 0x8000,
+  kPlus = 0x1,
+  kMinus = 0x2,
+  k2Plus = 0x4,
+  k2Minus = 0x8,
+  k4Plus = 0x10,
+  k4Minus = 0x20,
+  kPrimorial = 0x40,
+  kKSieve = 0x100,
+  kNotGeneralised = 0x400,
+  kDual = 0x8000,
   kOtherMembers = 0x80 | 0x200 | 0x800 | 0x1000,  // +5, AP, +7, 2k*b^n+3
 };
 
@@ -146,7 +155,9 @@ NewPGenShape parse_newpgen_header(std::string_view header) {
   if (std::string_view("PMTSCBJKYZ123A").find(letter) == std::string_view::npos)
     throw Error("newpgen header " + name + " has unknown letter " + quoted(fields[1]));
   if (*base < 2) throw Error("newpgen header " + name + " has base below 2");
-  auto unsupported = [&](const std::string& why) { return Error("newpgen mode " + name + " is not supported: " + why); };
+  auto unsupported = [&](const std::string& why) {
+    return Error("newpgen mode " + name + " is not supported: " + why);
+  };
 
   std::vector<std::pair<std::int64_t, int>> members;
   std::uint64_t chain_length = std::max<std::uint64_t>(*chain, 1);  // LLR reads 0 as 1
@@ -157,10 +168,16 @@ NewPGenShape parse_newpgen_header(std::string_view header) {
   const std::uint64_t bits = *mask;
   if (bits == 0) {
     switch (letter) {
-      case 'P': case 'M': add_chain(0, 1, letter == 'P' ? +1 : -1); break;
-      case 'T': add_chain(0, 1, -1); add_chain(0, 1, +1); break;
-      case 'S': case 'C': add_chain(0, 2, letter == 'C' ? +1 : -1); break;
-      case '1': case '2': add_chain(-1, chain_length, letter == '2' ? +1 : -1); break;
+      case 'P':
+      case 'M': add_chain(0, 1, letter == 'P' ? +1 : -1); break;
+      case 'T':
+        add_chain(0, 1, -1);
+        add_chain(0, 1, +1);
+        break;
+      case 'S':
+      case 'C': add_chain(0, 2, letter == 'C' ? +1 : -1); break;
+      case '1':
+      case '2': add_chain(-1, chain_length, letter == '2' ? +1 : -1); break;
       default: throw unsupported("letter " + std::string(1, letter) + " has no record shape");
     }
   } else {
@@ -177,8 +194,9 @@ NewPGenShape parse_newpgen_header(std::string_view header) {
       if (bits & kMinus) add_chain(0, chain_length, -1);
       if (bits & kPlus) add_chain(0, chain_length, +1);
     } else {
-      const std::pair<std::uint64_t, std::pair<std::int64_t, int>> kBits[] = {
-          {kMinus, {0, -1}}, {kPlus, {0, +1}}, {k2Minus, {1, -1}}, {k2Plus, {1, +1}}, {k4Minus, {2, -1}}, {k4Plus, {2, +1}}};
+      const std::pair<std::uint64_t, std::pair<std::int64_t, int>> kBits[] = {{kMinus, {0, -1}},  {kPlus, {0, +1}},
+                                                                              {k2Minus, {1, -1}}, {k2Plus, {1, +1}},
+                                                                              {k4Minus, {2, -1}}, {k4Plus, {2, +1}}};
       for (const auto& [bit, member] : kBits)
         if (bits & bit) members.push_back(member);
     }
@@ -196,7 +214,8 @@ NewPGenShape parse_newpgen_header(std::string_view header) {
                    members[i].first == shape.offset + static_cast<std::int64_t>(i);
   if (members.size() == 1) {
     // With 0x400 an offset doubles k instead of raising n: the same number in base 2 only.
-    if ((bits & kNotGeneralised) && shape.offset != 0 && shape.base != 2) throw unsupported("2k/4k members outside base 2");
+    if ((bits & kNotGeneralised) && shape.offset != 0 && shape.base != 2)
+      throw unsupported("2k/4k members outside base 2");
     shape.c = members[0].second;
   } else if (shape.base != 2) {
     throw unsupported("forms with several members are defined for base 2 only");
@@ -220,7 +239,7 @@ Record newpgen_record(const NewPGenShape& shape, std::string_view line, std::siz
   if (shape.offset < 0 && n < static_cast<std::uint64_t>(-shape.offset))
     throw Error("n must be at least 1: this chain starts at k*b^(n-1)");
   n = static_cast<std::uint64_t>(static_cast<std::int64_t>(n) + shape.offset);  // offset -1..2, n < 2^32
-  if (shape.dual) {  // b^n+k or b^n-k, as LLR's MODE_DUAL
+  if (shape.dual) {                                                             // b^n+k or b^n-k, as LLR's MODE_DUAL
     if (k >= (mpz_class(1) << 62)) throw Error("k of a dual newpgen file must be below 2^62");
     check_size(1, shape.base, n, max_bits);
     return number_record(1, shape.base, n, shape.c * mpz_get_si(k.get_mpz_t()));
@@ -258,7 +277,10 @@ std::optional<std::pair<std::string, std::string>> match_k2n(std::string_view te
 /// Sets t.form for the pairs twinsieve and sgsieve write, in either order:
 /// K*2^N+1 & K*2^N-1 (twin) and K*2^N-1 & 2*(K*2^N-1)+1 (Sophie Germain).
 bool match_pair(std::string_view first, std::string_view second, AbcTemplate& t) {
-  struct Pattern { const char* form; std::string_view prefix1, suffix1, prefix2, suffix2; };
+  struct Pattern {
+    const char* form;
+    std::string_view prefix1, suffix1, prefix2, suffix2;
+  };
   static constexpr Pattern kPatterns[] = {{"twin", "", "+1", "", "-1"}, {"sg", "", "-1", "2*(", "-1)+1"}};
   for (int order = 0; order < 2; ++order, std::swap(first, second)) {
     for (const Pattern& p : kPatterns) {
@@ -277,7 +299,8 @@ bool match_pair(std::string_view first, std::string_view second, AbcTemplate& t)
 bool match_chain(const std::vector<std::string>& parts, AbcTemplate& t) {
   std::optional<std::pair<std::string, std::string>> first;
   std::vector<std::uint64_t> exponents;
-  const std::string_view sign = std::string_view(parts.front()).substr(std::max<std::size_t>(parts.front().size(), 2) - 2);
+  const std::string_view sign =
+      std::string_view(parts.front()).substr(std::max<std::size_t>(parts.front().size(), 2) - 2);
   if (sign != "-1" && sign != "+1") return false;
   for (const std::string& part : parts) {
     const auto kn = match_k2n(part, "", sign);
@@ -407,8 +430,14 @@ class PrimeTextDecoder final : public io::LineDecoder {
     const CandidateHeader kind = candidate_header_kind(text);
     if (kind != CandidateHeader::none) mode_ = Mode::none;  // until the new header proves valid
     switch (kind) {
-      case CandidateHeader::newpgen: newpgen_ = parse_newpgen_header(text); mode_ = Mode::newpgen; return false;
-      case CandidateHeader::abc: abc_ = parse_abc_expression(header_body(text, 3)); mode_ = Mode::abc; return false;
+      case CandidateHeader::newpgen:
+        newpgen_ = parse_newpgen_header(text);
+        mode_ = Mode::newpgen;
+        return false;
+      case CandidateHeader::abc:
+        abc_ = parse_abc_expression(header_body(text, 3));
+        mode_ = Mode::abc;
+        return false;
       case CandidateHeader::abcd:  // the header itself is the first candidate
         start_abcd(header_body(text, 4));
         out = abc_record(abc_, running_text(), max_bits_);
@@ -421,7 +450,10 @@ class PrimeTextDecoder final : public io::LineDecoder {
       case Mode::none: throw Error("data line without a valid newpgen, abc or abcd header before it");
       case Mode::newpgen: out = newpgen_record(newpgen_, text, max_bits_); return true;
       case Mode::abc: out = abc_record(abc_, abc_values(text, abc_.variable_count, max_bits_), max_bits_); return true;
-      case Mode::abcd: apply_deltas(text); out = abc_record(abc_, running_text(), max_bits_); return true;
+      case Mode::abcd:
+        apply_deltas(text);
+        out = abc_record(abc_, running_text(), max_bits_);
+        return true;
     }
     return false;
   }

@@ -4,8 +4,8 @@
 #include "io/csv.hpp"
 #include "io/text.hpp"
 #include "primes/candidate.hpp"
-#include "primes/number_expression.hpp"
 #include "primes/candidate_formats.hpp"
+#include "primes/number_expression.hpp"
 
 namespace tk::primes {
 

@@ -8,7 +8,6 @@
 #include "io/error.hpp"
 #include "primes/trial_division.hpp"
 
-
 namespace tk::primes {
 
 namespace {
@@ -79,7 +78,7 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
   // proved as 669*2^1001-1), so they can be matched with the input.
   // k*2^n+-1 keeps its "1*" as LLR's isLLRP and isProthP write it.
   const bool llr_shape = number.form && number.form->b == 2 && (number.form->c == 1 || number.form->c == -1);
-  proof.name = llr_shape ? fmt::format("{}*2^{}{:+d}", number.form->k.get_str(), number.form->n, number.form->c)
+  proof.name = llr_shape     ? fmt::format("{}*2^{}{:+d}", number.form->k.get_str(), number.form->n, number.form->c)
                : number.form ? kbnc_text(*number.form)
                              : number.value.get_str();
   // 3 = 1*2^2-1 is the one k*2^n-1 that trial division below does not settle
@@ -105,7 +104,8 @@ MemberProof prove_member(const Member& member, const ProofPlan& plan) {
     proof.witness = fmt::format("factor {}", p);
     return proof;
   }
-  if (!special && plan.require_proof) throw Error(fmt::format("{} cannot be proved: {}", proof.name, why_unprovable(form)));
+  if (!special && plan.require_proof)
+    throw Error(fmt::format("{} cannot be proved: {}", proof.name, why_unprovable(form)));
   if (!special) {
     TestPlan bpsw;
     const TestOutcome outcome = test_number(number, bpsw);

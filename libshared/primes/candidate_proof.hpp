@@ -26,14 +26,14 @@ struct ProofPlan {
 
 struct MemberProof {
   Verdict verdict = Verdict::unknown;
-  std::string test;         ///< llr, proth, bpsw or trial
-  std::string text;         ///< the member as "k*2^n+c" after normalising k (checkpoint names)
-  std::string name;         ///< the member as its input wrote it (even k kept): results lines
-  std::uint64_t parameter = 0;  ///< P (llr) or a (proth)
+  std::string test;                    ///< llr, proth, bpsw or trial
+  std::string text;                    ///< the member as "k*2^n+c" after normalising k (checkpoint names)
+  std::string name;                    ///< the member as its input wrote it (even k kept): results lines
+  std::uint64_t parameter = 0;         ///< P (llr) or a (proth)
   std::optional<std::uint64_t> res64;  ///< composites of llr and proth
-  std::string witness;      ///< "factor p" for a small factor
-  std::uint64_t n = 0;      ///< exponent after normalising
-  std::uint64_t digits = 0; ///< decimal digits of the number
+  std::string witness;                 ///< "factor p" for a small factor
+  std::uint64_t n = 0;                 ///< exponent after normalising
+  std::uint64_t digits = 0;            ///< decimal digits of the number
 };
 
 MemberProof prove_member(const Member& member, const ProofPlan& plan);

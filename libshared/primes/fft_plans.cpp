@@ -53,7 +53,8 @@ const RealFftPlans* real_fft_plans(std::size_t length) {
   plans.inverse = fftw_plan_dft_c2r_1d(n, spectrum, real, flags);
   fftw_free(real);
   fftw_free(spectrum);
-  if (!plans.forward || !plans.inverse) throw Error("FFTW could not plan a transform of length " + std::to_string(length));
+  if (!plans.forward || !plans.inverse)
+    throw Error("FFTW could not plan a transform of length " + std::to_string(length));
   return &cache.emplace(length, plans).first->second;
 }
 

@@ -27,7 +27,6 @@ int max_digit_bits(std::size_t length) {
   return std::min(exact, safe);
 }
 
-
 std::size_t digits_for(std::size_t bits, int digit_bits) {
   return (bits + static_cast<std::size_t>(digit_bits) - 1) / static_cast<std::size_t>(digit_bits) + 1;
 }
@@ -237,10 +236,8 @@ void FftSquaring::reduce_product(unsigned long minus) {
   const std::size_t n_limb = form_.n / 64;
   const unsigned n_bit = form_.n % 64;
   const auto high_size = static_cast<mp_size_t>(static_cast<std::size_t>(p_size) - n_limb);
-  if (n_bit == 0)
-    std::copy_n(product_.data() + n_limb, high_size, high_.data());
-  else
-    mpn_rshift(high_.data(), product_.data() + n_limb, high_size, n_bit);
+  if (n_bit == 0) std::copy_n(product_.data() + n_limb, high_size, high_.data());
+  else mpn_rshift(high_.data(), product_.data() + n_limb, high_size, n_bit);
   const mp_limb_t remainder = mpn_divrem_1(quotient_.data(), 0, high_.data(), high_size, form_.k);
 
   // x = L + r*2^n, below k*2^n.
@@ -264,11 +261,10 @@ void FftSquaring::reduce_product(unsigned long minus) {
     // x - q < 0: add N until the difference is non-negative.
     std::vector<mp_limb_t>& deficit = high_;
     mpn_sub_n(deficit.data(), q, x_.data(), w);
-    while (mpn_cmp(deficit.data(), modulus_.data(), w) >= 0) mpn_sub_n(deficit.data(), deficit.data(), modulus_.data(), w);
-    if (mpn_zero_p(deficit.data(), w))
-      std::fill(x_.begin(), x_.end(), 0);
-    else
-      mpn_sub_n(x_.data(), modulus_.data(), deficit.data(), w);
+    while (mpn_cmp(deficit.data(), modulus_.data(), w) >= 0)
+      mpn_sub_n(deficit.data(), deficit.data(), modulus_.data(), w);
+    if (mpn_zero_p(deficit.data(), w)) std::fill(x_.begin(), x_.end(), 0);
+    else mpn_sub_n(x_.data(), modulus_.data(), deficit.data(), w);
   }
 }
 

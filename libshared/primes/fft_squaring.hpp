@@ -58,12 +58,12 @@ class FftSquaring {
   SpecialForm form_;
   std::size_t length_;
   int digit_bits_;
-  std::size_t digits_;        ///< balanced digits of any x < N, top carry included
-  std::size_t limbs_;         ///< limbs of N
+  std::size_t digits_;  ///< balanced digits of any x < N, top carry included
+  std::size_t limbs_;   ///< limbs of N
   std::vector<mp_limb_t> modulus_, x_, product_, high_, quotient_;
   std::vector<std::uint64_t> digit_buffer_;  ///< the square's digits after carrying
-  double* real_ = nullptr;    ///< FFTW-aligned, length_
-  void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex
+  double* real_ = nullptr;                   ///< FFTW-aligned, length_
+  void* spectrum_ = nullptr;                 ///< FFTW-aligned, length_/2 + 1 complex
   const RealFftPlans* plans_ = nullptr;
   std::uint64_t square_at_one_ = 0, square_at_minus_one_ = 0;
   double worst_roundoff_ = 0;

@@ -22,10 +22,15 @@ inline bool bit_is_set(std::uint64_t* words, std::uint64_t offset) {
 }  // namespace
 
 GeneralizedSieve::GeneralizedSieve(const SieveSpec& spec)
-    : spec_(spec), roots_(spec), members_(spec.members()), count_(spec.count()),
+    : spec_(spec),
+      roots_(spec),
+      members_(spec.members()),
+      count_(spec.count()),
       small_bound_(std::min(spec.p_max, kSmallPrimeBound)),
       block_count_(spec.p_max > small_bound_ ? (spec.p_max - small_bound_ + kBlockWidth - 1) / kBlockWidth : 0),
-      small_exponents_(spec.n < 64), bits_((count_ + 63) / 64), survivors_(count_) {}
+      small_exponents_(spec.n < 64),
+      bits_((count_ + 63) / 64),
+      survivors_(count_) {}
 
 std::uint64_t GeneralizedSieve::settled_count() const {
   return small_done_ ? count_ : std::min(count_, next_segment_ * kSegmentBits);
@@ -44,7 +49,8 @@ void GeneralizedSieve::restore(SieveBitmap bitmap, std::uint64_t next_segment, s
   const std::uint64_t segments = segment_count();
   if (next_block > block_count_ || next_segment > segments || (next_segment < segments && next_block > 0) ||
       bitmap.size() != bits_.size())
-    throw Error("checkpoint does not fit this run (its segment or block of primes or its candidate count is out of range)");
+    throw Error(
+        "checkpoint does not fit this run (its segment or block of primes or its candidate count is out of range)");
   bits_ = std::move(bitmap);
   next_segment_ = next_segment;
   next_block_ = next_block;
@@ -130,7 +136,7 @@ void GeneralizedSieve::sieve_small_primes(const SieveControl& control) {
 }
 
 std::optional<std::vector<SieveFactor>> GeneralizedSieve::sieve_block(std::uint64_t block,
-                                                                     const std::function<bool()>& stop) {
+                                                                      const std::function<bool()>& stop) {
   if (stop && stop()) return std::nullopt;  // queued before the stop: not worth starting
   thread_local std::vector<std::uint64_t> primes, roots;
   primes.clear();
@@ -175,7 +181,10 @@ bool GeneralizedSieve::sieve_large_primes(const SieveControl& control) {
   std::uint64_t* words = bits_.data();
   bool cut_short = false;  // a block was dropped: no later block may count as done
   OrderedPool<std::uint64_t, BlockResult> pool(
-      control.threads, [&](std::uint64_t& block) { return BlockResult{block, sieve_block(block, control.should_stop)}; },
+      control.threads,
+      [&](std::uint64_t& block) {
+        return BlockResult{block, sieve_block(block, control.should_stop)};
+      },
       [&](BlockResult& result) {
         if (cut_short || !result.factors) {
           cut_short = true;

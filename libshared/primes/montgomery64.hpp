@@ -46,9 +46,7 @@ class Montgomery64 {
   }
   u64 sub(u64 a, u64 b) const { return a >= b ? a - b : a - b + n_; }
   /// a / 2 mod n (works in or out of Montgomery form).
-  u64 half(u64 a) const {
-    return (a & 1) ? static_cast<u64>((static_cast<u128>(a) + n_) >> 1) : a >> 1;
-  }
+  u64 half(u64 a) const { return (a & 1) ? static_cast<u64>((static_cast<u128>(a) + n_) >> 1) : a >> 1; }
   u64 pow(u64 base_form, u64 exponent) const {
     u64 result = one_;
     while (exponent) {

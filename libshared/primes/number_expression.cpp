@@ -219,8 +219,7 @@ Number parse_number(std::string_view text, std::size_t max_bits) {
   Parser parser(text, max_bits);
   Term term = parser.parse();
   Number number{std::move(term.value), std::nullopt};
-  if (term.form && term.form->k > 0 && mpz_sizeinbase(number.value.get_mpz_t(), 2) <= max_bits)
-    number.form = term.form;
+  if (term.form && term.form->k > 0 && mpz_sizeinbase(number.value.get_mpz_t(), 2) <= max_bits) number.form = term.form;
   if (mpz_sizeinbase(number.value.get_mpz_t(), 2) > max_bits)
     throw Error("number has " + std::to_string(mpz_sizeinbase(number.value.get_mpz_t(), 2)) +
                 " bits, more than --max-bits " + std::to_string(max_bits));

@@ -65,7 +65,8 @@ std::uint64_t grh_last_base(const mpz_class& n) {
   // the bound is 4.3e15, it adds at most one base).
   const long double margin = 1e-6L + bound * 1e-16L;
   // 2^62 bases would take longer than anyone waits; above it, only the cap matters.
-  const std::uint64_t last = bound >= 0x1p62L ? std::uint64_t{1} << 62 : static_cast<std::uint64_t>(std::floor(bound + margin));
+  const std::uint64_t last =
+      bound >= 0x1p62L ? std::uint64_t{1} << 62 : static_cast<std::uint64_t>(std::floor(bound + margin));
   const mpz_class largest = n - 2;
   return mpz_cmp_ui(largest.get_mpz_t(), last) < 0 ? mpz_get_ui(largest.get_mpz_t()) : last;
 }
@@ -133,8 +134,8 @@ TestOutcome test_u64(std::uint64_t n, const TestPlan& plan) {
     case TestKind::miller_rabin:
       for (const mpz_class& base : choose_bases(n, plan)) {
         const std::uint64_t b = mpz_get_ui(base.get_mpz_t());
-        const bool pass = plan.kind == TestKind::fermat ? fermat_probable_prime_u64(n, b)
-                                                        : strong_probable_prime_u64(n, b);
+        const bool pass =
+            plan.kind == TestKind::fermat ? fermat_probable_prime_u64(n, b) : strong_probable_prime_u64(n, b);
         if (!pass) return composite(base_witness(b));
       }
       return {Verdict::probable_prime, {}};
@@ -201,8 +202,7 @@ TestOutcome test_big(const Number& number, const TestPlan& plan) {
   std::optional<SpecialForm> special;
   if (number.form && number.form->b == 2 && mpz_fits_ulong_p(number.form->k.get_mpz_t()))
     special = detect_special_form(n, number.form->c);
-  else
-    special = detect_special_form(n);
+  else special = detect_special_form(n);
   const Modulus modulus = special ? Modulus(n, *special) : Modulus(n);
 
   // N = k*2^n - 1 with 2^n > k: N + 1 = k*2^n, so the Lucas half ends in the
@@ -229,15 +229,14 @@ TestOutcome test_big(const Number& number, const TestPlan& plan) {
     case TestKind::fermat:
     case TestKind::miller_rabin:
       for (const mpz_class& base : choose_bases(n, plan)) {
-        const bool pass = plan.kind == TestKind::fermat ? fermat_probable_prime(modulus, base)
-                                                        : strong_probable_prime(modulus, base);
+        const bool pass =
+            plan.kind == TestKind::fermat ? fermat_probable_prime(modulus, base) : strong_probable_prime(modulus, base);
         if (!pass) return composite(witness_text(base));
       }
       return {Verdict::probable_prime, {}};
     case TestKind::mr_grh:
-      return grh_miller_rabin(n, [&](std::uint64_t a) {
-        return strong_probable_prime(modulus, mpz_class(static_cast<unsigned long>(a)));
-      });
+      return grh_miller_rabin(
+          n, [&](std::uint64_t a) { return strong_probable_prime(modulus, mpz_class(static_cast<unsigned long>(a))); });
     case TestKind::lucas:
       if (auto outcome = lucas(modulus, nullptr); outcome.failure) return *outcome.failure;
       return {Verdict::probable_prime, {}};

@@ -33,9 +33,9 @@ std::uint64_t grh_last_base(const mpz_class& n);
 
 struct TestPlan {
   TestKind kind = TestKind::bpsw;
-  std::vector<std::uint64_t> bases;      ///< Fermat / Miller-Rabin bases (default {2})
-  unsigned random_bases = 0;             ///< extra bases drawn at random
-  std::uint64_t seed = 0;                ///< with the number, fixes the random bases
+  std::vector<std::uint64_t> bases;          ///< Fermat / Miller-Rabin bases (default {2})
+  unsigned random_bases = 0;                 ///< extra bases drawn at random
+  std::uint64_t seed = 0;                    ///< with the number, fixes the random bases
   std::optional<std::uint64_t> trial_bound;  ///< none: automatic by size; 0: none
   /// BPSW on numbers of at least this many bits runs its Miller-Rabin and
   /// Lucas halves on two threads; 0: never.

@@ -16,8 +16,8 @@
 
 #include "io/atomic_file.hpp"
 #include "io/checksum.hpp"
-#include "io/file_lock.hpp"
 #include "io/error.hpp"
+#include "io/file_lock.hpp"
 
 namespace tk::primes {
 
@@ -28,7 +28,6 @@ int open_append(const std::string& path) {
   if (fd < 0) throw errno_error(path, "open for appending", errno);
   return fd;
 }
-
 
 std::uint64_t file_size(int fd, const std::string& path) {
   struct stat status {};
@@ -85,9 +84,10 @@ void ProofJournal::load_journal(const Warn& warn) {
     io::write_file_atomically(path, kept, path + ".tmp");
     const auto& first = journal.refused.front();
     if (warn)
-      warn(fmt::format("{}:{}: journal line {}{}; moved to {}, its record is proved again", path, first.line, first.why,
-                       journal.refused.size() > 1 ? fmt::format(" (and {} more lines)", journal.refused.size() - 1) : "",
-                       rejected_path));
+      warn(
+          fmt::format("{}:{}: journal line {}{}; moved to {}, its record is proved again", path, first.line, first.why,
+                      journal.refused.size() > 1 ? fmt::format(" (and {} more lines)", journal.refused.size() - 1) : "",
+                      rejected_path));
   } else if (journal.whole_bytes < text.size()) {
     // A torn last line (killed mid-append): cut off, so the next starts on a line of its own.
     std::error_code size_error;

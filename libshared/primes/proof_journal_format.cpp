@@ -17,7 +17,7 @@ namespace {
 
 constexpr std::string_view kCheckpointMagic = "riesel-checkpoint 1";
 /// Fields riesel writes into a record; all others are the input's.
-constexpr std::array<std::string_view, 8> kOwnedFields = {"verdict", "test", "P",       "a",
+constexpr std::array<std::string_view, 8> kOwnedFields = {"verdict", "test",    "P",       "a",
                                                           "res64",   "witness", "seconds", "members"};
 
 std::string checksum_text(std::string_view bytes) { return fmt::format("{:016x}", io::fnv1a(bytes)); }
@@ -25,7 +25,8 @@ std::string checksum_text(std::string_view bytes) { return fmt::format("{:016x}"
 /// Decimal digits as riesel writes them (no sign, blanks or leading zeros), within 64 bits.
 std::optional<std::uint64_t> parse_count(std::string_view text) {
   std::uint64_t value = 0;
-  if (text.empty() || text.size() > 20 || (text.size() > 1 && text[0] == '0') || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
+  if (text.empty() || text.size() > 20 || (text.size() > 1 && text[0] == '0') ||
+      !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return std::nullopt;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;

@@ -33,7 +33,8 @@ bool reports_now(const ProofState& state, const ProofOptions& options) {
 
 /// Squares `value` (|value| < N) m times modulo N, subtracting `minus` each
 /// time; reports and honours cancellation between rounds.
-bool square_rounds_gmp(const Modulus& N, ProofState& state, std::uint64_t last, long minus, const ProofOptions& options) {
+bool square_rounds_gmp(const Modulus& N, ProofState& state, std::uint64_t last, long minus,
+                       const ProofOptions& options) {
   mpz_class square;
   for (; state.iteration < last; ++state.iteration) {
     if (reports_now(state, options)) {
@@ -53,8 +54,8 @@ bool square_rounds_gmp(const Modulus& N, ProofState& state, std::uint64_t last, 
 }
 
 template <class Squarer>
-bool square_rounds_fft(Squarer& fft, std::uint64_t& iteration, std::uint64_t last, long minus, const ProofOptions& options,
-                       bool report) {
+bool square_rounds_fft(Squarer& fft, std::uint64_t& iteration, std::uint64_t last, long minus,
+                       const ProofOptions& options, bool report) {
   for (; iteration < last; ++iteration) {
     if (report && iteration % options.report_every == 0 && iteration) {
       const bool cancelled = options.cancel && options.cancel->load(std::memory_order_relaxed);
@@ -120,7 +121,8 @@ bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long
 std::uint64_t low_64_bits(const mpz_class& value) {
   std::uint64_t low = 0;
   for (std::size_t limb = 0; limb * GMP_NUMB_BITS < 64 && limb < mpz_size(value.get_mpz_t()); ++limb)
-    low |= static_cast<std::uint64_t>(mpz_getlimbn(value.get_mpz_t(), static_cast<mp_size_t>(limb))) << (limb * GMP_NUMB_BITS);
+    low |= static_cast<std::uint64_t>(mpz_getlimbn(value.get_mpz_t(), static_cast<mp_size_t>(limb)))
+           << (limb * GMP_NUMB_BITS);
   return low;
 }
 
@@ -132,8 +134,7 @@ std::optional<ProofState> usable_resume(const ProofOptions& options, const mpz_c
   std::string why;
   if (state.iteration == 0 || state.iteration >= last)
     why = fmt::format("iteration {} is outside this proof ({} squarings)", state.iteration, last);
-  else if (state.value < 0 || state.value >= N)
-    why = "residue is not below N";
+  else if (state.value < 0 || state.value >= N) why = "residue is not below N";
   if (why.empty()) return state;
   if (options.resume_rejected) options.resume_rejected(why);
   return std::nullopt;

@@ -63,9 +63,10 @@ struct ProofResult {
   std::uint64_t parameter = 0;         ///< P (LLR) or a (Proth)
   std::uint64_t res64 = 0;             ///< low 64 bits of the last residue
   std::uint64_t iterations = 0;
-  std::size_t fft_length = 0;     ///< 0 when GMP squared
+  std::size_t fft_length = 0;       ///< 0 when GMP squared
   std::uint64_t fft_fallbacks = 0;  ///< squares the FFT failed to verify, redone by GMP
-  std::uint64_t check_restarts = 0;  ///< on the FFT: failed Gerbicz (Proth) or Jacobi (LLR) checks, redone from the last verified state
+  std::uint64_t check_restarts =
+      0;  ///< on the FFT: failed Gerbicz (Proth) or Jacobi (LLR) checks, redone from the last verified state
 };
 
 /// P for k*2^n-1 as `start` chooses it; nothing when no P up to a bound

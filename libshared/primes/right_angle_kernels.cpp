@@ -77,11 +77,17 @@ TK_INLINE void put(double* re, double* im, std::size_t at, const Point<V>& p) {
   store(im + at, p.m);
 }
 template <class V>
-TK_INLINE Point<V> operator+(const Point<V>& a, const Point<V>& b) { return {a.r + b.r, a.m + b.m}; }
+TK_INLINE Point<V> operator+(const Point<V>& a, const Point<V>& b) {
+  return {a.r + b.r, a.m + b.m};
+}
 template <class V>
-TK_INLINE Point<V> operator-(const Point<V>& a, const Point<V>& b) { return {a.r - b.r, a.m - b.m}; }
+TK_INLINE Point<V> operator-(const Point<V>& a, const Point<V>& b) {
+  return {a.r - b.r, a.m - b.m};
+}
 template <class V>
-TK_INLINE Point<V> times_i(const Point<V>& a) { return {-a.m, a.r}; }
+TK_INLINE Point<V> times_i(const Point<V>& a) {
+  return {-a.m, a.r};
+}
 // times the twiddle of slot t (1 <= t < r) at j, or by its conjugate
 template <class V>
 TK_INLINE Point<V> twiddled(const Point<V>& a, const double* twr, const double* twi, std::size_t at) {
@@ -100,7 +106,8 @@ TK_INLINE Point<V> untwiddled(const Point<V>& a, const double* twr, const double
 // the group's points are at j + s*q, s < radix, and its twiddles at
 // j + (t - 1)*q.
 template <class V, class Butterfly>
-TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begin, std::size_t end, Butterfly&& butterfly) {
+TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begin, std::size_t end,
+                                  Butterfly&& butterfly) {
   const std::size_t q = block / static_cast<std::size_t>(radix);
   for (std::size_t base = begin; base < end; base += block)
     for (std::size_t j = 0; j < q; j += kLanes<V>) butterfly(base + j, j, q);
@@ -189,7 +196,7 @@ TK_INLINE void inverse3(double* re, double* im, const double* twr, const double*
 
 template <class V>
 TK_INLINE void run_stage(const Arrays& a, const RightAngleSquarer::Stage& stage, bool forward, std::size_t begin,
-               std::size_t end) {
+                         std::size_t end) {
   const double *twr = a.twiddle_re + stage.twiddles, *twi = a.twiddle_im + stage.twiddles;
   switch (stage.radix * (forward ? 1 : -1)) {
     case 4: return forward4<V>(a.re, a.im, twr, twi, stage.block, begin, end);

@@ -24,7 +24,8 @@ bool cpu_has(RightAngleSquarer::Simd simd) {
 }
 
 int lanes_of(RightAngleSquarer::Simd simd) {
-  if (simd == RightAngleSquarer::Simd::best) simd = cpu_has(RightAngleSquarer::Simd::avx512) ? RightAngleSquarer::Simd::avx512 : RightAngleSquarer::Simd::avx2;
+  if (simd == RightAngleSquarer::Simd::best)
+    simd = cpu_has(RightAngleSquarer::Simd::avx512) ? RightAngleSquarer::Simd::avx512 : RightAngleSquarer::Simd::avx2;
   return simd == RightAngleSquarer::Simd::avx512 ? 8 : 4;
 }
 
@@ -52,7 +53,8 @@ std::vector<RightAngleSquarer::Stage> plan(std::size_t half, int lanes) {
 
 std::size_t twiddle_count(const std::vector<RightAngleSquarer::Stage>& stages) {
   std::size_t count = 0;
-  for (const auto& s : stages) count += static_cast<std::size_t>(s.radix - 1) * (s.block / static_cast<std::size_t>(s.radix));
+  for (const auto& s : stages)
+    count += static_cast<std::size_t>(s.radix - 1) * (s.block / static_cast<std::size_t>(s.radix));
   return count;
 }
 
@@ -115,22 +117,20 @@ RightAngleSquarer::~RightAngleSquarer() { std::free(buffer_); }
 
 void RightAngleSquarer::square(const double* input, double* output) {
   const right_angle::Arrays arrays = this->arrays();
-  if (lanes_ == 8)
-    right_angle::square_avx512(arrays, input, output);
-  else
-    right_angle::square_avx2(arrays, input, output);
+  if (lanes_ == 8) right_angle::square_avx512(arrays, input, output);
+  else right_angle::square_avx2(arrays, input, output);
 }
 
 void RightAngleSquarer::square_in_place() {
   const right_angle::Arrays arrays = this->arrays();
-  if (lanes_ == 8)
-    right_angle::passes_avx512(arrays);
-  else
-    right_angle::passes_avx2(arrays);
+  if (lanes_ == 8) right_angle::passes_avx512(arrays);
+  else right_angle::passes_avx2(arrays);
 }
 
 right_angle::Arrays RightAngleSquarer::arrays() const {
-  return {re_, im_, twiddle_re_, twiddle_im_, theta_cos_, theta_sin_, half_, stages_.data(), stages_.size(), inner_from_, inner_block_};
+  return {re_,         im_,   twiddle_re_,    twiddle_im_,    theta_cos_,
+          theta_sin_,  half_, stages_.data(), stages_.size(), inner_from_,
+          inner_block_};
 }
 
 }  // namespace tk::primes

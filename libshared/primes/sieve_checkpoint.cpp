@@ -1,7 +1,6 @@
 /// @file sieve_checkpoint.cpp
 #include "primes/sieve_checkpoint.hpp"
 
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -38,7 +37,8 @@ class Reader {
   std::uint64_t u64() {
     need(8);
     std::uint64_t value = 0;
-    for (int i = 0; i < 8; ++i) value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes_[pos_ + i])) << (8 * i);
+    for (int i = 0; i < 8; ++i)
+      value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes_[pos_ + i])) << (8 * i);
     pos_ += 8;
     return value;
   }
@@ -118,7 +118,8 @@ std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const st
 
   Reader whole(bytes, bytes.size(), path);
   const bool version1 = bytes.compare(0, kMagicVersion1.size(), kMagicVersion1) == 0;
-  if (bytes.size() < kMagic.size() + 8 || (!version1 && bytes.compare(0, kMagic.size(), kMagic) != 0)) throw whole.damaged();
+  if (bytes.size() < kMagic.size() + 8 || (!version1 && bytes.compare(0, kMagic.size(), kMagic) != 0))
+    throw whole.damaged();
   std::uint64_t stored = 0;
   for (std::size_t i = 0; i < 8; ++i)
     stored |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[bytes.size() - 8 + i])) << (8 * i);
@@ -129,11 +130,13 @@ std::optional<SieveCheckpoint> load_checkpoint(const std::string& path, const st
   SieveCheckpoint checkpoint;
   checkpoint.identity = in.line();
   if (checkpoint.identity != identity)
-    throw Error(fmt::format("checkpoint was written for other parameters ({}); this run is {}", checkpoint.identity, identity),
-                Location{path, 0});
+    throw Error(
+        fmt::format("checkpoint was written for other parameters ({}); this run is {}", checkpoint.identity, identity),
+        Location{path, 0});
   checkpoint.next_block = in.u64();
   checkpoint.factors_bytes = in.u64();
-  const std::uint64_t segments = (candidate_count + GeneralizedSieve::kSegmentBits - 1) / GeneralizedSieve::kSegmentBits;
+  const std::uint64_t segments =
+      (candidate_count + GeneralizedSieve::kSegmentBits - 1) / GeneralizedSieve::kSegmentBits;
   checkpoint.next_segment = version1 ? segments : in.u64();
   if (checkpoint.next_segment > segments || (checkpoint.next_segment < segments && checkpoint.next_block > 0))
     throw in.damaged();

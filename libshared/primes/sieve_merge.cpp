@@ -27,13 +27,12 @@ enum class TextKind { json_lines, csv, candidates };
 struct ShardFile {
   TextKind kind = TextKind::json_lines;
   CandidateHeader header = CandidateHeader::none;  ///< NewPGen, ABC or ABCD when kind is candidates
-  std::string header_key;               ///< the header without its depth
-  std::optional<std::uint64_t> depth;   ///< sieve bound the header records
-  std::vector<std::string> lines;       ///< candidate lines (ABCD: k values in decimal)
+  std::string header_key;                          ///< the header without its depth
+  std::optional<std::uint64_t> depth;              ///< sieve bound the header records
+  std::vector<std::string> lines;                  ///< candidate lines (ABCD: k values in decimal)
   ShardTrailer trailer;
   Location trailer_at;
 };
-
 
 ShardFile read_shard(const std::string& path) {
   io::InputFile input(path);
@@ -74,7 +73,8 @@ ShardFile read_shard(const std::string& path) {
     }
     if (shard.header == CandidateHeader::abcd) {
       const std::uint64_t delta = parse_abcd_difference(line, where);
-      if (delta == 0 || *previous_k + delta < *previous_k) throw Error("abcd difference must be positive and keep k below 2^64", where);
+      if (delta == 0 || *previous_k + delta < *previous_k)
+        throw Error("abcd difference must be positive and keep k below 2^64", where);
       previous_k = *previous_k + delta;
       shard.lines.push_back(std::to_string(*previous_k));
     } else {
@@ -82,11 +82,13 @@ ShardFile read_shard(const std::string& path) {
     }
   }
   if (!trailer)
-    throw Error("ends without the '// sieve shard K/N of ...: S candidates, complete' line that a finished --shard run "
-                "writes last: cut short, or not the output of a --shard run",
-                Location{path, input.line_number()});
+    throw Error(
+        "ends without the '// sieve shard K/N of ...: S candidates, complete' line that a finished --shard run "
+        "writes last: cut short, or not the output of a --shard run",
+        Location{path, input.line_number()});
   if (trailer->candidates != shard.lines.size())
-    throw Error(fmt::format("holds {} candidates where its last line says {}: damaged", shard.lines.size(), trailer->candidates),
+    throw Error(fmt::format("holds {} candidates where its last line says {}: damaged", shard.lines.size(),
+                            trailer->candidates),
                 shard.trailer_at);
   shard.trailer = std::move(*trailer);
   return shard;
@@ -99,21 +101,24 @@ void check_one_run(const std::vector<ShardFile>& shards, const std::vector<std::
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const ShardTrailer& trailer = shards[i].trailer;
     if (trailer.run != model.run || trailer.count != model.count)
-      throw Error(fmt::format("shard {}/{} of {}, but {} is shard {}/{} of {}: not shards of one run", trailer.index + 1,
-                              trailer.count, trailer.run, files.front(), model.index + 1, model.count, model.run),
-                  shards[i].trailer_at);
+      throw Error(
+          fmt::format("shard {}/{} of {}, but {} is shard {}/{} of {}: not shards of one run", trailer.index + 1,
+                      trailer.count, trailer.run, files.front(), model.index + 1, model.count, model.run),
+          shards[i].trailer_at);
     if (const auto other = file_of[trailer.index])
-      throw Error(fmt::format("shard {}/{} again: {} is that shard too", trailer.index + 1, trailer.count, files[*other]),
-                  shards[i].trailer_at);
+      throw Error(
+          fmt::format("shard {}/{} again: {} is that shard too", trailer.index + 1, trailer.count, files[*other]),
+          shards[i].trailer_at);
     file_of[trailer.index] = i;
   }
   std::string missing;
   for (std::size_t k = 0; k < file_of.size(); ++k)
     if (!file_of[k]) missing += fmt::format("{}{}/{}", missing.empty() ? "" : ", ", k + 1, model.count);
   if (!missing.empty())
-    throw Error(fmt::format("shard{} {} of {} missing: a merge needs every shard of the run, or it keeps candidates "
-                            "that a missing shard removes",
-                            missing.find(',') == std::string::npos ? "" : "s", missing, model.run));
+    throw Error(
+        fmt::format("shard{} {} of {} missing: a merge needs every shard of the run, or it keeps candidates "
+                    "that a missing shard removes",
+                    missing.find(',') == std::string::npos ? "" : "s", missing, model.run));
 }
 
 }  // namespace
@@ -133,7 +138,8 @@ void merge_sieve_outputs(const std::vector<std::string>& files, std::FILE* out) 
   std::unordered_map<std::string_view, std::size_t> seen;
   for (std::size_t i = 0; i < shards.size(); ++i) {
     const ShardFile& shard = shards[i];
-    if (has_content(shard) && (shard.kind != model->kind || shard.header != model->header || shard.header_key != model->header_key))
+    if (has_content(shard) &&
+        (shard.kind != model->kind || shard.header != model->header || shard.header_key != model->header_key))
       throw Error("its header does not match " + model_path + "'s: not a shard of the same run", Location{files[i], 1});
     if (shard.depth) depth = depth ? std::min(*depth, *shard.depth) : *shard.depth;
     for (const std::string& line : shard.lines) {
@@ -145,7 +151,8 @@ void merge_sieve_outputs(const std::vector<std::string>& files, std::FILE* out) 
   fmt::memory_buffer buffer;
   auto kept = [&](const std::string& line) { return seen[line] == shards.size(); };
   auto write_header = [&](std::uint64_t abcd_start) {
-    fmt::format_to(std::back_inserter(buffer), "{}\n", sieve_header_line({model->header, model->header_key, *depth, abcd_start}));
+    fmt::format_to(std::back_inserter(buffer), "{}\n",
+                   sieve_header_line({model->header, model->header_key, *depth, abcd_start}));
   };
   switch (model->kind) {
     case TextKind::json_lines: break;

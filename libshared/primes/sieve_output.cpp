@@ -20,7 +20,7 @@ namespace {
 constexpr std::uint64_t kMaxJsonInteger = std::uint64_t(1) << 53;
 constexpr std::string_view kTrailerPrefix = "// sieve shard ";
 constexpr std::string_view kTrailerEnd = ", complete";  // a trailer cut short lacks it
-constexpr std::uint64_t kMaxShards = 1000000;             // as --shard allows
+constexpr std::uint64_t kMaxShards = 1000000;           // as --shard allows
 
 Record integer_field(std::uint64_t value) {
   return value < kMaxJsonInteger ? Record(value) : Record(std::to_string(value));
@@ -56,8 +56,7 @@ void write_survivors(const GeneralizedSieve& sieve, SieveOutputFormat format, st
   const SieveSpec& spec = sieve.spec();
   if (format == SieveOutputFormat::json_lines || format == SieveOutputFormat::csv)
     write_records(sieve, format == SieveOutputFormat::csv ? io::OutputFormat::csv : io::OutputFormat::json_lines, out);
-  else
-    write_text_survivors(sieve, format, depth, out);
+  else write_text_survivors(sieve, format, depth, out);
   if (shard_count <= 1) return;
   std::uint64_t candidates = 0;
   sieve.for_each_survivor([&](std::uint64_t) { ++candidates; });
@@ -68,7 +67,8 @@ void write_survivors(const GeneralizedSieve& sieve, SieveOutputFormat format, st
 }
 
 void write_output_bytes(std::FILE* out, std::string_view bytes) {
-  if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), out) != bytes.size()) throw Error("cannot write the output");
+  if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), out) != bytes.size())
+    throw Error("cannot write the output");
 }
 
 std::string format_shard_trailer(const ShardTrailer& trailer) {
@@ -94,7 +94,8 @@ std::optional<ShardTrailer> parse_shard_trailer(std::string_view line) {
       slash > of || of + 4 >= colon || !line.substr(colon).ends_with(" candidates"))
     return std::nullopt;
   const auto index = number(line.substr(0, slash)), count = number(line.substr(slash + 1, of - slash - 1));
-  const auto candidates = number(line.substr(colon + 2, line.size() - colon - 2 - std::string_view(" candidates").size()));
+  const auto candidates =
+      number(line.substr(colon + 2, line.size() - colon - 2 - std::string_view(" candidates").size()));
   if (!index || !count || !candidates || *index < 1 || *index > *count || *count < 2 || *count > kMaxShards)
     return std::nullopt;
   return ShardTrailer{static_cast<unsigned>(*index - 1), static_cast<unsigned>(*count), *candidates,
@@ -103,7 +104,8 @@ std::optional<ShardTrailer> parse_shard_trailer(std::string_view line) {
 
 namespace {
 
-void write_text_survivors(const GeneralizedSieve& sieve, SieveOutputFormat format, std::uint64_t depth, std::FILE* out) {
+void write_text_survivors(const GeneralizedSieve& sieve, SieveOutputFormat format, std::uint64_t depth,
+                          std::FILE* out) {
   const SieveSpec& spec = sieve.spec();
   fmt::memory_buffer buffer;
   auto flush_if_full = [&] {
@@ -133,10 +135,8 @@ void write_text_survivors(const GeneralizedSieve& sieve, SieveOutputFormat forma
     std::optional<std::uint64_t> previous;
     sieve.for_each_survivor([&](std::uint64_t offset) {
       const std::uint64_t k = spec.k_at(spec.x_min + offset);
-      if (!previous)
-        header(CandidateHeader::abcd, k);
-      else
-        fmt::format_to(std::back_inserter(buffer), "{}\n", k - *previous);
+      if (!previous) header(CandidateHeader::abcd, k);
+      else fmt::format_to(std::back_inserter(buffer), "{}\n", k - *previous);
       previous = k;
       flush_if_full();
     });

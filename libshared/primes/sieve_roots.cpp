@@ -29,9 +29,7 @@ inline u32 mul32(u32 a, u32 b, u32 p, u32 p_inverse) {
   return t_high < mp_high ? r + p : r;
 }
 
-inline u32 half32(u32 a, u32 p) {
-  return (a & 1) ? static_cast<u32>((static_cast<u64>(a) + p) >> 1) : a >> 1;
-}
+inline u32 half32(u32 a, u32 p) { return (a & 1) ? static_cast<u32>((static_cast<u64>(a) + p) >> 1) : a >> 1; }
 
 inline u32 inverse32(u32 p) {  // p^-1 mod 2^32 by Newton's iteration
   u32 inverse = p;
@@ -113,7 +111,8 @@ __attribute__((target("avx512f"))) void half_power_avx512(u32* x, const u32* p, 
       const __m512i mp_high = _mm512_srli_epi64(_mm512_mul_epu32(m, vp[v]), 32);
       const __m512i t_high = _mm512_srli_epi64(t, 32);
       const __mmask8 borrow = _mm512_cmpgt_epu64_mask(mp_high, t_high);
-      vx[v] = _mm512_mask_add_epi64(_mm512_sub_epi64(t_high, mp_high), borrow, _mm512_sub_epi64(t_high, mp_high), vp[v]);
+      vx[v] =
+          _mm512_mask_add_epi64(_mm512_sub_epi64(t_high, mp_high), borrow, _mm512_sub_epi64(t_high, mp_high), vp[v]);
     }
     if ((n >> bit) & 1) {
       for (std::size_t v = 0; v < kVectors; ++v) {
@@ -179,8 +178,10 @@ void SieveRootFinder::handle_prime_dividing_step(std::uint64_t p, std::uint64_t*
     const std::uint64_t t = mont.from_form(mont.pow(half_form, e));  // 2^-e
     const std::uint64_t k_root = members_[m].c < 0 ? t : p - t;
     if (k_first_ % p == k_root)
-      throw Error(fmt::format("every candidate is divisible by {}, which divides c: choose h0 so that "
-                              "h0*2^{}{} is not divisible by it", p, e, members_[m].c < 0 ? "-1" : "+1"));
+      throw Error(
+          fmt::format("every candidate is divisible by {}, which divides c: choose h0 so that "
+                      "h0*2^{}{} is not divisible by it",
+                      p, e, members_[m].c < 0 ? "-1" : "+1"));
     roots[m] = kNoRoot;
   }
 }

@@ -43,8 +43,9 @@ class FactorsFile {
       std::fseek(file_, 0, SEEK_END);
       const long size = std::ftell(file_);
       if (size < 0 || static_cast<std::uint64_t>(size) < keep_bytes)
-        throw Error(fmt::format("the factors file is shorter ({} bytes) than the checkpoint recorded ({})", size, keep_bytes),
-                    Location{path, 0});
+        throw Error(
+            fmt::format("the factors file is shorter ({} bytes) than the checkpoint recorded ({})", size, keep_bytes),
+            Location{path, 0});
       if (::ftruncate(fileno(file_), static_cast<off_t>(keep_bytes)) != 0 || std::fseek(file_, 0, SEEK_END) != 0)
         throw Error(fmt::format("cannot truncate the factors file: {}", std::strerror(errno)), Location{path, 0});
     }
@@ -82,9 +83,11 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
   if (!options.checkpoint_path.empty()) {  // find out now, not after hours of sieving
     const std::string directory = std::filesystem::path(options.checkpoint_path).parent_path().string();
     if (::access(directory.empty() ? "." : directory.c_str(), W_OK) != 0)
-      throw Error(fmt::format("cannot write a checkpoint there: {}", std::strerror(errno)), Location{options.checkpoint_path, 0});
+      throw Error(fmt::format("cannot write a checkpoint there: {}", std::strerror(errno)),
+                  Location{options.checkpoint_path, 0});
     // Two runs on one checkpoint would overwrite each other's state.
-    lock = std::make_unique<io::FileLock>(options.checkpoint_path + ".lock", options.checkpoint_path, "this checkpoint");
+    lock =
+        std::make_unique<io::FileLock>(options.checkpoint_path + ".lock", options.checkpoint_path, "this checkpoint");
     std::error_code ignored;  // a temporary left by a killed run is only ever half a checkpoint
     std::filesystem::remove(checkpoint_temporary(options.checkpoint_path), ignored);
   }
@@ -128,7 +131,8 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
     return rate_stopped.load() || (options.stop_signal && options.stop_signal->load() != 0);
   };
   auto save_when_due = [&](Clock::time_point now) {
-    if (!options.checkpoint_path.empty() && std::chrono::duration<double>(now - last_save).count() >= options.checkpoint_seconds) {
+    if (!options.checkpoint_path.empty() &&
+        std::chrono::duration<double>(now - last_save).count() >= options.checkpoint_seconds) {
       save();
       last_save = now;
     }
@@ -156,14 +160,16 @@ SieveRunOutcome run_sieve(GeneralizedSieve& sieve, const SieveRunOptions& option
       const double done = prime_count_estimate(sieve.sieved_to()) / total;
       // Progress counts from where this process started (a resume), so the ETA is this run's.
       const double fraction = done_at_start < 1 ? (done - done_at_start) / (1 - done_at_start) : 1.0;
-      progress.update(sieve.survivors(), fraction,
-                      fmt::format("p = {}, {} left, {:.0f} removed/s", sieve.sieved_to(), sieve.survivors(), shown_rate));
+      progress.update(
+          sieve.survivors(), fraction,
+          fmt::format("p = {}, {} left, {:.0f} removed/s", sieve.sieved_to(), sieve.survivors(), shown_rate));
     }
   };
   control.after_segment = [&](std::uint64_t done, std::uint64_t segments) {
     save_when_due(Clock::now());
     if (options.progress)
-      progress.update(done, static_cast<double>(done) / static_cast<double>(segments), fmt::format("primes up to {}: segment {} of {}", sieve.small_prime_bound(), done, segments));
+      progress.update(done, static_cast<double>(done) / static_cast<double>(segments),
+                      fmt::format("primes up to {}: segment {} of {}", sieve.small_prime_bound(), done, segments));
   };
   if (!sieve.small_primes_done()) sieve.sieve_small_primes(control);
   outcome.finished = sieve.sieve_large_primes(control);

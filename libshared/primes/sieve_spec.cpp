@@ -60,7 +60,8 @@ std::vector<SieveMember> SieveSpec::members() const {
 
 std::string SieveSpec::candidates_identity() const {
   std::string text = fmt::format("form={} length={} n={} ", form_name(), length, n);
-  return text + (parametrised ? fmt::format("h0={} c={} x={}:{}", h0, c, x_min, x_max) : fmt::format("k={}:{}", x_min, x_max));
+  return text +
+         (parametrised ? fmt::format("h0={} c={} x={}:{}", h0, c, x_min, x_max) : fmt::format("k={}:{}", x_min, x_max));
 }
 
 std::string SieveSpec::identity() const { return candidates_identity() + fmt::format(" pmax={}", p_max); }
@@ -73,14 +74,15 @@ void SieveSpec::validate() const {
   if ((form == SieveForm::cc1 || form == SieveForm::cc2) && (length < 2 || length > kMaxChain))
     throw UsageError(fmt::format("--length: a chain length must be 2 to {}, not {}", kMaxChain, length));
   if (x_max < x_min)
-    throw UsageError(fmt::format("{}: the range {}:{} is empty (its end is below its start)", range_option, x_min, x_max));
+    throw UsageError(
+        fmt::format("{}: the range {}:{} is empty (its end is below its start)", range_option, x_min, x_max));
   if (!parametrised && x_min == 0) throw UsageError("--k: k must start at 1 or more");
   if (parametrised && c == 0) throw UsageError("--c: c = 0 makes every k equal to h0");
   if (static_cast<u128>(c) * x_max + h0 > UINT64_MAX)
     throw UsageError("--h0, --c and --x: the largest k, h0 + c*x, does not fit in 64 bits");
   if (x_max - x_min >= kMaxCandidates)
-    throw UsageError(fmt::format("{}: {} candidates are more than one run sieves (at most 2^36): split the range", range_option,
-                                 x_max - x_min + 1));
+    throw UsageError(fmt::format("{}: {} candidates are more than one run sieves (at most 2^36): split the range",
+                                 range_option, x_max - x_min + 1));
   if (p_max < 3) throw UsageError("--pmax: the sieve bound must be at least 3");
   if (p_max > kMaxPrime) throw UsageError("--pmax: the sieve bound must be below 2^62");
 }
@@ -107,9 +109,11 @@ void SieveSpec::check_riesel_condition() const {
     std::uint64_t power = 1;
     for (std::uint64_t i = 0; i < e % 12; ++i) power = power * 2 % 13;  // 2 has order 12 mod 13
     const std::uint64_t residue = (k_first % 13 * power + 12) % 13;
-    const bool non_residue = residue == 2 || residue == 5 || residue == 6 || residue == 7 || residue == 8 || residue == 11;
+    const bool non_residue =
+        residue == 2 || residue == 5 || residue == 6 || residue == 7 || residue == 8 || residue == 11;
     if (!non_residue)
-      throw UsageError(fmt::format("--riesel-condition: N = k*2^{}-1 is {} mod 13, so (13/N) is not -1: choose another h0", e, residue));
+      throw UsageError(fmt::format(
+          "--riesel-condition: N = k*2^{}-1 is {} mod 13, so (13/N) is not -1: choose another h0", e, residue));
   }
 }
 

@@ -21,7 +21,7 @@ struct SieveMember {
 
 struct SieveSpec {
   SieveForm form = SieveForm::twin;
-  unsigned length = 1;        ///< chain length for cc1/cc2
+  unsigned length = 1;  ///< chain length for cc1/cc2
   std::uint64_t n = 0;
   bool parametrised = false;  ///< k = h0 + c*x; otherwise x is k itself
   std::uint64_t h0 = 0;

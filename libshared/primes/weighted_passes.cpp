@@ -37,8 +37,8 @@ inline std::int64_t low_carry_estimate(const std::int64_t* z, const std::uint8_t
 // fits 64 bits. `pending` holds the `filled` (< 64) bits not yet in a
 // full limb; no branch (a limb fills at an irregular digit).
 __attribute__((always_inline)) inline HighCarry carry_body(const std::int64_t* __restrict z,
-                                                          const std::uint8_t* __restrict bits, std::size_t low_digits,
-                                                          std::size_t coefficients, std::uint64_t* __restrict high) {
+                                                           const std::uint8_t* __restrict bits, std::size_t low_digits,
+                                                           std::size_t coefficients, std::uint64_t* __restrict high) {
   std::int64_t carry = 0;
   std::uint64_t pending = 0;
   unsigned filled = 0;
@@ -65,8 +65,10 @@ __attribute__((always_inline)) inline HighCarry carry_body(const std::int64_t* _
 // only chain: an add, a shift, a subtract), then the digits weighted into
 // the transform's input (vectorised where the CPU converts int64 lanes).
 template <bool kAdd>
-__attribute__((always_inline)) inline void join_quotient(const std::int64_t* __restrict low, const mp_limb_t* __restrict q,
-                                                         const std::uint8_t* __restrict bits, const std::uint64_t* __restrict exponent,
+__attribute__((always_inline)) inline void join_quotient(const std::int64_t* __restrict low,
+                                                         const mp_limb_t* __restrict q,
+                                                         const std::uint8_t* __restrict bits,
+                                                         const std::uint64_t* __restrict exponent,
                                                          std::int64_t* __restrict joined, std::size_t low_digits) {
   for (std::size_t j = 0; j < low_digits; ++j) {
     const auto quotient = static_cast<std::int64_t>(bits_at(q, exponent[j], bits[j]));
@@ -98,8 +100,9 @@ struct Balancer {
 
 // The top digits hold only what carries in (`up`); the last takes what is
 // left, unbalanced.
-__attribute__((always_inline)) inline void balance_top(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits,
-                                                       std::size_t low_digits, std::size_t digits, std::int64_t up) {
+__attribute__((always_inline)) inline void balance_top(std::int64_t* __restrict digit,
+                                                       const std::uint8_t* __restrict bits, std::size_t low_digits,
+                                                       std::size_t digits, std::int64_t up) {
   const Balancer balancer{digit, bits};
   for (std::size_t j = low_digits; j + 1 < digits; ++j) {
     digit[j] = 0;
@@ -122,7 +125,8 @@ __attribute__((always_inline)) inline void balance(std::int64_t* __restrict digi
   std::int64_t carry[kChains] = {bottom};
   for (std::size_t i = 0; i < stretch; ++i)
     for (std::size_t c = 0; c < kChains; ++c) carry[c] = balancer.step(c * stretch + i, carry[c]);
-  for (std::size_t j = kChains * stretch; j < low_digits; ++j) carry[kChains - 1] = balancer.step(j, carry[kChains - 1]);
+  for (std::size_t j = kChains * stretch; j < low_digits; ++j)
+    carry[kChains - 1] = balancer.step(j, carry[kChains - 1]);
   for (std::size_t c = 1; c < kChains; ++c) {
     const std::size_t end = c + 1 < kChains ? (c + 1) * stretch : low_digits;
     carry[c] += balancer.absorb(c * stretch, end, carry[c - 1]);
@@ -159,7 +163,8 @@ __attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void join_quo
     const __m512i mask = _mm512_sub_epi64(_mm512_sllv_epi64(one, size), one);
     const __m512i quotient = _mm512_and_si512(_mm512_srlv_epi64(word, _mm512_and_si512(e, seven)), mask);
     const __m512i coefficient = _mm512_loadu_si512(low + j);
-    _mm512_storeu_si512(joined + j, kAdd ? _mm512_add_epi64(coefficient, quotient) : _mm512_sub_epi64(coefficient, quotient));
+    _mm512_storeu_si512(joined + j,
+                        kAdd ? _mm512_add_epi64(coefficient, quotient) : _mm512_sub_epi64(coefficient, quotient));
   }
   for (; j < low_digits; ++j) {
     const auto quotient = static_cast<std::int64_t>(bits_at(q, exponent[j], bits[j]));
@@ -210,10 +215,10 @@ __attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) std::int64_t 
 }
 
 template <bool kAdd, bool kGather>
-__attribute__((always_inline)) inline void fold_body(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits,
-                                                     const std::uint64_t* exponent, const FoldTarget& target,
-                                                     std::size_t low_digits, std::size_t digits, std::int64_t bottom,
-                                                     std::int64_t top) {
+__attribute__((always_inline)) inline void fold_body(const std::int64_t* low, const mp_limb_t* q,
+                                                     const std::uint8_t* bits, const std::uint64_t* exponent,
+                                                     const FoldTarget& target, std::size_t low_digits,
+                                                     std::size_t digits, std::int64_t bottom, std::int64_t top) {
   if constexpr (kGather) {
     join_quotient_avx512<kAdd>(low, q, bits, exponent, target.digits, low_digits);
     target.digits[0] += bottom;
@@ -225,11 +230,11 @@ __attribute__((always_inline)) inline void fold_body(const std::int64_t* low, co
   weigh(target, digits);
 }
 
-#define TK_FOLD_ARGS                                                                                         \
-  const std::int64_t *low, const mp_limb_t *q, const std::uint8_t *bits, const std::uint64_t *exponent,      \
+#define TK_FOLD_ARGS                                                                                               \
+  const std::int64_t *low, const mp_limb_t *q, const std::uint8_t *bits, const std::uint64_t *exponent,            \
       const FoldTarget &target, std::size_t low_digits, std::size_t digits, std::int64_t bottom, std::int64_t top, \
       bool add_quotient
-#define TK_FOLD_CALL(gather)                                                                                \
+#define TK_FOLD_CALL(gather)                                                                                     \
   return add_quotient ? fold_body<true, gather>(low, q, bits, exponent, target, low_digits, digits, bottom, top) \
                       : fold_body<false, gather>(low, q, bits, exponent, target, low_digits, digits, bottom, top)
 
@@ -242,7 +247,9 @@ HighCarry carry_portable(const std::int64_t* z, const std::uint8_t* bits, std::s
                          std::size_t coefficients, std::uint64_t* high) {
   return carry_body(z, bits, low_digits, coefficients, high);
 }
-__attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void fold_avx512(TK_FOLD_ARGS) { TK_FOLD_CALL(true); }
+__attribute__((target("avx512f,avx512dq,avx512vl,avx2,bmi,bmi2"))) void fold_avx512(TK_FOLD_ARGS) {
+  TK_FOLD_CALL(true);
+}
 __attribute__((target("avx2,bmi,bmi2"))) void fold_fast(TK_FOLD_ARGS) { TK_FOLD_CALL(false); }
 void fold_portable(TK_FOLD_ARGS) { TK_FOLD_CALL(false); }
 
@@ -254,7 +261,7 @@ void fold_portable(TK_FOLD_ARGS) { TK_FOLD_CALL(false); }
 HighCarry carry_into_limbs(const std::int64_t* z, const std::uint8_t* bits, std::size_t low_digits,
                            std::size_t coefficients, std::uint64_t* high) {
   return cpu::has_avx2() ? carry_fast(z, bits, low_digits, coefficients, high)
-                       : carry_portable(z, bits, low_digits, coefficients, high);
+                         : carry_portable(z, bits, low_digits, coefficients, high);
 }
 
 void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const std::uint64_t* exponent,
@@ -262,10 +269,8 @@ void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t
                  std::int64_t top, bool add_quotient) {
   if (cpu::has_avx512() && target.wide)
     fold_avx512(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
-  else if (cpu::has_avx2())
-    fold_fast(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
-  else
-    fold_portable(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
+  else if (cpu::has_avx2()) fold_fast(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
+  else fold_portable(low, q, bits, exponent, target, low_digits, digits, bottom, top, add_quotient);
 }
 
 }  // namespace tk::primes

@@ -122,7 +122,8 @@ TK_INLINE RoundedCoefficients round_with(const double* __restrict output, const 
 
 template <class V, class I, class U>
 TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re, const double* __restrict im,
-                                                     const RightAngleWeights& w, const std::uint8_t* __restrict rotation,
+                                                     const RightAngleWeights& w,
+                                                     const std::uint8_t* __restrict rotation,
                                                      std::int64_t* __restrict z, std::size_t half) {
   Rounder<V, I, U> rounder;
   for (std::size_t j = 0; j < half; j += Rounder<V, I, U>::kLanes) {
@@ -136,8 +137,8 @@ TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re
 }
 
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients round_avx512(const double* output, const double* weight,
-                                                                            const std::uint8_t* rotation, std::int64_t* z,
-                                                                            std::size_t count) {
+                                                                             const std::uint8_t* rotation,
+                                                                             std::int64_t* z, std::size_t count) {
   return round_with<v8d, v8i, v8u>(output, weight, rotation, z, count);
 }
 
@@ -153,9 +154,9 @@ RoundedCoefficients round_portable(const double* output, const double* weight, c
 }
 
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients right_angle_avx512(const double* re, const double* im,
-                                                                                  const RightAngleWeights& weights,
-                                                                                  const std::uint8_t* rotation,
-                                                                                  std::int64_t* z, std::size_t half) {
+                                                                                   const RightAngleWeights& weights,
+                                                                                   const std::uint8_t* rotation,
+                                                                                   std::int64_t* z, std::size_t half) {
   return round_right_angle_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half);
 }
 
@@ -171,14 +172,15 @@ __attribute__((target("avx2"))) RoundedCoefficients right_angle_avx2(const doubl
 RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint8_t* rotation,
                                        std::int64_t* z, std::size_t count) {
   if (cpu::has_avx512()) return round_avx512(output, weight, rotation, z, count);
-  return cpu::has_avx2() ? round_avx2(output, weight, rotation, z, count) : round_portable(output, weight, rotation, z, count);
+  return cpu::has_avx2() ? round_avx2(output, weight, rotation, z, count)
+                         : round_portable(output, weight, rotation, z, count);
 }
 
 // Only the right-angle transform's callers come here, and it needs AVX2.
 RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
                                       const std::uint8_t* rotation, std::int64_t* z, std::size_t half, bool wide) {
   return wide && cpu::has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half)
-                      : right_angle_avx2(re, im, weights, rotation, z, half);
+                                   : right_angle_avx2(re, im, weights, rotation, z, half);
 }
 
 }  // namespace tk::primes

@@ -12,8 +12,8 @@
 namespace tk::primes {
 
 struct RoundedCoefficients {
-  double worst = 0;          ///< largest |value - rounded|
-  std::uint64_t sum = 0;     ///< sum of z_j * 2^(e_j) mod 2^61 - 1, reduced
+  double worst = 0;           ///< largest |value - rounded|
+  std::uint64_t sum = 0;      ///< sum of z_j * 2^(e_j) mod 2^61 - 1, reduced
   bool out_of_range = false;  ///< some |value| >= 2^51 (or NaN): not rounded
 };
 

@@ -96,7 +96,8 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
     return;
   }
   const std::uint64_t a = q_high / k, b = q_high % k;
-  const std::int64_t top = form_.c < 0 ? static_cast<std::int64_t>(r + b) : static_cast<std::int64_t>(r) - static_cast<std::int64_t>(b);
+  const std::int64_t top =
+      form_.c < 0 ? static_cast<std::int64_t>(r + b) : static_cast<std::int64_t>(r) - static_cast<std::int64_t>(b);
   fold_into_input(top - low_carry_, static_cast<std::int64_t>(a) - static_cast<std::int64_t>(minus));
   // The folded value is P - (q - c*a)*N - minus: its residue mod p, for the
   // next square's check, follows from the square's (checked) and q's. A
@@ -111,7 +112,8 @@ void WeightedSquaring::divide_and_fold(unsigned long minus) {
 void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
   FoldTarget target{digit_.data(), input_, input_weight_.data(), nullptr, nullptr, wide_};
   if (right_angle_) {
-    target = {digit_.data(), right_angle_->real(), re_weight_.data(), right_angle_->imaginary(), im_weight_.data(), wide_};
+    target = {digit_.data(), right_angle_->real(), re_weight_.data(), right_angle_->imaginary(), im_weight_.data(),
+              wide_};
     // The transform works in place: the square's values past the digits go.
     std::fill(target.re + digits_, target.re + length_ / 2, 0.0);
     std::fill(target.im + digits_, target.im + length_ / 2, 0.0);

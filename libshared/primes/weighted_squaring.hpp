@@ -58,7 +58,7 @@ class WeightedSquaring {
   WeightedSquaring& operator=(const WeightedSquaring&) = delete;
   ~WeightedSquaring();
 
-  void load(const mpz_class& x);  ///< any x >= 0; held modulo N
+  void load(const mpz_class& x);   ///< any x >= 0; held modulo N
   void store(mpz_class& x) const;  ///< 0 <= x < N
   /// x := x^2 - minus (mod N).
   void square_minus(unsigned long minus);
@@ -102,18 +102,19 @@ class WeightedSquaring {
   // The right-angle transform's: input_weight_ times cos and sin(pi*j/L),
   // and the rounding's weights (weighted_rounding.hpp).
   std::vector<double> re_weight_, im_weight_, round_a_, round_b_, round_c_, round_d_;
-  std::vector<std::int64_t> digit_;     ///< the input's digits, for store()
-  std::vector<mp_limb_t> high_;          ///< the square's bits from 2^n up
-  std::vector<mp_limb_t> quotient_;      ///< high_ / k, zero-padded
+  std::vector<std::int64_t> digit_;  ///< the input's digits, for store()
+  std::vector<mp_limb_t> high_;      ///< the square's bits from 2^n up
+  std::vector<mp_limb_t> quotient_;  ///< high_ / k, zero-padded
   std::size_t high_limbs_ = 0;
   // FFTW's arrays, null where our transform squares in its own.
-  double* input_ = nullptr;   ///< FFTW-aligned, length_, zero past digits_
-  double* output_ = nullptr;  ///< FFTW-aligned, length_
-  void* spectrum_ = nullptr;  ///< FFTW-aligned, length_/2 + 1 complex
-  const RealFftPlans* plans_ = nullptr;                ///< FFTW's, where right_angle_ is not used
+  double* input_ = nullptr;              ///< FFTW-aligned, length_, zero past digits_
+  double* output_ = nullptr;             ///< FFTW-aligned, length_
+  void* spectrum_ = nullptr;             ///< FFTW-aligned, length_/2 + 1 complex
+  const RealFftPlans* plans_ = nullptr;  ///< FFTW's, where right_angle_ is not used
   std::unique_ptr<RightAngleSquarer> right_angle_;
   bool wide_ = true;  ///< the passes may use AVX-512 (where the CPU has it)
-  std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded (below 2^n: the fold's input); L places
+  std::vector<std::int64_t>
+      coefficient_;                  ///< the square's coefficients, rounded (below 2^n: the fold's input); L places
   std::int64_t low_carry_ = 0;       ///< floor(L / 2^n) of those below 2^n, moved into H
   std::uint64_t value_mod_p_ = 0;    ///< the input's value mod 2^61-1
   std::uint64_t square_mod_p_ = 0;   ///< its square's, from the coefficients

@@ -105,7 +105,8 @@ double seconds_for_squarings(WeightedSquaring& squarer, int count) {
 // The fastest of the candidates: each is timed in short turns, taken in
 // rotation, and judged by its best turn, which other jobs on the machine
 // disturb least (one long turn each picked the slower length at times).
-std::unique_ptr<WeightedSquaring> fastest(std::vector<std::unique_ptr<WeightedSquaring>> candidates, const mpz_class& N) {
+std::unique_ptr<WeightedSquaring> fastest(std::vector<std::unique_ptr<WeightedSquaring>> candidates,
+                                          const mpz_class& N) {
   if (candidates.size() == 1) return std::move(candidates.front());
   gmp_randclass random(gmp_randinit_default);
   random.seed(23);
@@ -136,7 +137,8 @@ std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& fo
     const bool short_length = length < kTimeFromLength;
     // Below the timed lengths: the first our transform plans (1.45 times
     // FFTW's speed at 4096 with AVX-512, bench_riesel), else FFTW's first.
-    if (short_length && !(own_transform ? RightAngleSquarer::supports(length) : fast_fft_lengths_contain(length))) continue;
+    if (short_length && !(own_transform ? RightAngleSquarer::supports(length) : fast_fft_lengths_contain(length)))
+      continue;
     const std::size_t low = low_digits_for(form.n, max_average_bits(length));
     if (2 * (low + top_digits(form, low)) - 1 > length) continue;
     // FFTW's below the timed lengths unless ours was taken there (not at AVX2 width by default)
@@ -150,8 +152,8 @@ std::unique_ptr<WeightedSquaring> WeightedSquaring::create(const SpecialForm& fo
   return chosen;
 }
 
-std::unique_ptr<WeightedSquaring> WeightedSquaring::create_with(const SpecialForm& form, std::size_t length, int digit_bits,
-                                                                Transform transform) {
+std::unique_ptr<WeightedSquaring> WeightedSquaring::create_with(const SpecialForm& form, std::size_t length,
+                                                                int digit_bits, Transform transform) {
   if (!fits_weighted_squaring(form) || digit_bits < 4 || digit_bits > 40 || length % 2 != 0) return nullptr;
   const std::size_t low = low_digits_for(form.n, digit_bits);
   if (2 * (low + top_digits(form, low)) - 1 > length) return nullptr;
@@ -164,7 +166,8 @@ std::string WeightedSquaring::transform_name() const {
   return right_angle_ ? "right-angle, " + std::to_string(right_angle_->lanes()) + " lanes" : "FFTW";
 }
 
-WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits, Transform transform)
+WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits,
+                                   Transform transform)
     : form_(form), length_(length), low_digits_(low_digits) {
   digits_ = low_digits + top_digits(form, low_digits);
   coefficients_ = 2 * digits_ - 1;

@@ -27,7 +27,8 @@ std::optional<bool> weighted_strong_probable_prime(const Modulus& N, const mpz_c
                                                    std::size_t from_bits = kFftMinBits);
 
 /// base^(N-1) == 1 (mod N) on the transform; nothing where it does not apply.
-std::optional<bool> weighted_fermat_probable_prime(const Modulus& N, const mpz_class& base, std::size_t from_bits = kFftMinBits);
+std::optional<bool> weighted_fermat_probable_prime(const Modulus& N, const mpz_class& base,
+                                                   std::size_t from_bits = kFftMinBits);
 
 /// Where the strong Lucas test's tail first reaches 0: W_1 = w, W_(r+1)
 /// = W_r^2 - 2 for N = k*2^n - 1 (N + 1 = k*2^n, as in LLR).

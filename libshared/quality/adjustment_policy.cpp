@@ -24,7 +24,8 @@ class SubTunePolicy final : public AdjustmentPolicy {
   PolicyKind kind() const override { return PolicyKind::subtune; }
   PolicyStep observe(double size) override {
     const SubTuneStep step = tuner_.observe(size);
-    return {step.decision == Decision::subtune, step.correction, step.a + step.b * static_cast<double>(step.n), step.t, step.t_crit};
+    return {step.decision == Decision::subtune, step.correction, step.a + step.b * static_cast<double>(step.n), step.t,
+            step.t_crit};
   }
   void reset() override { tuner_.reset(); }  // the t table survives the ARL's many runs
 
@@ -110,12 +111,14 @@ std::string_view policy_name(PolicyKind kind) {
 }
 
 PolicyKind parse_policy(std::string_view name) {
-  for (const PolicyKind k : {PolicyKind::none, PolicyKind::subtune, PolicyKind::shewhart, PolicyKind::ewma, PolicyKind::cusum})
+  for (const PolicyKind k :
+       {PolicyKind::none, PolicyKind::subtune, PolicyKind::shewhart, PolicyKind::ewma, PolicyKind::cusum})
     if (policy_name(k) == name) return k;
   throw Error(fmt::format("unknown policy '{}' (none, subtune, shewhart, ewma or cusum)", name));
 }
 
-std::unique_ptr<AdjustmentPolicy> make_policy(PolicyKind kind, const SubTuneSettings& subtune, const ChartSettings& charts) {
+std::unique_ptr<AdjustmentPolicy> make_policy(PolicyKind kind, const SubTuneSettings& subtune,
+                                              const ChartSettings& charts) {
   check(std::isfinite(charts.target), "the target must be finite", charts.target);
   check(charts.sigma > 0 && std::isfinite(charts.sigma), "sigma must be positive", charts.sigma);
   check(charts.shewhart_l > 0, "the Shewhart L must be positive", charts.shewhart_l);

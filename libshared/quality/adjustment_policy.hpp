@@ -23,9 +23,9 @@ PolicyKind parse_policy(std::string_view name);
 /// units of `sigma`, the in-control standard deviation of one measurement.
 struct ChartSettings {
   double target = 0, sigma = 1;
-  double shewhart_l = 3;                  ///< limits at ± L σ
-  double ewma_lambda = 0.2, ewma_l = 3;   ///< qcc's defaults; asymptotic limits ± L σ √(λ/(2 − λ))
-  double cusum_k = 0.5, cusum_h = 5;      ///< reference value and decision interval, in σ
+  double shewhart_l = 3;                 ///< limits at ± L σ
+  double ewma_lambda = 0.2, ewma_l = 3;  ///< qcc's defaults; asymptotic limits ± L σ √(λ/(2 − λ))
+  double cusum_k = 0.5, cusum_h = 5;     ///< reference value and decision interval, in σ
 };
 
 struct PolicyStep {
@@ -55,6 +55,7 @@ class AdjustmentPolicy {
 /// A fresh policy. The charts' correction moves the mean back to the target
 /// by their estimate of the shift: the point itself (Shewhart), the EWMA, or
 /// the CUSUM's μ̂ = target ± (K + C/N) (Montgomery §9.1).
-std::unique_ptr<AdjustmentPolicy> make_policy(PolicyKind kind, const SubTuneSettings& subtune, const ChartSettings& charts);
+std::unique_ptr<AdjustmentPolicy> make_policy(PolicyKind kind, const SubTuneSettings& subtune,
+                                              const ChartSettings& charts);
 
 }  // namespace tk::quality

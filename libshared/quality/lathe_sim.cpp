@@ -16,7 +16,9 @@ namespace {
 /// process, no gauge noise) leaves the others' draws unchanged.
 struct LatheNoise {
   explicit LatheNoise(const LatheSettings& s)
-      : allowance(s.allowance_sd_mm, s.seed * 4 + 1), process(s.process_sd_mm, s.seed * 4 + 2), gauge(s.gauge_sd_mm, s.seed * 4 + 3) {}
+      : allowance(s.allowance_sd_mm, s.seed * 4 + 1),
+        process(s.process_sd_mm, s.seed * 4 + 2),
+        gauge(s.gauge_sd_mm, s.seed * 4 + 3) {}
   sim::GaussianNoise allowance, process, gauge;
 };
 
@@ -26,14 +28,18 @@ void validate(const LatheSettings& s) {
   require(std::isfinite(s.nominal_mm) && std::isfinite(s.lower_mm) && std::isfinite(s.upper_mm),
           "the nominal size and the tolerance limits must be finite");
   require(s.lower_mm < s.nominal_mm && s.nominal_mm < s.upper_mm,
-          fmt::format("the tolerance band {} to {} mm must contain the nominal {} mm", s.lower_mm, s.upper_mm, s.nominal_mm));
+          fmt::format("the tolerance band {} to {} mm must contain the nominal {} mm", s.lower_mm, s.upper_mm,
+                      s.nominal_mm));
   require(s.parts >= 1, "the batch needs at least one part");
   require(std::isfinite(s.wear_mm_per_part) && std::isfinite(s.thermal_mm), "wear and thermal drift must be finite");
-  require(s.thermal_parts > 0 && std::isfinite(s.thermal_parts), fmt::format("the thermal time constant must be positive, not {} parts", s.thermal_parts));
-  require(s.allowance_mm > 0 && std::isfinite(s.allowance_mm), fmt::format("the mean allowance must be positive, not {} mm", s.allowance_mm));
+  require(s.thermal_parts > 0 && std::isfinite(s.thermal_parts),
+          fmt::format("the thermal time constant must be positive, not {} parts", s.thermal_parts));
+  require(s.allowance_mm > 0 && std::isfinite(s.allowance_mm),
+          fmt::format("the mean allowance must be positive, not {} mm", s.allowance_mm));
   for (const double sd : {s.allowance_sd_mm, s.process_sd_mm, s.gauge_sd_mm})
     require(sd >= 0 && std::isfinite(sd), fmt::format("a standard deviation must be 0 or positive, not {}", sd));
-  require(s.feed_mm_rev > 0 && std::isfinite(s.feed_mm_rev), fmt::format("the feed must be positive, not {} mm/rev", s.feed_mm_rev));
+  require(s.feed_mm_rev > 0 && std::isfinite(s.feed_mm_rev),
+          fmt::format("the feed must be positive, not {} mm/rev", s.feed_mm_rev));
 }
 
 double in_control_sigma(const LatheSettings& s) {
@@ -53,7 +59,8 @@ LatheSettings stable_process(LatheSettings s) {
   return s;
 }
 
-LatheOutcome simulate_lathe(const LatheSettings& s, AdjustmentPolicy& policy, const std::function<void(const PartRecord&)>& each_part) {
+LatheOutcome simulate_lathe(const LatheSettings& s, AdjustmentPolicy& policy,
+                            const std::function<void(const PartRecord&)>& each_part) {
   validate(s);
   policy.reset();
   LatheNoise noise(s);
@@ -67,7 +74,8 @@ LatheOutcome simulate_lathe(const LatheSettings& s, AdjustmentPolicy& policy, co
     r.part = i;
     do r.allowance_mm = s.allowance_mm + noise.allowance.next();
     while (r.allowance_mm <= 0);
-    const double force_error = s.compensate_force ? 0.0 : s.force_model.error_at(r.allowance_mm, s.feed_mm_rev) - mean_force_error;
+    const double force_error =
+        s.compensate_force ? 0.0 : s.force_model.error_at(r.allowance_mm, s.feed_mm_rev) - mean_force_error;
     const double drift = s.wear_mm_per_part * static_cast<double>(i) +
                          s.thermal_mm * -std::expm1(-static_cast<double>(i) / s.thermal_parts);
     r.size_mm = s.nominal_mm + offset + drift + force_error + noise.process.next();
@@ -93,8 +101,8 @@ LatheOutcome simulate_lathe(const LatheSettings& s, AdjustmentPolicy& policy, co
 }
 
 RunLengthEstimate average_run_length(PolicyKind kind, const SubTuneSettings& subtune, const ChartSettings& charts,
-                                     double shift_sigma, double drift_sigma_per_part, std::uint64_t runs, std::uint64_t seed,
-                                     std::uint64_t cap) {
+                                     double shift_sigma, double drift_sigma_per_part, std::uint64_t runs,
+                                     std::uint64_t seed, std::uint64_t cap) {
   require(runs >= 2, "an ARL estimate needs at least 2 runs");
   require(std::isfinite(shift_sigma) && std::isfinite(drift_sigma_per_part), "the shift and the drift must be finite");
   std::unique_ptr<AdjustmentPolicy> policy = make_policy(kind, subtune, charts);

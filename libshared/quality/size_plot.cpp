@@ -25,7 +25,8 @@ void SizePlot::write(const std::string& path, const SizePlotInfo& info) const {
   sizes.series.push_back({field_of(parts_, &Part::measured), "#9aa7b8", 1, "measured"});
   if (has_made_) sizes.series.push_back({field_of(parts_, &Part::made), "#1b1b1b", 1, "as made"});
   sizes.series.push_back({field_of(parts_, &Part::fitted), "#1f5fbf", 1.6, info.level_label});
-  TimePanel offset{.y_label = "set-up offset, mm", .series = {{field_of(parts_, &Part::offset), "#c8281e", 1.6, "sum of corrections"}},
+  TimePanel offset{.y_label = "set-up offset, mm",
+                   .series = {{field_of(parts_, &Part::offset), "#c8281e", 1.6, "sum of corrections"}},
                    .range = TimePanel::Range::symmetric};
   sim::write_time_panels_svg(path, {.title = info.title,
                                     .samples = parts_.size(),

@@ -13,7 +13,7 @@ namespace tk::quality {
 
 struct SizePlotInfo {
   std::string title;
-  std::string level_label = "regression A_T at the part";  ///< the legend of the fitted or estimated level
+  std::string level_label = "regression A_T at the part";     ///< the legend of the fitted or estimated level
   double nominal = std::numeric_limits<double>::quiet_NaN();  ///< NaN: not drawn
   double lower = std::numeric_limits<double>::quiet_NaN(), upper = std::numeric_limits<double>::quiet_NaN();
 };
@@ -24,7 +24,8 @@ class SizePlot {
   static constexpr std::size_t kMaxParts = 1000000;
 
   /// `fitted` (the line at this part, or a chart's level) and `made` (the true size, in a simulation) may be NaN.
-  void add(double part, double measured, double fitted, double offset, double made = std::numeric_limits<double>::quiet_NaN());
+  void add(double part, double measured, double fitted, double offset,
+           double made = std::numeric_limits<double>::quiet_NaN());
   bool truncated() const { return truncated_; }
   /// Writes the drawing atomically; throws tk::Error naming the file when it cannot.
   void write(const std::string& path, const SizePlotInfo& info) const;

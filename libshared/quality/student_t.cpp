@@ -12,16 +12,18 @@
 namespace tk::quality {
 
 double student_t_upper_quantile(double tail, double df) {
-  if (!(tail > 0 && tail < 0.5)) throw Error(fmt::format("a t quantile's tail probability must lie in (0, 0.5), not {}", tail));
-  if (!(df > 0) || !std::isfinite(df)) throw Error(fmt::format("a t distribution needs positive degrees of freedom, not {}", df));
+  if (!(tail > 0 && tail < 0.5))
+    throw Error(fmt::format("a t quantile's tail probability must lie in (0, 0.5), not {}", tail));
+  if (!(df > 0) || !std::isfinite(df))
+    throw Error(fmt::format("a t distribution needs positive degrees of freedom, not {}", df));
   return boost::math::quantile(boost::math::complement(boost::math::students_t_distribution<double>(df), tail));
 }
 
 StudentCriticalValues::StudentCriticalValues(double alpha, Sidedness sidedness)
     : tail_(sidedness == Sidedness::two ? alpha / 2 : alpha) {
   if (!(alpha > 0 && alpha < (sidedness == Sidedness::two ? 1.0 : 0.5)))
-    throw Error(fmt::format("alpha must lie in (0, {}) for a {}-sided test, not {}", sidedness == Sidedness::two ? 1 : 0.5,
-                            sidedness == Sidedness::two ? "two" : "one", alpha));
+    throw Error(fmt::format("alpha must lie in (0, {}) for a {}-sided test, not {}",
+                            sidedness == Sidedness::two ? 1 : 0.5, sidedness == Sidedness::two ? "two" : "one", alpha));
   normal_quantile_ = boost::math::quantile(boost::math::complement(boost::math::normal_distribution<double>(), tail_));
   // The Cornish-Fisher series (Abramowitz & Stegun 26.7.5) in powers of 1/ν.
   const double z = normal_quantile_, z2 = z * z;

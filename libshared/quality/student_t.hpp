@@ -35,9 +35,9 @@ class StudentCriticalValues {
  private:
   double compute(std::size_t df) const;
 
-  double tail_;              ///< upper-tail probability: α or α/2
-  double normal_quantile_;   ///< z at the same tail, for the series
-  double series_[4];         ///< its coefficients of 1/ν .. 1/ν⁴, which depend on z only
+  double tail_;             ///< upper-tail probability: α or α/2
+  double normal_quantile_;  ///< z at the same tail, for the series
+  double series_[4];        ///< its coefficients of 1/ν .. 1/ν⁴, which depend on z only
   mutable std::vector<double> table_;
 };
 

@@ -5,16 +5,17 @@
 namespace tk::quality {
 
 const std::vector<std::string>& subtune_step_fields() {
-  static const std::vector<std::string> fields{"run", "n", "a", "b", "s", "t", "t_crit", "df", "decision", "correction", "offset"};
+  static const std::vector<std::string> fields{"run",    "n",  "a",        "b",          "s",     "t",
+                                               "t_crit", "df", "decision", "correction", "offset"};
   return fields;
 }
 
 void subtune_step_cells(const SubTuneStep& step, std::vector<io::Cell>& row) {
   using io::Cell;
-  row.assign({Cell::integer(static_cast<long long>(step.run)), Cell::integer(static_cast<long long>(step.n)), Cell::real(step.a),
-              Cell::real(step.b), Cell::real(step.s), Cell::real(step.t), Cell::real(step.t_crit),
-              step.df > 0 ? Cell::integer(static_cast<long long>(step.df)) : Cell::real(NAN), Cell::text(decision_name(step.decision)),
-              Cell::real(step.correction), Cell::real(step.offset)});
+  row.assign({Cell::integer(static_cast<long long>(step.run)), Cell::integer(static_cast<long long>(step.n)),
+              Cell::real(step.a), Cell::real(step.b), Cell::real(step.s), Cell::real(step.t), Cell::real(step.t_crit),
+              step.df > 0 ? Cell::integer(static_cast<long long>(step.df)) : Cell::real(NAN),
+              Cell::text(decision_name(step.decision)), Cell::real(step.correction), Cell::real(step.offset)});
 }
 
 const std::vector<std::string>& chart_step_fields() {
@@ -31,20 +32,33 @@ void add_chart_step(Record& record, const PolicyStep& step, std::uint64_t parts_
 }
 
 const std::vector<std::string>& trace_fields() {
-  static const std::vector<std::string> fields{"policy", "part", "allowance", "size", "measured", "alarm", "correction", "offset"};
+  static const std::vector<std::string> fields{"policy",   "part",  "allowance",  "size",
+                                               "measured", "alarm", "correction", "offset"};
   return fields;
 }
 
 Record trace_record(std::string_view policy, const PartRecord& p) {
-  return {{"policy", std::string(policy)},         {"part", p.part},   {"allowance", p.allowance_mm},  {"size", p.size_mm},
-          {"measured", p.measured_mm}, {"alarm", p.alarm}, {"correction", p.correction_mm}, {"offset", p.offset_mm}};
+  return {
+      {"policy", std::string(policy)}, {"part", p.part},   {"allowance", p.allowance_mm},   {"size", p.size_mm},
+      {"measured", p.measured_mm},     {"alarm", p.alarm}, {"correction", p.correction_mm}, {"offset", p.offset_mm}};
 }
 
 const std::vector<std::string>& batch_summary_fields() {
-  static const std::vector<std::string> fields{
-      "policy",      "parts",        "in_tolerance_share", "mean_abs_deviation_mm", "rms_deviation_mm", "max_abs_deviation_mm",
-      "corrections", "false_alarms", "arl0",               "arl0_se",               "arl_shift",        "arl_shift_se",
-      "arl_drift",   "arl_drift_se", "sigma_mm"};
+  static const std::vector<std::string> fields{"policy",
+                                               "parts",
+                                               "in_tolerance_share",
+                                               "mean_abs_deviation_mm",
+                                               "rms_deviation_mm",
+                                               "max_abs_deviation_mm",
+                                               "corrections",
+                                               "false_alarms",
+                                               "arl0",
+                                               "arl0_se",
+                                               "arl_shift",
+                                               "arl_shift_se",
+                                               "arl_drift",
+                                               "arl_drift_se",
+                                               "sigma_mm"};
   return fields;
 }
 

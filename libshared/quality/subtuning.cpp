@@ -24,7 +24,8 @@ SubTuner::SubTuner(const SubTuneSettings& settings)
       critical_(settings.alpha, settings.alternative == Alternative::two_sided ? Sidedness::two : Sidedness::one),
       spread_floor_sq_(settings.resolution * settings.resolution / 12) {
   // Two parts always lie on their line: a spread needs three.
-  if (settings.min_parts < 3) throw Error(fmt::format("a trend test needs at least 3 parts in a run, not {}", settings.min_parts));
+  if (settings.min_parts < 3)
+    throw Error(fmt::format("a trend test needs at least 3 parts in a run, not {}", settings.min_parts));
   if (std::isinf(settings.target)) throw Error("the sub-tuning target must be finite");
   if (!(settings.resolution >= 0) || !std::isfinite(settings.resolution))
     throw Error(fmt::format("the gauge resolution must be 0 or positive, not {}", settings.resolution));

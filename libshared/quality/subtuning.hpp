@@ -30,7 +30,8 @@ struct SubTuneSettings {
   double alpha = 0.05;
   Alternative alternative = Alternative::two_sided;
   TrendStatistic statistic = TrendStatistic::slope;
-  std::size_t min_parts = 4;  ///< no decision before the run has this many parts (the paper: "after the fourth piece and on")
+  std::size_t min_parts =
+      4;  ///< no decision before the run has this many parts (the paper: "after the fourth piece and on")
   /// The gauge's resolution, mm: s (or S_N) is at least its rounding noise
   /// r/√12. 0 takes the spread as computed, so identical sizes give 0.
   double resolution = 0;
@@ -51,7 +52,7 @@ struct SubTuneStep {
   std::uint64_t n = 0;    ///< parts in the current run, this one included
   double a = 0, b = 0;    ///< the line A_T(i) = a + i b over i = 1..n
   double s = 0;           ///< s (slope) or S_N (paper)
-  double t = 0;           ///< ≥ 0, |ã − A_TN| over its standard error; +inf when the spread is 0 and the line is not flat
+  double t = 0;  ///< ≥ 0, |ã − A_TN| over its standard error; +inf when the spread is 0 and the line is not flat
   double t_crit = 0;
   std::uint64_t df = 0;
   Decision decision = Decision::insufficient;

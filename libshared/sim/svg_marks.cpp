@@ -49,7 +49,9 @@ std::string plain_number(double value, double step) {
 
 double legend_height(std::size_t rows, double font_size) { return static_cast<double>(rows) * 1.6 * font_size; }
 
-double text_width(const std::string& text, double font_size) { return 0.6 * font_size * static_cast<double>(text.size()); }
+double text_width(const std::string& text, double font_size) {
+  return 0.6 * font_size * static_cast<double>(text.size());
+}
 
 std::string svg_legend(const std::vector<LegendEntry>& entries, double x, double y, double font_size) {
   const double row = 1.6 * font_size, swatch = 2.5 * font_size;
@@ -59,18 +61,20 @@ std::string svg_legend(const std::vector<LegendEntry>& entries, double x, double
     const double middle = y + (static_cast<double>(i) + 0.5) * row;
     switch (entry.mark) {
       case LegendEntry::Mark::line:
-        svg += fmt::format("<line x1=\"{:.6g}\" y1=\"{:.6g}\" x2=\"{:.6g}\" y2=\"{:.6g}\" {}/>", x, middle, x + swatch, middle, entry.style);
+        svg += fmt::format("<line x1=\"{:.6g}\" y1=\"{:.6g}\" x2=\"{:.6g}\" y2=\"{:.6g}\" {}/>", x, middle, x + swatch,
+                           middle, entry.style);
         break;
       case LegendEntry::Mark::area:
-        svg += fmt::format("<rect x=\"{:.6g}\" y=\"{:.6g}\" width=\"{:.6g}\" height=\"{:.6g}\" {}/>", x, middle - 0.45 * font_size, swatch,
-                           0.9 * font_size, entry.style);
+        svg += fmt::format("<rect x=\"{:.6g}\" y=\"{:.6g}\" width=\"{:.6g}\" height=\"{:.6g}\" {}/>", x,
+                           middle - 0.45 * font_size, swatch, 0.9 * font_size, entry.style);
         break;
       case LegendEntry::Mark::dot:
-        svg += fmt::format("<circle cx=\"{:.6g}\" cy=\"{:.6g}\" r=\"{:.6g}\" {}/>", x + swatch / 2, middle, 0.35 * font_size, entry.style);
+        svg += fmt::format("<circle cx=\"{:.6g}\" cy=\"{:.6g}\" r=\"{:.6g}\" {}/>", x + swatch / 2, middle,
+                           0.35 * font_size, entry.style);
         break;
     }
-    svg += fmt::format("<text x=\"{:.6g}\" y=\"{:.6g}\">{}</text>\n", x + swatch + 0.6 * font_size, middle + 0.35 * font_size,
-                       xml_escape(entry.label));
+    svg += fmt::format("<text x=\"{:.6g}\" y=\"{:.6g}\">{}</text>\n", x + swatch + 0.6 * font_size,
+                       middle + 0.35 * font_size, xml_escape(entry.label));
   }
   return svg + "</g>\n";
 }
@@ -80,10 +84,13 @@ std::string svg_scale_bar(double length_mm, double units_per_mm, double x, doubl
   return fmt::format(
       "<g class=\"scale-bar\" stroke=\"black\" stroke-width=\"{4:.4g}\">"
       "<line x1=\"{0:.6g}\" y1=\"{2:.6g}\" x2=\"{1:.6g}\" y2=\"{2:.6g}\"/>"
-      "<line x1=\"{0:.6g}\" y1=\"{5:.6g}\" x2=\"{0:.6g}\" y2=\"{6:.6g}\"/><line x1=\"{1:.6g}\" y1=\"{5:.6g}\" x2=\"{1:.6g}\" y2=\"{6:.6g}\"/>"
-      "<text x=\"{7:.6g}\" y=\"{8:.6g}\" stroke=\"none\" text-anchor=\"middle\" font-family=\"sans-serif\" font-size=\"{3:.4g}\">{9} mm</text>"
+      "<line x1=\"{0:.6g}\" y1=\"{5:.6g}\" x2=\"{0:.6g}\" y2=\"{6:.6g}\"/><line x1=\"{1:.6g}\" y1=\"{5:.6g}\" "
+      "x2=\"{1:.6g}\" y2=\"{6:.6g}\"/>"
+      "<text x=\"{7:.6g}\" y=\"{8:.6g}\" stroke=\"none\" text-anchor=\"middle\" font-family=\"sans-serif\" "
+      "font-size=\"{3:.4g}\">{9} mm</text>"
       "</g>\n",
-      x, x1, y, font_size, stroke, y - tick, y + tick, (x + x1) / 2, y - 0.6 * font_size, plain_number(length_mm, length_mm));
+      x, x1, y, font_size, stroke, y - tick, y + tick, (x + x1) / 2, y - 0.6 * font_size,
+      plain_number(length_mm, length_mm));
 }
 
 }  // namespace tk::sim

@@ -87,8 +87,9 @@ std::string polyline(const TimePanelsPlot& plot, const Frame& frame, const PlotS
     flush();
   }
   if (!points.empty()) points.pop_back();
-  return fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{:g}\" stroke-linejoin=\"round\" points=\"{}\"/>\n",
-                     xml_escape(series.colour), series.width, points);
+  return fmt::format(
+      "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{:g}\" stroke-linejoin=\"round\" points=\"{}\"/>\n",
+      xml_escape(series.colour), series.width, points);
 }
 
 /// Frame, grid, tick labels, y-label, and the time labels under the last panel.
@@ -99,23 +100,27 @@ std::string axes(const Frame& frame, const std::string& y_label, double t_step, 
     double v = frame.y_min + k * frame.y_step;
     if (v > frame.y_max + frame.y_step * 1e-9) break;
     if (std::abs(v) < frame.y_step * 1e-9) v = 0;  // not 5.55e-17
-    svg += fmt::format("<line x1=\"{0}\" x2=\"{1}\" y1=\"{2:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\"/>"
-                       "<text class=\"tick\" x=\"{4}\" y=\"{5:.1f}\" text-anchor=\"end\">{6}</text>\n",
-                       kLeft, kLeft + kWidth, frame.y(v), v == 0 ? "#999" : "#ddd", kLeft - 6, frame.y(v) + 4,
-                       plain_number(v, frame.y_step));
+    svg += fmt::format(
+        "<line x1=\"{0}\" x2=\"{1}\" y1=\"{2:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\"/>"
+        "<text class=\"tick\" x=\"{4}\" y=\"{5:.1f}\" text-anchor=\"end\">{6}</text>\n",
+        kLeft, kLeft + kWidth, frame.y(v), v == 0 ? "#999" : "#ddd", kLeft - 6, frame.y(v) + 4,
+        plain_number(v, frame.y_step));
   }
   for (int k = 0;; ++k) {
     const double t = frame.t_min + k * t_step;
     if (t > frame.t_max + t_step * 1e-9) break;
-    svg += fmt::format("<line x1=\"{0:.1f}\" x2=\"{0:.1f}\" y1=\"{1}\" y2=\"{2}\" stroke=\"#ddd\"/>\n", frame.x(t), frame.top, bottom);
+    svg += fmt::format("<line x1=\"{0:.1f}\" x2=\"{0:.1f}\" y1=\"{1}\" y2=\"{2}\" stroke=\"#ddd\"/>\n", frame.x(t),
+                       frame.top, bottom);
     if (time_labels)
-      svg += fmt::format("<text class=\"tick\" x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", frame.x(t), bottom + 16,
-                         plain_number(t, t_step));
+      svg += fmt::format("<text class=\"tick\" x=\"{:.1f}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", frame.x(t),
+                         bottom + 16, plain_number(t, t_step));
   }
-  svg += fmt::format("<rect class=\"panel\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>\n", kLeft,
-                     frame.top, kWidth, frame.height);
-  svg += fmt::format("<text x=\"16\" y=\"{0:.1f}\" transform=\"rotate(-90 16 {0:.1f})\" text-anchor=\"middle\">{1}</text>\n",
-                     frame.top + frame.height / 2, xml_escape(y_label));
+  svg += fmt::format(
+      "<rect class=\"panel\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#444\"/>\n", kLeft,
+      frame.top, kWidth, frame.height);
+  svg += fmt::format(
+      "<text x=\"16\" y=\"{0:.1f}\" transform=\"rotate(-90 16 {0:.1f})\" text-anchor=\"middle\">{1}</text>\n",
+      frame.top + frame.height / 2, xml_escape(y_label));
   return svg;
 }
 
@@ -123,10 +128,12 @@ std::string level_mark(const Frame& frame, const PlotLevel& level) {
   const std::string colour = xml_escape(level.colour);
   std::string svg =
       level.high == level.low
-          ? fmt::format("<line x1=\"{0}\" x2=\"{1}\" y1=\"{2:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\" stroke-dasharray=\"6 4\"/>\n", kLeft,
-                        kLeft + kWidth, frame.y(level.low), colour)
-          : fmt::format("<rect x=\"{}\" y=\"{:.1f}\" width=\"{}\" height=\"{:.1f}\" fill=\"{}\" fill-opacity=\"0.12\"/>\n", kLeft,
-                        frame.y(level.high), kWidth, frame.y(level.low) - frame.y(level.high), colour);
+          ? fmt::format(
+                "<line x1=\"{0}\" x2=\"{1}\" y1=\"{2:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\" stroke-dasharray=\"6 4\"/>\n",
+                kLeft, kLeft + kWidth, frame.y(level.low), colour)
+          : fmt::format(
+                "<rect x=\"{}\" y=\"{:.1f}\" width=\"{}\" height=\"{:.1f}\" fill=\"{}\" fill-opacity=\"0.12\"/>\n",
+                kLeft, frame.y(level.high), kWidth, frame.y(level.low) - frame.y(level.high), colour);
   if (!level.label.empty())
     svg += fmt::format("<text x=\"{}\" y=\"{:.1f}\" text-anchor=\"end\" fill=\"{}\"{}>{}</text>\n", kLeft + kWidth - 6,
                        frame.y(level.high) - 5, colour, kHalo, xml_escape(level.label));
@@ -137,9 +144,11 @@ std::string legend(const Frame& frame, const TimePanel& panel) {
   std::string entries;
   for (const PlotSeries& series : panel.series)
     if (!series.label.empty())
-      entries += fmt::format("<tspan dx=\"{}\" fill=\"{}\">{}</tspan>", entries.empty() ? 0 : 14, xml_escape(series.colour),
-                             xml_escape(series.label));
-  return entries.empty() ? "" : fmt::format("<text x=\"{}\" y=\"{}\"{}>{}</text>\n", kLeft + 8, frame.top + 16, kHalo, entries);
+      entries += fmt::format("<tspan dx=\"{}\" fill=\"{}\">{}</tspan>", entries.empty() ? 0 : 14,
+                             xml_escape(series.colour), xml_escape(series.label));
+  return entries.empty()
+             ? ""
+             : fmt::format("<text x=\"{}\" y=\"{}\"{}>{}</text>\n", kLeft + 8, frame.top + 16, kHalo, entries);
 }
 
 }  // namespace
@@ -155,7 +164,8 @@ std::string time_panels_svg(const TimePanelsPlot& plot) {
   const std::size_t count = plot.panels.size();
   const double height = kTop + count * plot.panel_height + (count ? count - 1 : 0) * kGap + kBottom;
   std::string svg = fmt::format(
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1:g}\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1:g}\" font-family=\"sans-serif\" "
+      "font-size=\"12\">\n"
       "<title>{2}</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       "<text x=\"{3}\" y=\"24\" font-size=\"12.5\">{2}</text>\n",
       kCanvasWidth, height, xml_escape(plot.title), kLeft);
@@ -168,8 +178,8 @@ std::string time_panels_svg(const TimePanelsPlot& plot) {
     for (const PlotSeries& series : panel.series) svg += polyline(plot, frame, series);
     svg += legend(frame, panel);
   }
-  svg += fmt::format("<text x=\"{}\" y=\"{:g}\" text-anchor=\"middle\">{}</text>\n</svg>\n", kLeft + kWidth / 2, height - kBottom + 36,
-                     xml_escape(plot.time_label));
+  svg += fmt::format("<text x=\"{}\" y=\"{:g}\" text-anchor=\"middle\">{}</text>\n</svg>\n", kLeft + kWidth / 2,
+                     height - kBottom + 36, xml_escape(plot.time_label));
   return svg;
 }
 

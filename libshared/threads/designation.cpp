@@ -85,9 +85,10 @@ ToleranceZone parse_zone(std::string_view part, std::string_view text) {
   const int grade = part[0] - '0';
   const char position = part[1];
   if (!is_external_letter(position) && !is_internal_letter(position))
-    throw Error(fmt::format("designation '{}': '{}' is not a tolerance position of ISO 965-1 (e f g h for external "
-                            "threads, G H for internal ones)",
-                            printable(text), printable(std::string_view(&part[1], 1))));
+    throw Error(
+        fmt::format("designation '{}': '{}' is not a tolerance position of ISO 965-1 (e f g h for external "
+                    "threads, G H for internal ones)",
+                    printable(text), printable(std::string_view(&part[1], 1))));
   if (grade < 3 || grade > 9)
     throw Error(fmt::format("designation '{}': grade {} is outside ISO 965-1's grades 3 to 9", printable(text), grade));
   return {grade, position};
@@ -107,9 +108,10 @@ ToleranceClass parse_class(std::string_view part, std::string_view text) {
   result.pitch = parse_zone(part.substr(0, 2), text);
   result.crest = part.size() == 4 ? parse_zone(part.substr(2), text) : result.pitch;
   if (result.crest.position != result.pitch.position)
-    throw Error(fmt::format("designation '{}': the crest diameter's position '{}' differs from the pitch diameter's "
-                            "'{}' (ISO 965-1 gives one fundamental deviation per thread)",
-                            printable(text), result.crest.position, result.pitch.position));
+    throw Error(
+        fmt::format("designation '{}': the crest diameter's position '{}' differs from the pitch diameter's "
+                    "'{}' (ISO 965-1 gives one fundamental deviation per thread)",
+                    printable(text), result.crest.position, result.pitch.position));
   return result;
 }
 
@@ -130,10 +132,8 @@ std::string ToleranceClass::text() const {
 
 std::string ThreadDesignation::canonical() const {
   std::string out = fmt::format("M{}x{}", major_mm, pitch_mm);
-  if (internal && external)
-    out += fmt::format("-{}/{}", internal->text(), external->text());
-  else if (internal || external)
-    out += fmt::format("-{}", (internal ? internal : external)->text());
+  if (internal && external) out += fmt::format("-{}/{}", internal->text(), external->text());
+  else if (internal || external) out += fmt::format("-{}", (internal ? internal : external)->text());
   if (engagement == Engagement::short_s) out += "-S";
   if (engagement == Engagement::long_l) out += "-L";
   if (left_hand) out += "-LH";
@@ -155,7 +155,8 @@ ThreadDesignation parse_designation(std::string_view original) {
   if (!rest.empty() && (rest.front() == 'x' || rest.front() == 'X')) {
     rest.remove_prefix(1);
     if (rest.starts_with("Ph") || rest.starts_with("PH") || rest.starts_with("ph"))
-      throw Error(fmt::format("designation '{}': multi-start threads (Ph.. P..) are not supported", printable(original)));
+      throw Error(
+          fmt::format("designation '{}': multi-start threads (Ph.. P..) are not supported", printable(original)));
     out.pitch_mm = take_number(rest, "pitch", original);
     if (!(out.pitch_mm >= min_length_mm && out.pitch_mm <= max_pitch_mm))
       throw Error(fmt::format("designation '{}': pitch {} mm is outside [{}, {}]", printable(original), out.pitch_mm,

@@ -33,7 +33,7 @@ struct ToleranceClass {
 enum class Engagement { short_s, normal_n, long_l };
 
 struct ThreadDesignation {
-  double major_mm = 0;   ///< nominal (basic major) diameter d = D
+  double major_mm = 0;  ///< nominal (basic major) diameter d = D
   double pitch_mm = 0;
   bool left_hand = false;
   std::optional<ToleranceClass> internal;

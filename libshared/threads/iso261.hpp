@@ -13,9 +13,9 @@ namespace tk::threads {
 
 struct Iso261Size {
   double diameter_mm;
-  int choice;                 ///< 1, 2 or 3: ISO 261's column (1 preferred, then 2, then 3)
-  double coarse_pitch_mm;     ///< 0 where ISO 261 gives no coarse pitch (column-3 sizes such
-                              ///< as M5.5, M15, M25, and every diameter above 68 mm)
+  int choice;              ///< 1, 2 or 3: ISO 261's column (1 preferred, then 2, then 3)
+  double coarse_pitch_mm;  ///< 0 where ISO 261 gives no coarse pitch (column-3 sizes such
+                           ///< as M5.5, M15, M25, and every diameter above 68 mm)
   /// The fine pitches of the row in ascending order (smallest first), each once.
   /// Above 68 mm ISO 261 has no coarse pitch and all its pitches, 6 mm and 8 mm
   /// included, are listed here. Never empty.

@@ -38,12 +38,10 @@ std::optional<Micrometres> minor_diameter_tolerance(int grade, double pitch_mm);
 
 /// Td2, tolerance of the external pitch diameter, grades 3 to 9; the row is
 /// chosen by the basic major diameter d's range in the table.
-std::optional<Micrometres> external_pitch_diameter_tolerance(int grade, double major_mm,
-                                                             double pitch_mm);
+std::optional<Micrometres> external_pitch_diameter_tolerance(int grade, double major_mm, double pitch_mm);
 
 /// TD2, tolerance of the internal pitch diameter, grades 4 to 8.
-std::optional<Micrometres> internal_pitch_diameter_tolerance(int grade, double major_mm,
-                                                             double pitch_mm);
+std::optional<Micrometres> internal_pitch_diameter_tolerance(int grade, double major_mm, double pitch_mm);
 
 /// The pitches Tables 1 to 3 list (0.2 to 8 mm), ascending.
 std::span<const double> iso965_pitches();

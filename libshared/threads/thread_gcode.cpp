@@ -20,8 +20,8 @@ double round_to_tenth_micron(double value) { return std::round(value * 1e4) / 1e
 double round_up_to_tenth_micron(double value) { return std::ceil(value * 1e4) / 1e4; }
 
 struct Geometry {
-  double drive_x;    ///< the drive line's diameter
-  double safe_z;     ///< ahead of the face: where the tool goes in and out
+  double drive_x;  ///< the drive line's diameter
+  double safe_z;   ///< ahead of the face: where the tool goes in and out
   double z_start;
   double z_end;
   double direction;  ///< −1 cutting towards the chuck, +1 away from it (left hand)
@@ -37,8 +37,8 @@ Geometry geometry(const TurningPlan& plan, const ProgramSettings& s) {
   // Up to speed before the thread starts: the lead is only right at P·S.
   const double run_in = s.run_in_mm > 0 ? s.run_in_mm : std::max(3 * s.pitch_mm, synchronisation_distance(s));
   Geometry g;
-  g.drive_x = plan.external ? plan.blank_diameter + 2 * s.clearance_mm
-                            : plan.blank_diameter - 2 * internal_clearance(plan, s);
+  g.drive_x =
+      plan.external ? plan.blank_diameter + 2 * s.clearance_mm : plan.blank_diameter - 2 * internal_clearance(plan, s);
   g.safe_z = run_in;
   // Right hand: from ahead of the face towards the chuck. Left hand (same
   // spindle direction and insert): from run_in beyond the thread's inner
@@ -52,9 +52,9 @@ Geometry geometry(const TurningPlan& plan, const ProgramSettings& s) {
 void header(motion::GcodeWriter& out, const TurningPlan& plan, const ProgramSettings& s, const char* style) {
   out.comment(fmt::format("threadcalc: {} {}, {} program", s.title, plan.external ? "external" : "internal", style));
   out.comment(fmt::format("ap {} mm from the peak diameter {}; pitch diameter aimed at {}; {} passes, {} infeed",
-                     number(plan.ap), number(plan.peak_diameter), number(plan.target_pitch_diameter), plan.passes,
-                     plan.infeed == Infeed::flank ? fmt::format("{}-degree flank", number(plan.infeed_angle_deg))
-                                                  : std::string("radial")));
+                          number(plan.ap), number(plan.peak_diameter), number(plan.target_pitch_diameter), plan.passes,
+                          plan.infeed == Infeed::flank ? fmt::format("{}-degree flank", number(plan.infeed_angle_deg))
+                                                       : std::string("radial")));
   out.comment(fmt::format("{} before threading: {}; chamfer {} x 45 degrees", plan.external ? "turn" : "bore",
                           number(plan.blank_diameter), number(plan.chamfer)));
   out.line("G18 G21 G90 G94 G7", "XZ plane, mm, absolute, X as a diameter");
@@ -85,7 +85,8 @@ void validate(const ProgramSettings& s) {
   check(std::isfinite(s.pitch_mm) && s.pitch_mm > 0, "the program needs a positive pitch");
   check(std::isfinite(s.length_mm) && s.length_mm > 0 && s.length_mm <= 10000,
         fmt::format("--length: thread length {} mm is outside (0, 10000]", s.length_mm));
-  check(std::isfinite(s.rpm) && s.rpm >= 1 && s.rpm <= 100000, fmt::format("--rpm: spindle speed {} rpm is outside 1-100000", s.rpm));
+  check(std::isfinite(s.rpm) && s.rpm >= 1 && s.rpm <= 100000,
+        fmt::format("--rpm: spindle speed {} rpm is outside 1-100000", s.rpm));
   check(std::isfinite(s.clearance_mm) && s.clearance_mm > 0 && s.clearance_mm <= 100,
         fmt::format("--clearance: clearance {} mm is outside (0, 100]", s.clearance_mm));
   check(std::isfinite(s.run_in_mm) && s.run_in_mm >= 0 && s.run_in_mm <= 1000,
@@ -104,9 +105,10 @@ std::string thread_program(ProgramStyle style, const TurningPlan& plan, const Pr
     out.comment("G76 cuts at ap*sqrt[i/n]: the plan's count and final depth, not its light first pass");
   if (s.left_hand)
     out.comment(fmt::format("left hand: starts {} mm beyond the thread's inner end, in a groove at least that wide",
-                                    number(g.safe_z + plan.ap * tan_angle)));
-  out.comment(fmt::format("the Z axis takes {} mm to reach P*S and as much to stop: the thread's end needs that undercut",
-                                  number(synchronisation_distance(s))));
+                            number(g.safe_z + plan.ap * tan_angle)));
+  out.comment(
+      fmt::format("the Z axis takes {} mm to reach P*S and as much to stop: the thread's end needs that undercut",
+                  number(synchronisation_distance(s))));
   // To the safe Z first, then onto the drive line, then along it: never a
   // diagonal rapid through the face or into the bore.
   out.line(fmt::format("G0 Z{}", number(g.safe_z)));

@@ -12,16 +12,16 @@ namespace tk::threads {
 enum class ProgramStyle { g76, passes };
 
 struct ProgramSettings {
-  std::string title;            ///< the designation, written in the header comment
+  std::string title;  ///< the designation, written in the header comment
   double pitch_mm = 0;
-  double length_mm = 0;         ///< thread length, from the face at Z0 towards −Z
-  double rpm = 0;               ///< spindle speed S
-  double clearance_mm = 1;      ///< radial gap between the drive line and the blank (or bore)
+  double length_mm = 0;     ///< thread length, from the face at Z0 towards −Z
+  double rpm = 0;           ///< spindle speed S
+  double clearance_mm = 1;  ///< radial gap between the drive line and the blank (or bore)
   /// Z start ahead of the face; 0 takes 3 pitches, or more when the Z axis
   /// needs more to reach the thread's speed P·S at acceleration_mm_s2.
   double run_in_mm = 0;
   double acceleration_mm_s2 = 500;  ///< the Z axis's (gcode-pulse's default)
-  bool left_hand = false;       ///< cut from the thread's inner end out to the face
+  bool left_hand = false;           ///< cut from the thread's inner end out to the face
 };
 
 /// Spindle speed, rpm, for a cutting speed (m/min) at a diameter (mm),

@@ -12,12 +12,12 @@ namespace tk::threads {
 
 /// ISO 68-1's basic profile, mm. H is the fundamental triangle's height.
 struct BasicProfile {
-  double major = 0;       ///< d = D
-  double pitch = 0;       ///< P
-  double height = 0;      ///< H = √3/2 · P
+  double major = 0;           ///< d = D
+  double pitch = 0;           ///< P
+  double height = 0;          ///< H = √3/2 · P
   double pitch_diameter = 0;  ///< d2 = D2 = d − 3H/4
-  double minor = 0;       ///< d1 = D1 = d − 5H/4
-  double root_minor = 0;  ///< d3 = d1 − H/6, the external thread's minor at a root radius of H/6
+  double minor = 0;           ///< d1 = D1 = d − 5H/4
+  double root_minor = 0;      ///< d3 = d1 − H/6, the external thread's minor at a root radius of H/6
   double external_depth = 0;  ///< h3 = (d − d3)/2 = 17H/24
   double internal_depth = 0;  ///< H1 = (D − D1)/2 = 5H/8
   double root_radius = 0;     ///< H/6, the external root's radius that gives d3

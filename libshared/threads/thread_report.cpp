@@ -12,9 +12,10 @@ namespace {
 
 ThreadMember member(bool external, const std::optional<ToleranceClass>& written, const ThreadDesignation& d) {
   if (written) return {external, *written, true};
-  return {external,
-          external ? default_external_class(d.major_mm, d.engagement) : default_internal_class(d.major_mm, d.engagement),
-          false};
+  return {
+      external,
+      external ? default_external_class(d.major_mm, d.engagement) : default_internal_class(d.major_mm, d.engagement),
+      false};
 }
 
 double rounded(double value, int decimals) {
@@ -51,10 +52,8 @@ std::vector<ThreadMember> members_of(const ThreadDesignation& d, MemberChoice ch
       if (d.external && !d.internal)
         throw Error(fmt::format("{} is an external thread's designation, not an internal one", name));
       return {member(false, d.internal, d)};
-    case MemberChoice::both:
-      return {member(true, d.external, d), member(false, d.internal, d)};
-    case MemberChoice::from_class:
-      break;
+    case MemberChoice::both: return {member(true, d.external, d), member(false, d.internal, d)};
+    case MemberChoice::from_class: break;
   }
   std::vector<ThreadMember> members;
   const bool neither = !d.external && !d.internal;
@@ -89,8 +88,8 @@ ThreadResult evaluate(const ThreadDesignation& designation, const ThreadMember& 
   r.series = pitch_series(designation.major_mm, designation.pitch_mm);
   const std::string name = member_designation(r);
   if (r.series == PitchSeries::non_standard)
-    r.warnings.push_back(fmt::format("{}: ISO 261 lists no {} mm pitch for M{}", name, designation.pitch_mm,
-                                     designation.major_mm));
+    r.warnings.push_back(
+        fmt::format("{}: ISO 261 lists no {} mm pitch for M{}", name, designation.pitch_mm, designation.major_mm));
   else if (r.series == PitchSeries::no_iso261_size)
     r.warnings.push_back(fmt::format("{}: ISO 261 lists no {} mm diameter", name, designation.major_mm));
   else if (const char* note = iso261_pitch_note(designation.major_mm, designation.pitch_mm))
@@ -106,7 +105,8 @@ ThreadResult evaluate(const ThreadDesignation& designation, const ThreadMember& 
     computed = &r.internal->computed;
   }
   for (const ComputedNote& note : *computed)
-    r.warnings.push_back(fmt::format("{}: {} is not in ISO 965-1's tables; computed by {}", name, note.value, note.source));
+    r.warnings.push_back(
+        fmt::format("{}: {} is not in ISO 965-1's tables; computed by {}", name, note.value, note.source));
   if (!r.plan.crest_in_zone)
     r.warnings.push_back(fmt::format("{}: a full-profile insert forms the crest at {:.4f} mm, outside its zone", name,
                                      r.plan.crest_diameter));
@@ -122,11 +122,13 @@ std::string member_designation(const ThreadResult& r) {
 }
 
 std::vector<std::string> report_fields() {
-  return {"thread", "kind", "class", "d", "P", "pitch_series", "hand", "H", "d2", "d1", "d3", "root_radius",
-          "flat_major", "flat_minor",
-          "es", "Td", "Td2", "d_max", "d_min", "d2_max", "d2_min", "d3_max", "d_mid", "d2_mid", "R_min",
-          "EI", "TD1", "TD2", "D_min", "D1_min", "D1_max", "D2_min", "D2_max", "D1_mid", "D2_mid",
-          "ap", "blank", "crest", "chamfer", "run_out", "retract_angle", "passes", "passes_from", "pass_depths", "infeed", "computed"};
+  return {"thread",      "kind",        "class",  "d",       "P",           "pitch_series",  "hand",
+          "H",           "d2",          "d1",     "d3",      "root_radius", "flat_major",    "flat_minor",
+          "es",          "Td",          "Td2",    "d_max",   "d_min",       "d2_max",        "d2_min",
+          "d3_max",      "d_mid",       "d2_mid", "R_min",   "EI",          "TD1",           "TD2",
+          "D_min",       "D1_min",      "D1_max", "D2_min",  "D2_max",      "D1_mid",        "D2_mid",
+          "ap",          "blank",       "crest",  "chamfer", "run_out",     "retract_angle", "passes",
+          "passes_from", "pass_depths", "infeed", "computed"};
 }
 
 void add_fields(Record& record, const ThreadResult& r, int decimals) {

@@ -21,12 +21,13 @@ struct PassRow {
 // ranges 0.50-0.75, 0.80-1, 1.25-1.5, 1.75-2, 2.5-3, 3.5-4, 4.5-6, 8 mm with
 // 4-5, 5-6, 6-8, 8-10, 9-12, 12-15, 14-16, 15-25 passes; the lower ends. A
 // pitch between two rows takes the coarser row.
-constexpr std::array<PassRow, 8> widia_passes{{
-    {0.75, 4}, {1.0, 5}, {1.5, 6}, {2.0, 8}, {3.0, 9}, {4.0, 12}, {6.0, 14}, {8.0, 15}}};
+constexpr std::array<PassRow, 8> widia_passes{
+    {{0.75, 4}, {1.0, 5}, {1.5, 6}, {2.0, 8}, {3.0, 9}, {4.0, 12}, {6.0, 14}, {8.0, 15}}};
 
 void finish_plan(TurningPlan& plan, const TurningSettings& settings, double pitch) {
   plan.root_diameter = plan.peak_diameter + (plan.external ? -2 : 2) * plan.ap;
-  plan.chamfer = plan.ap + (std::isnan(settings.chamfer_margin_mm) ? std::min(0.25, pitch / 2) : settings.chamfer_margin_mm);
+  plan.chamfer =
+      plan.ap + (std::isnan(settings.chamfer_margin_mm) ? std::min(0.25, pitch / 2) : settings.chamfer_margin_mm);
   plan.run_out = std::isnan(settings.run_out_mm) ? 1.25 * pitch : settings.run_out_mm;
   plan.retract_angle_deg = std::atan2(plan.run_out, plan.ap) * 180 / std::numbers::pi;
   if (settings.passes > 0) {
@@ -61,7 +62,8 @@ void validate(const TurningSettings& s) {
   require(s.passes == 0 || (s.passes >= 2 && s.passes <= 100), fmt::format("passes {} is outside 2-100", s.passes));
   require(std::isfinite(s.min_last_pass_mm) && s.min_last_pass_mm >= 0,
           fmt::format("the last pass's minimum {} mm is negative or not finite", s.min_last_pass_mm));
-  require(s.spring_passes >= 0 && s.spring_passes <= 10, fmt::format("spring passes {} is outside 0-10", s.spring_passes));
+  require(s.spring_passes >= 0 && s.spring_passes <= 10,
+          fmt::format("spring passes {} is outside 0-10", s.spring_passes));
   require(std::isfinite(s.flank_angle_deg) && s.flank_angle_deg >= 0 && s.flank_angle_deg <= 30,
           fmt::format("the flank infeed angle {} is outside 0-30 degrees", s.flank_angle_deg));
   require(std::isnan(s.topping_stock_mm) || (s.topping_stock_mm >= 0 && s.topping_stock_mm <= 5),
@@ -119,8 +121,8 @@ TurningPlan plan_internal(const BasicProfile& p, const InternalLimits& l, const 
   plan.crest_diameter = plan.target_pitch_diameter - 0.5 * p.height;
   plan.crest_in_zone = plan.crest_diameter >= l.D1_min - 1e-9 && plan.crest_diameter <= l.D1_max + 1e-9;
   plan.blank_diameter = plan.crest_diameter - topping_stock(settings, p.pitch);
-  require(plan.blank_diameter > 0, fmt::format("M{}x{}: the bore before threading would be {:.4f} mm", p.major,
-                                               p.pitch, plan.blank_diameter));
+  require(plan.blank_diameter > 0,
+          fmt::format("M{}x{}: the bore before threading would be {:.4f} mm", p.major, p.pitch, plan.blank_diameter));
   finish_plan(plan, settings, p.pitch);
   return plan;
 }

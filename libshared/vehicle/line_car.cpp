@@ -6,9 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <deque>
 #include <limits>
+#include <numbers>
 
 #include "io/error.hpp"
 #include "sim/gaussian_noise.hpp"
@@ -166,12 +166,12 @@ double DriveBody::advance(double dt) {
   return std::abs(v) * dt;
 }
 
-LapResult run_laps(const Track& track, const CarParameters& car, const LapOptions& options, const Controller& controller,
-                   std::vector<TracePoint>* trace) {
+LapResult run_laps(const Track& track, const CarParameters& car, const LapOptions& options,
+                   const Controller& controller, std::vector<TracePoint>* trace) {
   validate(car, options);
   const double period = options.control_period_s > 0 ? options.control_period_s
-                        : options.latency_s > 0     ? options.latency_s
-                                                    : options.physics_step_s;
+                        : options.latency_s > 0      ? options.latency_s
+                                                     : options.physics_step_s;
   constexpr double kEps = 1e-12;
   const double length = track.length_mm();
 

@@ -35,14 +35,15 @@ using Controller = std::function<MotorCommand(const SensorReadings&)>;
 /// 65 mm wheels, a car of about 0.7 kg. The man page's LAPS section derives
 /// each value.
 struct CarParameters {
-  double wheel_base_mm = 130;     ///< distance between the wheels' contact points
-  double sensor_ahead_mm = 90;    ///< sensor bar ahead of the axle centre
-  double sensor_spacing_mm = 20;  ///< mid to left and mid to right; outer spots 3.5 sigma clear of a 19 mm line when centred
-  double spot_sigma_mm = 3;       ///< Gaussian spot of the sensor on the floor (0: a point)
-  int adc_bits = 10;              ///< 10 (Uno) or 12 (ESP32); any of 8..16 is accepted
-  double floor_counts = 40;       ///< reading over bare floor
-  double line_counts = 950;       ///< reading over the tape
-  double noise_counts = 3;        ///< Gaussian reading noise, standard deviation
+  double wheel_base_mm = 130;   ///< distance between the wheels' contact points
+  double sensor_ahead_mm = 90;  ///< sensor bar ahead of the axle centre
+  double sensor_spacing_mm =
+      20;                    ///< mid to left and mid to right; outer spots 3.5 sigma clear of a 19 mm line when centred
+  double spot_sigma_mm = 3;  ///< Gaussian spot of the sensor on the floor (0: a point)
+  int adc_bits = 10;         ///< 10 (Uno) or 12 (ESP32); any of 8..16 is accepted
+  double floor_counts = 40;  ///< reading over bare floor
+  double line_counts = 950;  ///< reading over the tape
+  double noise_counts = 3;   ///< Gaussian reading noise, standard deviation
   /// Wheel speed per command unit above the start threshold: 200 rpm at 6 V
   /// is 33 rpm/V; a duty unit is 8.4/255 V at the motor; 65 mm wheels.
   double mm_per_s_per_unit = 3.7;
@@ -83,7 +84,7 @@ class DriveBody {
   /// Moves the car by dt seconds; returns the distance the axle centre travelled.
   double advance(double dt);
   const Pose& pose() const { return pose_; }
-  double left_speed() const { return v_left_; }   ///< mm/s
+  double left_speed() const { return v_left_; }    ///< mm/s
   double right_speed() const { return v_right_; }  ///< mm/s
 
  private:
@@ -99,7 +100,8 @@ struct LapOptions {
   /// t-norm from the paper's Tables 3-4 (one loop: Uno 3.6-11.4 ms, ESP32
   /// 0.31-1.16 ms); this default is one inference of the Uno's minimum.
   double latency_s = 0.0018;
-  double control_period_s = 0;     ///< controller runs every period; 0: = latency (back to back), or the physics step if that is 0
+  double control_period_s =
+      0;  ///< controller runs every period; 0: = latency (back to back), or the physics step if that is 0
   double time_limit_s = 120;
   double physics_step_s = 0.0002;  ///< longest step; steps are also cut at sampling and command instants
   std::uint64_t seed = 1;          ///< reading noise
@@ -139,7 +141,7 @@ struct TracePoint {
 /// the axle's nearest point along the centre line, unwrapped, so going
 /// backwards undoes progress), a stop, the time limit or leaving the track.
 /// Deterministic for a given seed. Throws tk::UsageError for bad parameters.
-LapResult run_laps(const Track& track, const CarParameters& car, const LapOptions& options, const Controller& controller,
-                   std::vector<TracePoint>* trace = nullptr);
+LapResult run_laps(const Track& track, const CarParameters& car, const LapOptions& options,
+                   const Controller& controller, std::vector<TracePoint>* trace = nullptr);
 
 }  // namespace tk::vehicle

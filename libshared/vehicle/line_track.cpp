@@ -18,14 +18,15 @@ namespace tk::vehicle {
 
 namespace {
 
-
 bool within_box(Point a, Point b, Point p) {
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
 }
 
 /// Segments ab and cd touch or cross (end points included).
 bool segments_meet(Point a, Point b, Point c, Point d) {
-  const double d1 = cad::orient(c, d, a), d2 = cad::orient(c, d, b), d3 = cad::orient(a, b, c), d4 = cad::orient(a, b, d);
+  const double d1 = cad::orient(c, d, a), d2 = cad::orient(c, d, b), d3 = cad::orient(a, b, c),
+               d4 = cad::orient(a, b, d);
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
   return (d1 == 0 && within_box(c, d, a)) || (d2 == 0 && within_box(c, d, b)) || (d3 == 0 && within_box(a, b, c)) ||
          (d4 == 0 && within_box(a, b, d));
@@ -35,7 +36,8 @@ bool same_point(Point a, Point b) { return a.x == b.x && a.y == b.y; }
 
 }  // namespace
 
-Track::Track(std::vector<Point> vertices, double line_width_mm) : vertices_(std::move(vertices)), line_width_(line_width_mm) {
+Track::Track(std::vector<Point> vertices, double line_width_mm)
+    : vertices_(std::move(vertices)), line_width_(line_width_mm) {
   if (!(line_width_ > 0) || !std::isfinite(line_width_)) throw Error("line width must be a positive number of mm");
   if (vertices_.size() < 3) throw Error("a track needs at least 3 points");
   for (std::size_t i = 0; i < vertices_.size(); ++i) {
@@ -88,10 +90,8 @@ void Track::build_grid() {
       for (long cy = cy0; cy <= cy1; ++cy)
         for (long cx = cx0; cx <= cx1; ++cx) {
           const auto c = static_cast<std::size_t>(cy * grid_nx_ + cx);
-          if (pass == 0)
-            ++count[c + 1];
-          else
-            cell_items_[count[c]++] = i;
+          if (pass == 0) ++count[c + 1];
+          else cell_items_[count[c]++] = i;
         }
     }
     if (pass == 0) {
@@ -161,7 +161,8 @@ double Track::distance_within(Point p, double radius_mm) const {
   double best = radius_mm * radius_mm;
   const auto search = [&](long cx, long cy) {
     const auto c = static_cast<std::size_t>(cy * grid_nx_ + cx);
-    for (std::size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k) best = std::min(best, to_piece(p, cell_items_[k]).distance);
+    for (std::size_t k = cell_start_[c]; k < cell_start_[c + 1]; ++k)
+      best = std::min(best, to_piece(p, cell_items_[k]).distance);
   };
   // The cell holding p first: a near piece found there lets the box test skip most others.
   const long hx = static_cast<long>(std::floor((p.x - grid_origin_.x) / kCellMm));
@@ -171,8 +172,10 @@ double Track::distance_within(Point p, double radius_mm) const {
   for (long cy = cy0; cy <= cy1; ++cy)
     for (long cx = cx0; cx <= cx1; ++cx) {
       if (home && cx == hx && cy == hy) continue;
-      const double x0 = grid_origin_.x + static_cast<double>(cx) * kCellMm, y0 = grid_origin_.y + static_cast<double>(cy) * kCellMm;
-      const double gx = std::max({x0 - p.x, 0.0, p.x - x0 - kCellMm}), gy = std::max({y0 - p.y, 0.0, p.y - y0 - kCellMm});
+      const double x0 = grid_origin_.x + static_cast<double>(cx) * kCellMm,
+                   y0 = grid_origin_.y + static_cast<double>(cy) * kCellMm;
+      const double gx = std::max({x0 - p.x, 0.0, p.x - x0 - kCellMm}),
+                   gy = std::max({y0 - p.y, 0.0, p.y - y0 - kCellMm});
       if (gx * gx + gy * gy <= best) search(cx, cy);
     }
   return best < radius_mm * radius_mm ? std::sqrt(best) : std::numeric_limits<double>::infinity();
@@ -181,7 +184,8 @@ double Track::distance_within(Point p, double radius_mm) const {
 Point Track::point_at(double s) const {
   s = std::fmod(s, length_);
   if (s < 0) s += length_;
-  const auto after = std::upper_bound(pieces_.begin(), pieces_.end(), s, [](double v, const Piece& piece) { return v < piece.s0; });
+  const auto after =
+      std::upper_bound(pieces_.begin(), pieces_.end(), s, [](double v, const Piece& piece) { return v < piece.s0; });
   const Piece& piece = *std::prev(after);
   const double t = std::clamp((s - piece.s0) / piece.length, 0.0, 1.0);
   return {piece.a.x + t * (piece.b.x - piece.a.x), piece.a.y + t * (piece.b.y - piece.a.y)};
@@ -198,7 +202,8 @@ std::optional<std::pair<std::size_t, std::size_t>> Track::self_intersection() co
         if (j == i + 1 || (i == 0 && j == n - 1) || pieces_[i].vertex == pieces_[j].vertex) continue;
         if (!segments_meet(pieces_[i].a, pieces_[i].b, pieces_[j].a, pieces_[j].b)) continue;
         const std::pair<std::size_t, std::size_t> found{pieces_[i].vertex, pieces_[j].vertex};
-        if (!first || std::make_pair(found.second, found.first) < std::make_pair(first->second, first->first)) first = found;
+        if (!first || std::make_pair(found.second, found.first) < std::make_pair(first->second, first->first))
+          first = found;
       }
   return first;
 }

@@ -25,8 +25,8 @@ inline constexpr double kTapeWidthMm = 19.0;
 /// The point of the centre line nearest to a query point.
 struct Nearest {
   double distance = std::numeric_limits<double>::infinity();  ///< mm
-  double s = 0;            ///< arc length of the nearest point from the start, [0, length)
-  std::size_t piece = 0;   ///< internal piece index, a hint for the next query
+  double s = 0;           ///< arc length of the nearest point from the start, [0, length)
+  std::size_t piece = 0;  ///< internal piece index, a hint for the next query
 };
 
 class Track {
@@ -84,7 +84,8 @@ class Track {
   std::vector<Piece> pieces_;
   Point grid_origin_;
   long grid_nx_ = 0, grid_ny_ = 0;
-  std::vector<std::size_t> cell_start_;  ///< compressed rows: cell c holds cell_items_[cell_start_[c] .. cell_start_[c+1])
+  std::vector<std::size_t>
+      cell_start_;  ///< compressed rows: cell c holds cell_items_[cell_start_[c] .. cell_start_[c+1])
   std::vector<std::size_t> cell_items_;
 };
 

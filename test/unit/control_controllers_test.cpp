@@ -14,8 +14,8 @@
 
 #include "control/feed_controllers.hpp"
 #include "control/feed_drive_sim.hpp"
-#include "io/error.hpp"
 #include "feed_drive_run.hpp"
+#include "io/error.hpp"
 
 using tk::test::run_feed_drive;
 
@@ -229,7 +229,8 @@ TEST(FeedController, RejectsBadGains) {
   throws([](ControllerGains& g) { g.pid_feedforward = NAN; });
   throws([](ControllerGains& g) { g.velocity_d = -1; });
   EXPECT_THROW(parse_controller_kind("lqr"), tk::Error);
-  for (const char* name : {"smc", "sta", "pid", "ppd"}) EXPECT_STREQ(controller_name(parse_controller_kind(name)), name);
+  for (const char* name : {"smc", "sta", "pid", "ppd"})
+    EXPECT_STREQ(controller_name(parse_controller_kind(name)), name);
 }
 
 TEST(FeedDriveConfig, RejectsImpossibleRuns) {

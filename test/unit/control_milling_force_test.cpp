@@ -43,7 +43,8 @@ double brute_force(const MillingCut& c, double t) {
 
 /// The size of one tooth's force, for relative tolerances.
 double scale(const MillingCut& c) {
-  return c.axial_depth_mm * (std::max(c.ktc_n_mm2, c.krc_n_mm2) * c.feed_per_tooth_mm() + std::max(c.kte_n_mm, c.kre_n_mm));
+  return c.axial_depth_mm *
+         (std::max(c.ktc_n_mm2, c.krc_n_mm2) * c.feed_per_tooth_mm() + std::max(c.kte_n_mm, c.kre_n_mm));
 }
 
 std::vector<MillingCut> cuts() {
@@ -173,7 +174,8 @@ TEST(MillingForce, RepeatsAtTheToothPassingPeriod) {
     for (int i = 0; i < 500; ++i) {
       const double t = when(rng);
       ASSERT_NEAR(force.at(t + period), force.at(t), 1e-11 * scale(c) * c.teeth) << "teeth " << c.teeth << " t " << t;
-      biggest_difference_at_half = std::max(biggest_difference_at_half, std::abs(force.at(t + period / 2) - force.at(t)));
+      biggest_difference_at_half =
+          std::max(biggest_difference_at_half, std::abs(force.at(t + period / 2) - force.at(t)));
     }
     // ... and not at half of it: the tooth period is the smallest period
     // (but for the constant force of a four-tooth slot, below).

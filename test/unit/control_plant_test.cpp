@@ -78,8 +78,9 @@ TEST(HoldWeights, MatchLongDoubleClosedFormsAcrossTheSwitch) {
 /// and for b = 0: v = v0 + (w0 h + s h²/2)/m, x = x0 + v0 h + (w0 h²/2 + s h³/6)/m.
 AxisState analytic_step(double m, double b, double h, AxisState s0, double w0, double slope) {
   const long double M = m, H = h, W = w0, S = slope, X = s0.x, V = s0.v;
-  if (b == 0) return {static_cast<double>(X + V * H + (W * H * H / 2 + S * H * H * H / 6) / M),
-                      static_cast<double>(V + (W * H + S * H * H / 2) / M)};
+  if (b == 0)
+    return {static_cast<double>(X + V * H + (W * H * H / 2 + S * H * H * H / 6) / M),
+            static_cast<double>(V + (W * H + S * H * H / 2) / M)};
   const long double a = static_cast<long double>(b) / M, one_minus = -std::expm1(-a * H), E = std::exp(-a * H);
   const long double v = V * E + W / M * one_minus / a + S / M * (H / a - one_minus / (a * a));
   const long double x = X + V * one_minus / a + W / (M * a) * (H - one_minus / a) +
@@ -109,8 +110,10 @@ TEST(DrivePlant, OneStepMatchesTheAnalyticSolution) {
     s = start;
     plant.step(s, 40, -20, 60);
     want = analytic_step(c.m, c.b, c.h, start, 60, -80 / c.h);
-    EXPECT_NEAR(s.x, want.x, 1e-13 * (std::abs(start.x) + std::abs(want.x - start.x))) << c.m << " " << c.b << " " << c.h;
-    EXPECT_NEAR(s.v, want.v, 1e-13 * (std::abs(want.v) + std::abs(start.v) + 60 * c.h / c.m)) << c.m << " " << c.b << " " << c.h;
+    EXPECT_NEAR(s.x, want.x, 1e-13 * (std::abs(start.x) + std::abs(want.x - start.x)))
+        << c.m << " " << c.b << " " << c.h;
+    EXPECT_NEAR(s.v, want.v, 1e-13 * (std::abs(want.v) + std::abs(start.v) + 60 * c.h / c.m))
+        << c.m << " " << c.b << " " << c.h;
   }
 }
 

@@ -141,7 +141,8 @@ TEST(Reference, FiniteDifferenceDerivatives) {
 }
 
 /// The error's file and line: "path:line: message".
-void expect_error_at(const std::string& content, const std::string& suffix, std::size_t line, const std::string& fragment) {
+void expect_error_at(const std::string& content, const std::string& suffix, std::size_t line,
+                     const std::string& fragment) {
   const TempFile file(content, suffix);
   try {
     Reference::from_records(file.path());
@@ -149,18 +150,19 @@ void expect_error_at(const std::string& content, const std::string& suffix, std:
   } catch (const tk::Error& e) {
     EXPECT_EQ(e.where().file, file.path()) << e.located_message();
     EXPECT_EQ(e.where().line, line) << e.located_message();
-    EXPECT_NE(e.located_message().find(file.path() + ":" + std::to_string(line) + ":"), std::string::npos) << e.located_message();
+    EXPECT_NE(e.located_message().find(file.path() + ":" + std::to_string(line) + ":"), std::string::npos)
+        << e.located_message();
     EXPECT_NE(e.located_message().find(fragment), std::string::npos) << e.located_message();
   }
 }
 
 TEST(Reference, MalformedFilesNameFileAndLine) {
-  expect_error_at("t,x\n0,0\n1,1\n1,2\n", ".csv", 4, "increase");          // t repeats
-  expect_error_at("t,x\n0,0\n2,1\n1,2\n", ".csv", 4, "increase");          // t goes back
-  expect_error_at("t,x\n0,0\n1,abc\n", ".csv", 3, "x");                    // not a number
-  expect_error_at("t,y\n0,0\n1,1\n", ".csv", 1, "x");                      // no x column: the header says so
+  expect_error_at("t,x\n0,0\n1,1\n1,2\n", ".csv", 4, "increase");           // t repeats
+  expect_error_at("t,x\n0,0\n2,1\n1,2\n", ".csv", 4, "increase");           // t goes back
+  expect_error_at("t,x\n0,0\n1,abc\n", ".csv", 3, "x");                     // not a number
+  expect_error_at("t,y\n0,0\n1,1\n", ".csv", 1, "x");                       // no x column: the header says so
   expect_error_at("{\"t\": 0, \"x\": 0}\n{\"x\": 1}\n", ".jsonl", 2, "t");  // no t
-  expect_error_at("t,x,v\n0,0,1\n1,1,nan\n", ".csv", 3, "finite");         // a NaN velocity
+  expect_error_at("t,x,v\n0,0,1\n1,1,nan\n", ".csv", 3, "finite");          // a NaN velocity
   expect_error_at("t,x\n0,0\n1,inf\n", ".csv", 3, "finite");
   // Too few samples: named by file (there is no line to point at).
   const TempFile one("t,x\n0,1\n", ".csv");

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "control/feed_drive_sim.hpp"
-#include "io/error.hpp"
 #include "feed_drive_run.hpp"
+#include "io/error.hpp"
 
 using tk::test::run_feed_drive;
 
@@ -58,7 +58,8 @@ TEST(HighFrequencyShare, TwoTonesGiveTheAnalyticShare) {
     double total = 0, above = 0;
     for (std::size_t k = 0; k < n; ++k) {
       double re = 0, im = 0;
-      for (std::size_t i = 0; i < n; ++i) re += nyquist[i] * std::cos(kTwoPi * k * i / n), im -= nyquist[i] * std::sin(kTwoPi * k * i / n);
+      for (std::size_t i = 0; i < n; ++i)
+        re += nyquist[i] * std::cos(kTwoPi * k * i / n), im -= nyquist[i] * std::sin(kTwoPi * k * i / n);
       const double p = re * re + im * im, f = static_cast<double>(std::min(k, n - k)) / (n * T);
       total += p;
       if (f > 1000) above += p;
@@ -220,7 +221,8 @@ TEST(FeedDriveSim, EstimatesAreQuantisedDifferencedAndFiltered) {
       c.duration_s = 0.05;
       const std::vector<FeedDriveSample> s = run_feed_drive(c);
       const double T = c.period_s, q = c.encoder_mm;
-      const double av = filtered ? 1 - std::exp(-kTwoPi * 300 * T) : 1, ax = filtered ? 1 - std::exp(-kTwoPi * 150 * T) : 1;
+      const double av = filtered ? 1 - std::exp(-kTwoPi * 300 * T) : 1,
+                   ax = filtered ? 1 - std::exp(-kTwoPi * 150 * T) : 1;
       double previous = std::round(s[0].x_mm / q) * q, v_hat = 0.7, x_hat = previous, worst = 0, moved = 0;
       for (std::size_t k = 0; k < s.size(); ++k) {
         if (k > 0) {

@@ -152,7 +152,8 @@ TEST(ForceErrorFit, NoisyDataMatchLongDoubleNormalEquations) {
   const auto ref = normal_equations(points);
   const auto got = coefficients(fit.model);
   for (std::size_t j = 0; j < 6; ++j)
-    EXPECT_NEAR(got[j], static_cast<double>(ref[j]), 1e-9 * std::abs(static_cast<double>(ref[j]))) << "coefficient " << j;
+    EXPECT_NEAR(got[j], static_cast<double>(ref[j]), 1e-9 * std::abs(static_cast<double>(ref[j])))
+        << "coefficient " << j;
 
   long double mean = 0, sse = 0, sst = 0;
   for (const CalibrationPoint& p : points) mean += p.y;
@@ -263,7 +264,7 @@ TEST(ForceErrorFeed, TwoRootsChooseTheLarger) {
   ASSERT_EQ(choice.status, FeedStatus::solved);
   EXPECT_NEAR(choice.feed, 0.3, 1e-16);
   EXPECT_EQ(choice.roots_in_range, 2);
-  EXPECT_NEAR(choice.error_min, kTarget - 0.02, 1e-16);  // at the vertex f = 0.2
+  EXPECT_NEAR(choice.error_min, kTarget - 0.02, 1e-16);           // at the vertex f = 0.2
   EXPECT_NEAR(choice.error_max, kTarget + 2 * 0.4 * 0.2, 1e-16);  // at f = 0.5
   choice = feed_for_error(kTwoRoots, 1, kTarget, 0.05, 0.2);
   ASSERT_EQ(choice.status, FeedStatus::solved);
@@ -281,7 +282,7 @@ TEST(ForceErrorFeed, NoRootReportsTheReachableRange) {
   // Between the roots, where y < target throughout: the range is y at the ends.
   choice = feed_for_error(kTwoRoots, 1, kTarget, 0.15, 0.25);
   EXPECT_EQ(choice.status, FeedStatus::none);
-  EXPECT_NEAR(choice.error_min, kTarget - 0.02, 1e-16);  // the vertex 0.2 is inside
+  EXPECT_NEAR(choice.error_min, kTarget - 0.02, 1e-16);             // the vertex 0.2 is inside
   EXPECT_NEAR(choice.error_max, kTarget - 2 * 0.05 * 0.15, 1e-16);  // at either end
   choice = feed_for_error(kTwoRoots, 1, kTarget, 0.32, 0.4);
   EXPECT_EQ(choice.status, FeedStatus::none);
@@ -370,8 +371,8 @@ TEST(ForceErrorFeed, AgreesWithABruteForceScan) {
                             uniform(-0.2, 0.2),   uniform(-0.01, 0.01), uniform(-2, 2)};
     const double a = uniform(0.5, 3), f_min = uniform(0.03, 0.2), f_max = f_min + uniform(0.05, 0.4);
     // Half the targets are reached somewhere in range; the others may or may not be.
-    const double target = trial % 2 ? m.error_at(a, uniform(f_min, f_max))
-                                    : m.error_at(a, uniform(f_min, f_max)) + uniform(-0.05, 0.05);
+    const double target =
+        trial % 2 ? m.error_at(a, uniform(f_min, f_max)) : m.error_at(a, uniform(f_min, f_max)) + uniform(-0.05, 0.05);
     const FeedChoice choice = feed_for_error(m, a, target, f_min, f_max);
 
     const double h = (f_max - f_min) / kCells;

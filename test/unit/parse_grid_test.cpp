@@ -48,17 +48,17 @@ TEST(ParseGrid, BadTextAndBadRanges) {
   for (const char* text : {"", "abc", "1:2", "1:2:3:4", "1::2", ":1:1", "1:2:x", "1:2:", "nan", "inf", "1e999", "0x10",
                            "1 ", " 1", "1,2", "1:2:0.5x"})
     expect_bad(text);
-  expect_bad("1:10:0");    // step 0
-  expect_bad("1:10:-1");   // negative step
-  expect_bad("10:1:1");    // TO below FROM
+  expect_bad("1:10:0");   // step 0
+  expect_bad("1:10:-1");  // negative step
+  expect_bad("10:1:1");   // TO below FROM
   expect_bad("1:2:nan");
 }
 
 TEST(ParseGrid, TooManyValues) {
   EXPECT_EQ(parse_grid("1:10:1", "--Lambda", 10).size(), 10u);
-  expect_bad("0:10:1", 10);                 // 11 values
-  expect_bad("0:1e6:1");                    // 1000001 values, default limit 10^6
-  expect_bad("0:1:1e-300");                 // astronomically many, refused before any allocation
+  expect_bad("0:10:1", 10);  // 11 values
+  expect_bad("0:1e6:1");     // 1000001 values, default limit 10^6
+  expect_bad("0:1:1e-300");  // astronomically many, refused before any allocation
   EXPECT_EQ(parse_grid("1:1e6:1", "--Lambda").size(), 1000000u);
 }
 

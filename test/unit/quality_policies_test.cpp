@@ -24,7 +24,9 @@ double shewhart_arl(double l, double shift) {
   return 1 / (boost::math::cdf(unit, -l - shift) + boost::math::cdf(boost::math::complement(unit, l - shift)));
 }
 
-std::unique_ptr<AdjustmentPolicy> chart(PolicyKind kind, const ChartSettings& c = {}) { return make_policy(kind, {}, c); }
+std::unique_ptr<AdjustmentPolicy> chart(PolicyKind kind, const ChartSettings& c = {}) {
+  return make_policy(kind, {}, c);
+}
 
 TEST(Charts, ShewhartAlarmsBeyondLSigmaAndCorrectsByThePoint) {
   const auto p = chart(PolicyKind::shewhart, {.target = 10, .sigma = 0.01});
@@ -107,7 +109,8 @@ TEST(LatheSim, CorrectionsMoveTheFollowingParts) {
   s.parts = 6, s.wear_mm_per_part = 0.004, s.thermal_mm = 0;
   s.allowance_sd_mm = s.process_sd_mm = s.gauge_sd_mm = 0;
   const auto shewhart = make_policy(PolicyKind::shewhart, {}, {.target = 40, .sigma = 0.001});
-  const LatheOutcome out = simulate_lathe(s, *shewhart, [](const PartRecord& p) { EXPECT_NEAR(p.size_mm, 40.004, 1e-9); });
+  const LatheOutcome out =
+      simulate_lathe(s, *shewhart, [](const PartRecord& p) { EXPECT_NEAR(p.size_mm, 40.004, 1e-9); });
   EXPECT_EQ(out.corrections, 6u);
 }
 
@@ -121,7 +124,9 @@ TEST(LatheSim, InControlSigmaMatchesTheSampleSpread) {
   s.allowance_sd_mm = 0.3;
   double sum = 0, square_sum = 0;
   const auto none = make_policy(PolicyKind::none, {}, {});
-  simulate_lathe(s, *none, [&](const PartRecord& p) { sum += p.measured_mm - 40, square_sum += (p.measured_mm - 40) * (p.measured_mm - 40); });
+  simulate_lathe(s, *none, [&](const PartRecord& p) {
+    sum += p.measured_mm - 40, square_sum += (p.measured_mm - 40) * (p.measured_mm - 40);
+  });
   const double n = static_cast<double>(s.parts), sd = std::sqrt((square_sum - sum * sum / n) / (n - 1));
   // The sample sd's own relative error is about 0.16 % here (0.2 % with the quadratic term's tails).
   EXPECT_NEAR(sd, in_control_sigma(s), 0.008 * in_control_sigma(s));

@@ -65,8 +65,8 @@ TEST(StudentCritical, OneSidedPublishedValues) {
 TEST(StudentCritical, SeriesBeyondTheTableAgreesWithBoost) {
   for (const double alpha : {0.2, 0.05, 0.001, 1e-8}) {
     const StudentCriticalValues t(alpha, Sidedness::two);
-    for (const std::size_t df : {StudentCriticalValues::kTableLimit, StudentCriticalValues::kTableLimit + 1, std::size_t{100000},
-                                 std::size_t{10000000}}) {
+    for (const std::size_t df : {StudentCriticalValues::kTableLimit, StudentCriticalValues::kTableLimit + 1,
+                                 std::size_t{100000}, std::size_t{10000000}}) {
       const double exact = student_t_upper_quantile(alpha / 2, static_cast<double>(df));
       EXPECT_NEAR(t.at(df), exact, 2e-14 * exact) << "alpha " << alpha << " df " << df;
     }

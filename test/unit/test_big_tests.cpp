@@ -29,7 +29,7 @@ TEST(Modulus, DetectsRieselAndProthShapes) {
   form = detect_special_form(kbnc(3, 1000, 1));
   ASSERT_TRUE(form);
   EXPECT_EQ(form->c, 1);
-  EXPECT_FALSE(detect_special_form(kbnc(3, 1000, 5)));       // c = 5 only when hinted
+  EXPECT_FALSE(detect_special_form(kbnc(3, 1000, 5)));  // c = 5 only when hinted
   EXPECT_TRUE(detect_special_form(kbnc(3, 1000, 5), 5));
   EXPECT_FALSE(detect_special_form(mpz_class("123456789012345678901234567890")));
 }

@@ -14,8 +14,8 @@
 
 #include "io/error.hpp"
 #include "primes/candidate.hpp"
-#include "primes/number_expression.hpp"
 #include "primes/candidate_formats.hpp"
+#include "primes/number_expression.hpp"
 
 namespace {
 
@@ -107,8 +107,8 @@ Record form_record(std::uint64_t k, std::uint64_t n, const std::string& form, st
 // ------------------------------------------------------------------ probing
 
 TEST(PrimeTextProbe, RecognisesHeadersOnly) {
-  for (const char* header : {"1000000000:P:1:2:257", "1:M:1:2", "  5000000:P:1:2:1", "ABC $a*2^$b+1", "ABCD $a*2^9+1 [3]",
-                             "ABC2 $a*2^$b+1", "12:junk"})
+  for (const char* header : {"1000000000:P:1:2:257", "1:M:1:2", "  5000000:P:1:2:1", "ABC $a*2^$b+1",
+                             "ABCD $a*2^9+1 [3]", "ABC2 $a*2^$b+1", "12:junk"})
     EXPECT_NE(probe_candidate_format(header, 64), nullptr) << header;
   for (const char* other : {"k,n", "3*2^10-1", "12345", "{\"k\":3}", "ABCDE,x", "abc $a", "// comment", ":P:1:2:1", ""})
     EXPECT_EQ(probe_candidate_format(other, 64), nullptr) << other;
@@ -335,16 +335,16 @@ TEST(AbcText, MalformedHeadersAreRejected) {
 TEST(AbcText, BadDataLinesNameTheirLine) {
   const Decoded decoded = decode_text(
       "ABC $a*2^$b+1 // Sieved\n"
-      "3 100\n"            // 2 ok
-      "3\n"                // 3 too few
-      "3 100 5\n"          // 4 too many
-      "3 x\n"              // 5 not a number
-      "3 1e5\n"            // 6 not a decimal integer
-      "3 -5\n"             // 7 negative exponent
-      "3 +\n"              // 8 sign only
-      "// comment\n"       // 9 skipped
-      "\n"                 // 10 blank
-      "5 200\n");          // 11 ok
+      "3 100\n"       // 2 ok
+      "3\n"           // 3 too few
+      "3 100 5\n"     // 4 too many
+      "3 x\n"         // 5 not a number
+      "3 1e5\n"       // 6 not a decimal integer
+      "3 -5\n"        // 7 negative exponent
+      "3 +\n"         // 8 sign only
+      "// comment\n"  // 9 skipped
+      "\n"            // 10 blank
+      "5 200\n");     // 11 ok
   ASSERT_EQ(decoded.records.size(), 2u);
   EXPECT_EQ(decoded.records[1], kbnc_record(5, 2, 200, 1));
   std::vector<std::size_t> lines;
@@ -388,8 +388,8 @@ TEST(AbcText, LaterHeaderRestarts) {
 // ------------------------------------------------------------------ ABCD
 
 TEST(AbcdText, NoteExampleWithTwoBlocks) {
-  const Decoded decoded = decode_text(
-      "ABCD $a*2^1000+1 & $a*2^1000-1  [3] // Sieved to 1000000\n2\n6\nABCD $a*2^1001+1 [5]\n10\n");
+  const Decoded decoded =
+      decode_text("ABCD $a*2^1000+1 & $a*2^1000-1  [3] // Sieved to 1000000\n2\n6\nABCD $a*2^1001+1 [5]\n10\n");
   ASSERT_TRUE(decoded.errors.empty()) << decoded.errors.front().second;
   ASSERT_EQ(decoded.records.size(), 5u);
   EXPECT_EQ(decoded.records[0], form_record(3, 1000, "twin"));
@@ -457,8 +457,13 @@ TEST(PrimeTextRobustness, RandomLinesOnlyEverThrowError) {
   std::mt19937 rng(12345);
   const std::string alphabet = "0123456789 :$abczABCD&|[]/+-*^()!#%\t.xPMTSC\x01\xff";
   const char* tokens[] = {"*2^", "+1", "-1", " & ", "2*(", "-1)+1", "$a", "$b", "[", "]", ":", "//", "ABC "};
-  const char* headers[] = {"1000:P:1:2:1", "1000:T:0:2:3", "1000:1:3:2:42", "ABC $a*2^$b+1",
-                           "ABC $a*2^$b+1 & $a*2^$b-1", "ABCD $a*2^$b$c [3 10 +1]", "ABC $a^$b%$c!"};
+  const char* headers[] = {"1000:P:1:2:1",
+                           "1000:T:0:2:3",
+                           "1000:1:3:2:42",
+                           "ABC $a*2^$b+1",
+                           "ABC $a*2^$b+1 & $a*2^$b-1",
+                           "ABCD $a*2^$b$c [3 10 +1]",
+                           "ABC $a^$b%$c!"};
   const auto start = std::chrono::steady_clock::now();
   for (int round = 0; round < 3000; ++round) {
     auto decoder = probe_candidate_format(headers[round % std::size(headers)], 4096);

@@ -131,8 +131,8 @@ TEST(Canon, SpindleFollowingMovesAndRigidTapping) {
 
 TEST(Canon, AHelixOfNoRadiusIsTheLineAlongItsAxis) {
   CanonInterpreter c;
-  const auto m = canon(
-      "SET_FEED_RATE(60)\nARC_FEED(0.0000, 0.0000, 0.0000, 0.0000, 1, -2.0000, 0.0000, 0.0000, 0.0000)\n", c);
+  const auto m =
+      canon("SET_FEED_RATE(60)\nARC_FEED(0.0000, 0.0000, 0.0000, 0.0000, 1, -2.0000, 0.0000, 0.0000, 0.0000)\n", c);
   ASSERT_EQ(m.size(), 1u);
   EXPECT_EQ(m[0].kind, MotionKind::linear);
   expect_point(m[0].end, 0, 0, -2);
@@ -200,14 +200,14 @@ TEST(GcodeInterpreter, ToolLengthOffsetsAsLinuxCncAppliesThem) {
       "G53 G0 Z3\nG49\nG0 Z0\n",
       interpreter);
   ASSERT_EQ(m.size(), 8u);
-  expect_point(m[0].end, 5, 0, 0);    // X alone: Z stays
-  expect_point(m[1].end, 5, 0, 11);   // Z1 + 10
-  expect_point(m[2].end, 1, 0, 20);   // tool 7: X + 1, Z + 20
+  expect_point(m[0].end, 5, 0, 0);      // X alone: Z stays
+  expect_point(m[1].end, 5, 0, 11);     // Z1 + 10
+  expect_point(m[2].end, 1, 0, 20);     // tool 7: X + 1, Z + 20
   expect_point(m[3].center, 2, 0, 20);  // incremental centre from the start
   expect_point(m[3].end, 3, 0, 20);
-  expect_point(m[4].end, 3, 0, 21);   // G91: no offset added
-  expect_point(m[5].end, 3, 0, -2);   // G43.1 Z-2 (X keeps tool 7's, as rs274 does)
-  expect_point(m[6].end, 3, 0, 3);    // G53: the machine's Z3
+  expect_point(m[4].end, 3, 0, 21);  // G91: no offset added
+  expect_point(m[5].end, 3, 0, -2);  // G43.1 Z-2 (X keeps tool 7's, as rs274 does)
+  expect_point(m[6].end, 3, 0, 3);   // G53: the machine's Z3
   expect_point(m[7].end, 3, 0, 0);
   EXPECT_NE(gcode_test::error_of("G43 H1").find("--tool-table"), std::string::npos);
   EXPECT_EQ(gcode_test::error_of("T0 M6 G43\nG43 H0\nG0 X1"), "");

@@ -41,7 +41,8 @@ ClipperLib::Paths clipper_paths(const std::vector<Point>& corners) {
 
 Loop loop_of(const std::vector<Point>& corners) {
   Loop loop;
-  for (std::size_t i = 0; i < corners.size(); ++i) loop.segments.push_back({corners[i], corners[(i + 1) % corners.size()]});
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    loop.segments.push_back({corners[i], corners[(i + 1) % corners.size()]});
   return loop;
 }
 

@@ -17,9 +17,9 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 #include <vector>
-#include <numbers>
 
 #include "cad/drawing.hpp"
 #include "cad/dxf_reader.hpp"
@@ -49,8 +49,9 @@ bool have_ezdxf() {
 
 /// The oracle's output lines, parsed; fails the test when it does not run.
 std::vector<json> run_oracle(const std::string& arguments) {
-  const std::string command =
-      "/usr/bin/python3 '" + (tk::test::project_root() / "test" / "oracle" / "dxf_entities.py").string() + "' " + arguments;
+  const std::string command = "/usr/bin/python3 '" +
+                              (tk::test::project_root() / "test" / "oracle" / "dxf_entities.py").string() + "' " +
+                              arguments;
   std::vector<json> lines;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) {
@@ -156,8 +157,8 @@ double distance_to_polyline(Point q, const std::vector<Point>& line) {
   return best;
 }
 
-#define EXPECT_POINT(actual, expected, tolerance)          \
-  do {                                                     \
+#define EXPECT_POINT(actual, expected, tolerance)                \
+  do {                                                           \
     EXPECT_NEAR((actual).x, (expected).x, tolerance) << #actual; \
     EXPECT_NEAR((actual).y, (expected).y, tolerance) << #actual; \
   } while (0)
@@ -221,7 +222,8 @@ void compare_entity(const json& e, const std::vector<Segment>& ours, const Drawi
     };
     for (const Segment& s : ours) {
       const double t0 = parameter(s.start), t1 = parameter(s.end);
-      const double t = t0 + std::fmod(t1 - t0 + 4 * std::numbers::pi, 2 * std::numbers::pi) / 2;  // the parameter runs upwards
+      const double t =
+          t0 + std::fmod(t1 - t0 + 4 * std::numbers::pi, 2 * std::numbers::pi) / 2;  // the parameter runs upwards
       const Point mid{c.x + std::cos(t) * major.x + std::sin(t) * minor.x,
                       c.y + std::cos(t) * major.y + std::sin(t) * minor.y};
       EXPECT_LE(distance_to_segment(mid, s.start, s.end), kChordTolerance * (1 + 1e-9));
@@ -283,7 +285,9 @@ void compare_file(const std::filesystem::path& file) {
   std::vector<std::vector<Segment>> groups;
   for (const Segment& s : drawing.segments) {
     if (groups.empty() || groups.back().back().entity != s.entity) {
-      if (!groups.empty()) { EXPECT_GT(s.entity, groups.back().back().entity); }
+      if (!groups.empty()) {
+        EXPECT_GT(s.entity, groups.back().back().entity);
+      }
       groups.emplace_back();
     }
     groups.back().push_back(s);
@@ -295,7 +299,9 @@ void compare_file(const std::filesystem::path& file) {
   for (std::size_t i = 0; i < model.size(); ++i) {
     if (!skip_name(model[i]).empty() || !makes_segments(model[i])) continue;
     ASSERT_LT(next, groups.size()) << "no segments for " << model[i].dump().substr(0, 200);
-    if (same_indices) { EXPECT_EQ(groups[next].front().entity, i); }
+    if (same_indices) {
+      EXPECT_EQ(groups[next].front().entity, i);
+    }
     compare_entity(model[i], groups[next], drawing);
     ++next;
   }

@@ -7,9 +7,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
-#include <numbers>
 
 #include "cad/drawing.hpp"
 #include "cad/dxf_reader.hpp"
@@ -80,11 +80,11 @@ struct BinaryDxf {
 // ---- entities ------------------------------------------------------------
 
 TEST(DxfReader, LinesWithLayersEntityIndexAndSourceLine) {
-  const Drawing d = read(entities(
-      "0\nLINE\n8\nwalls\n10\n1.5\n20\n-2\n30\n0\n11\n4\n21\n2\n31\n0\n"  // lines 5-20
-      "0\nTEXT\n8\nnotes\n1\nhello\n"                                      // lines 21-26
-      "0\nLINE\n10\n0\n20\n0\n11\n1e3\n21\n.5\n"                           // lines 27-36
-      "0\nLINE\n8\nwalls\n10\n0\n20\n0\n11\n0\n21\n1\n"));                 // lines 37-48
+  const Drawing d =
+      read(entities("0\nLINE\n8\nwalls\n10\n1.5\n20\n-2\n30\n0\n11\n4\n21\n2\n31\n0\n"  // lines 5-20
+                    "0\nTEXT\n8\nnotes\n1\nhello\n"                                     // lines 21-26
+                    "0\nLINE\n10\n0\n20\n0\n11\n1e3\n21\n.5\n"                          // lines 27-36
+                    "0\nLINE\n8\nwalls\n10\n0\n20\n0\n11\n0\n21\n1\n"));                // lines 37-48
   ASSERT_EQ(d.segments.size(), 3u);
   expect_point(d.segments[0].start, 1.5, -2);
   expect_point(d.segments[0].end, 4, 2);
@@ -134,7 +134,8 @@ TEST(DxfReader, ArcOverHalfATurnIsTwoArcs) {
   const Drawing d = read(entities("0\nARC\n10\n1\n20\n2\n40\n3\n50\n30\n51\n290\n"));
   ASSERT_EQ(d.segments.size(), 2u);
   expect_point(d.segments[0].start, 1 + 3 * std::cos(std::numbers::pi / 6), 2 + 3 * std::sin(std::numbers::pi / 6));
-  expect_point(d.segments[1].end, 1 + 3 * std::cos(290 * std::numbers::pi / 180), 2 + 3 * std::sin(290 * std::numbers::pi / 180));
+  expect_point(d.segments[1].end, 1 + 3 * std::cos(290 * std::numbers::pi / 180),
+               2 + 3 * std::sin(290 * std::numbers::pi / 180));
   expect_point(d.segments[0].end, d.segments[1].start.x, d.segments[1].start.y, 0);
   EXPECT_NEAR(sweep(d.segments[0]) + sweep(d.segments[1]), 260 * std::numbers::pi / 180, 1e-12);
   EXPECT_LE(d.segments[0].bulge, 1);
@@ -173,10 +174,10 @@ TEST(DxfReader, CircleIsTwoHalfArcs) {
 }
 
 TEST(DxfReader, ExtrusionMinusZMirrorsArcCircleAndLwpolyline) {
-  const Drawing d = read(entities(
-      "0\nARC\n10\n1\n20\n2\n40\n1\n50\n0\n51\n90\n210\n0\n220\n0\n230\n-1\n"
-      "0\nCIRCLE\n10\n4\n20\n0\n40\n1\n210\n0.0\n220\n-0.0\n230\n-1.0\n"
-      "0\nLWPOLYLINE\n90\n2\n70\n0\n10\n1\n20\n1\n42\n0.5\n10\n3\n20\n1\n210\n0\n220\n0\n230\n-1\n"));
+  const Drawing d =
+      read(entities("0\nARC\n10\n1\n20\n2\n40\n1\n50\n0\n51\n90\n210\n0\n220\n0\n230\n-1\n"
+                    "0\nCIRCLE\n10\n4\n20\n0\n40\n1\n210\n0.0\n220\n-0.0\n230\n-1.0\n"
+                    "0\nLWPOLYLINE\n90\n2\n70\n0\n10\n1\n20\n1\n42\n0.5\n10\n3\n20\n1\n210\n0\n220\n0\n230\n-1\n"));
   ASSERT_EQ(d.segments.size(), 4u);
   // ARC: OCS centre (1,2) is WCS (-1,2); OCS 0..90 ccw is WCS 180..90 clockwise.
   expect_point(d.segments[0].start, -2, 2);
@@ -195,11 +196,11 @@ TEST(DxfReader, ExtrusionMinusZMirrorsArcCircleAndLwpolyline) {
 }
 
 TEST(DxfReader, ExtrusionOutOfTheXyPlaneIsSkipped) {
-  const Drawing d = read(entities(
-      "0\nARC\n40\n1\n50\n0\n51\n90\n210\n0\n220\n1\n230\n0\n"
-      "0\nCIRCLE\n40\n1\n210\n0.6\n220\n0\n230\n0.8\n"
-      "0\nLWPOLYLINE\n10\n0\n20\n0\n10\n1\n20\n0\n210\n1\n220\n0\n230\n0\n"
-      "0\nLINE\n11\n1\n210\n1\n220\n0\n230\n0\n"));  // LINE is in world coordinates anyway
+  const Drawing d =
+      read(entities("0\nARC\n40\n1\n50\n0\n51\n90\n210\n0\n220\n1\n230\n0\n"
+                    "0\nCIRCLE\n40\n1\n210\n0.6\n220\n0\n230\n0.8\n"
+                    "0\nLWPOLYLINE\n10\n0\n20\n0\n10\n1\n20\n0\n210\n1\n220\n0\n230\n0\n"
+                    "0\nLINE\n11\n1\n210\n1\n220\n0\n230\n0\n"));  // LINE is in world coordinates anyway
   ASSERT_EQ(d.segments.size(), 1u);
   EXPECT_EQ(d.segments[0].entity, 3u);
   EXPECT_EQ(d.entities_skipped.at("ARC (not in XY plane)"), 1u);
@@ -209,10 +210,10 @@ TEST(DxfReader, ExtrusionOutOfTheXyPlaneIsSkipped) {
 }
 
 TEST(DxfReader, LwpolylineBulgesClosedFlagAndLyingCount) {
-  const Drawing d = read(entities(
-      "0\nLWPOLYLINE\n8\np\n90\n1000000000000\n70\n1\n38\n5\n43\n0.1\n"
-      "10\n0\n20\n0\n42\n1\n10\n2\n20\n0\n40\n0.2\n41\n0.3\n10\n2\n20\n2\n42\n-0.25\n10\n0\n20\n2\n"
-      "0\nLWPOLYLINE\n10\n5\n20\n5\n10\n5\n20\n5\n10\n6\n20\n5\n"));  // open, a repeated vertex
+  const Drawing d =
+      read(entities("0\nLWPOLYLINE\n8\np\n90\n1000000000000\n70\n1\n38\n5\n43\n0.1\n"
+                    "10\n0\n20\n0\n42\n1\n10\n2\n20\n0\n40\n0.2\n41\n0.3\n10\n2\n20\n2\n42\n-0.25\n10\n0\n20\n2\n"
+                    "0\nLWPOLYLINE\n10\n5\n20\n5\n10\n5\n20\n5\n10\n6\n20\n5\n"));  // open, a repeated vertex
   ASSERT_EQ(d.segments.size(), 5u);
   expect_point(d.segments[0].start, 0, 0, 0);
   expect_point(d.segments[0].end, 2, 0, 0);
@@ -229,14 +230,14 @@ TEST(DxfReader, LwpolylineBulgesClosedFlagAndLyingCount) {
 }
 
 TEST(DxfReader, PolylineWithVerticesIsOneEntity) {
-  const Drawing d = read(entities(
-      "0\nPOLYLINE\n8\nq\n66\n1\n10\n0\n20\n0\n30\n0\n70\n1\n"  // lines 5-18
-      "0\nVERTEX\n8\nq\n10\n0\n20\n0\n42\n0.5\n"                // 19-28
-      "0\nVERTEX\n8\nq\n10\n4\n20\n0\n"                         // 29-36
-      "0\nVERTEX\n8\nq\n10\n9\n20\n9\n70\n16\n"                 // a frame control point: left out
-      "0\nVERTEX\n8\nq\n10\n4\n20\n3\n"
-      "0\nSEQEND\n"
-      "0\nLINE\n11\n1\n"));
+  const Drawing d =
+      read(entities("0\nPOLYLINE\n8\nq\n66\n1\n10\n0\n20\n0\n30\n0\n70\n1\n"  // lines 5-18
+                    "0\nVERTEX\n8\nq\n10\n0\n20\n0\n42\n0.5\n"                // 19-28
+                    "0\nVERTEX\n8\nq\n10\n4\n20\n0\n"                         // 29-36
+                    "0\nVERTEX\n8\nq\n10\n9\n20\n9\n70\n16\n"                 // a frame control point: left out
+                    "0\nVERTEX\n8\nq\n10\n4\n20\n3\n"
+                    "0\nSEQEND\n"
+                    "0\nLINE\n11\n1\n"));
   ASSERT_EQ(d.segments.size(), 4u);
   EXPECT_EQ(d.segments[0].bulge, 0.5);
   expect_point(d.segments[1].end, 4, 3, 0);
@@ -253,10 +254,10 @@ TEST(DxfReader, PolylineWithVerticesIsOneEntity) {
 }
 
 TEST(DxfReader, PolylineEndsAtTheNextEntityWithoutSeqendAndMirrors) {
-  const Drawing d = read(entities(
-      "0\nPOLYLINE\n70\n0\n210\n0\n220\n0\n230\n-1\n"
-      "0\nVERTEX\n10\n1\n20\n0\n42\n0.5\n0\nVERTEX\n10\n2\n20\n0\n"
-      "0\nCIRCLE\n40\n1\n"));
+  const Drawing d =
+      read(entities("0\nPOLYLINE\n70\n0\n210\n0\n220\n0\n230\n-1\n"
+                    "0\nVERTEX\n10\n1\n20\n0\n42\n0.5\n0\nVERTEX\n10\n2\n20\n0\n"
+                    "0\nCIRCLE\n40\n1\n"));
   ASSERT_EQ(d.segments.size(), 3u);
   expect_point(d.segments[0].start, -1, 0, 0);
   expect_point(d.segments[0].end, -2, 0, 0);
@@ -265,11 +266,11 @@ TEST(DxfReader, PolylineEndsAtTheNextEntityWithoutSeqendAndMirrors) {
 }
 
 TEST(DxfReader, ThreeDimensionalPolylinesAndMeshesAreSkipped) {
-  const Drawing d = read(entities(
-      "0\nPOLYLINE\n70\n8\n0\nVERTEX\n10\n1\n0\nVERTEX\n10\n2\n0\nSEQEND\n"
-      "0\nPOLYLINE\n70\n16\n0\nVERTEX\n10\n1\n0\nSEQEND\n"
-      "0\nPOLYLINE\n70\n64\n0\nVERTEX\n10\n1\n0\nSEQEND\n"
-      "0\nLINE\n11\n1\n"));
+  const Drawing d =
+      read(entities("0\nPOLYLINE\n70\n8\n0\nVERTEX\n10\n1\n0\nVERTEX\n10\n2\n0\nSEQEND\n"
+                    "0\nPOLYLINE\n70\n16\n0\nVERTEX\n10\n1\n0\nSEQEND\n"
+                    "0\nPOLYLINE\n70\n64\n0\nVERTEX\n10\n1\n0\nSEQEND\n"
+                    "0\nLINE\n11\n1\n"));
   ASSERT_EQ(d.segments.size(), 1u);
   EXPECT_EQ(d.segments[0].entity, 3u);
   EXPECT_EQ(d.entities_skipped.at("POLYLINE (3D)"), 1u);
@@ -280,8 +281,8 @@ TEST(DxfReader, ThreeDimensionalPolylinesAndMeshesAreSkipped) {
 TEST(DxfReader, FullEllipseIsFlattenedWithinTheTolerance) {
   DxfReadOptions options;
   options.chord_tolerance = 0.01;
-  const Drawing d = read(entities("0\nELLIPSE\n10\n1\n20\n1\n11\n2\n21\n0\n40\n0.5\n41\n0\n42\n6.283185307179586\n"),
-                         options);
+  const Drawing d =
+      read(entities("0\nELLIPSE\n10\n1\n20\n1\n11\n2\n21\n0\n40\n0.5\n41\n0\n42\n6.283185307179586\n"), options);
   ASSERT_GT(d.segments.size(), 8u);
   EXPECT_LT(d.segments.size(), 100u);
   EXPECT_EQ(d.segments.front().start.x, d.segments.back().end.x);
@@ -320,10 +321,10 @@ TEST(DxfReader, EllipticArcAndMirroredEllipse) {
 }
 
 TEST(DxfReader, RationalSplineQuarterCircle) {
-  const Drawing d = read(entities(
-      "0\nSPLINE\n8\ncurves\n70\n12\n71\n2\n72\n6\n73\n3\n74\n0\n"
-      "40\n0\n40\n0\n40\n0\n40\n1\n40\n1\n40\n1\n41\n1\n41\n0.7071067811865476\n41\n1\n"
-      "10\n1\n20\n0\n30\n0\n10\n1\n20\n1\n30\n0\n10\n0\n20\n1\n30\n0\n"));
+  const Drawing d =
+      read(entities("0\nSPLINE\n8\ncurves\n70\n12\n71\n2\n72\n6\n73\n3\n74\n0\n"
+                    "40\n0\n40\n0\n40\n0\n40\n1\n40\n1\n40\n1\n41\n1\n41\n0.7071067811865476\n41\n1\n"
+                    "10\n1\n20\n0\n30\n0\n10\n1\n20\n1\n30\n0\n10\n0\n20\n1\n30\n0\n"));
   ASSERT_GT(d.segments.size(), 4u);
   expect_point(d.segments.front().start, 1, 0);
   expect_point(d.segments.back().end, 0, 1);
@@ -340,14 +341,14 @@ TEST(DxfReader, SplineKindsAndInvalidOnes) {
   // Degree 1 through its control points; a clamped cubic without knots
   // (open uniform, as ezdxf assumes) ends on its end control points; fit
   // points only: straight chords through them.
-  const Drawing d = read(entities(
-      "0\nSPLINE\n71\n1\n40\n0\n40\n0\n40\n1\n40\n2\n40\n2\n10\n0\n20\n0\n10\n1\n20\n1\n10\n2\n20\n0\n"
-      "0\nSPLINE\n71\n3\n10\n0\n20\n0\n10\n1\n20\n2\n10\n3\n20\n2\n10\n4\n20\n0\n10\n5\n20\n1\n"
-      "0\nSPLINE\n71\n3\n11\n0\n21\n0\n11\n1\n21\n1\n11\n3\n21\n1\n"
-      "0\nSPLINE\n71\n2\n40\n0\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n10\n2\n20\n0\n"       // too few knots
-      "0\nSPLINE\n71\n11\n10\n0\n20\n0\n10\n1\n20\n1\n"                                    // degree 11
-      "0\nSPLINE\n71\n1\n41\n1\n10\n0\n20\n0\n10\n1\n20\n1\n"                              // one weight for two points
-      "0\nSPLINE\n71\n1\n40\n0\n40\n0\n40\n2\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n"));     // decreasing knots
+  const Drawing d =
+      read(entities("0\nSPLINE\n71\n1\n40\n0\n40\n0\n40\n1\n40\n2\n40\n2\n10\n0\n20\n0\n10\n1\n20\n1\n10\n2\n20\n0\n"
+                    "0\nSPLINE\n71\n3\n10\n0\n20\n0\n10\n1\n20\n2\n10\n3\n20\n2\n10\n4\n20\n0\n10\n5\n20\n1\n"
+                    "0\nSPLINE\n71\n3\n11\n0\n21\n0\n11\n1\n21\n1\n11\n3\n21\n1\n"
+                    "0\nSPLINE\n71\n2\n40\n0\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n10\n2\n20\n0\n"  // too few knots
+                    "0\nSPLINE\n71\n11\n10\n0\n20\n0\n10\n1\n20\n1\n"                             // degree 11
+                    "0\nSPLINE\n71\n1\n41\n1\n10\n0\n20\n0\n10\n1\n20\n1\n"  // one weight for two points
+                    "0\nSPLINE\n71\n1\n40\n0\n40\n0\n40\n2\n40\n1\n10\n0\n20\n0\n10\n1\n20\n1\n"));  // decreasing knots
   std::vector<std::vector<Segment>> by(3);
   for (const Segment& s : d.segments) {
     ASSERT_LT(s.entity, 3u);
@@ -369,9 +370,9 @@ TEST(DxfReader, SplineKindsAndInvalidOnes) {
 TEST(DxfReader, CurvesStopAtTheirPointBudget) {
   DxfReadOptions options;
   options.chord_tolerance = 1e-300;
-  const Drawing d = read(entities(
-      "0\nELLIPSE\n11\n1\n40\n1\n"
-      "0\nSPLINE\n71\n2\n10\n0\n20\n0\n10\n1\n20\n1\n10\n2\n20\n0\n"), options);
+  const Drawing d = read(entities("0\nELLIPSE\n11\n1\n40\n1\n"
+                                  "0\nSPLINE\n71\n2\n10\n0\n20\n0\n10\n1\n20\n1\n10\n2\n20\n0\n"),
+                         options);
   std::size_t counts[2] = {0, 0};
   for (const Segment& s : d.segments) ++counts[s.entity];
   EXPECT_EQ(counts[0], 99999u);
@@ -403,14 +404,13 @@ TEST(DxfReader, HeaderVariablesAndUnits) {
 }
 
 TEST(DxfReader, SkippedEntitiesBlocksAndPaperSpace) {
-  const Drawing d = read(
-      "0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n0\nLINE\n11\n5\n0\nENDBLK\n0\nENDSEC\n" +
-      entities(
-          "0\nINSERT\n2\nB\n66\n1\n0\nATTRIB\n10\n1\n0\nATTRIB\n10\n2\n0\nSEQEND\n"
-          "0\nMTEXT\n1\nx\n0\nHATCH\n10\n0\n0\nDIMENSION\n0\nPOINT\n10\n1\n0\nSOLID\n0\n3DFACE\n0\nTEXT\n"
-          "0\nLINE\n67\n1\n11\n1\n0\nTEXT\n67\n1\n"
-          "0\nLINE\n11\n2\n"));
-  ASSERT_EQ(d.segments.size(), 1u);  // nothing from the block
+  const Drawing d =
+      read("0\nSECTION\n2\nBLOCKS\n0\nBLOCK\n2\nB\n0\nLINE\n11\n5\n0\nENDBLK\n0\nENDSEC\n" +
+           entities("0\nINSERT\n2\nB\n66\n1\n0\nATTRIB\n10\n1\n0\nATTRIB\n10\n2\n0\nSEQEND\n"
+                    "0\nMTEXT\n1\nx\n0\nHATCH\n10\n0\n0\nDIMENSION\n0\nPOINT\n10\n1\n0\nSOLID\n0\n3DFACE\n0\nTEXT\n"
+                    "0\nLINE\n67\n1\n11\n1\n0\nTEXT\n67\n1\n"
+                    "0\nLINE\n11\n2\n"));
+  ASSERT_EQ(d.segments.size(), 1u);      // nothing from the block
   EXPECT_EQ(d.segments[0].entity, 10u);  // INSERT with its ATTRIBs and SEQEND is one entity
   EXPECT_EQ(d.entities_skipped.at("INSERT"), 1u);
   EXPECT_EQ(d.entities_skipped.at("MTEXT"), 1u);
@@ -448,8 +448,8 @@ TEST(DxfReader, TolerantLayout) {
 }
 
 TEST(DxfReader, TwoEntitiesSectionsCarryOn) {
-  const Drawing d = read("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nA\n11\n1\n0\nENDSEC\n" +
-                         entities("0\nTEXT\n0\nLINE\n8\nA\n11\n2\n"));
+  const Drawing d =
+      read("0\nSECTION\n2\nENTITIES\n0\nLINE\n8\nA\n11\n1\n0\nENDSEC\n" + entities("0\nTEXT\n0\nLINE\n8\nA\n11\n2\n"));
   ASSERT_EQ(d.segments.size(), 2u);
   EXPECT_EQ(d.segments[1].entity, 2u);
   EXPECT_EQ(d.layers, std::vector<std::string>{"A"});
@@ -480,8 +480,7 @@ TEST(DxfReader, ErrorsNameTheLineAtFault) {
             "t.dxf:8: number out of range '99999999999999999999' for group code 70");
   EXPECT_EQ(dxf_error_of(entities("0\nLINE\n2000\nx\n")), "t.dxf:7: bad group code '2000'");
   static const char with_nul[] = "0\nSECTION\n2\nENTITIES\n0\nLINE\n10\n1\0\n";
-  EXPECT_EQ(dxf_error_of(std::string(with_nul, sizeof with_nul - 1)),
-            "t.dxf:8: nul byte in a text DXF file");
+  EXPECT_EQ(dxf_error_of(std::string(with_nul, sizeof with_nul - 1)), "t.dxf:8: nul byte in a text DXF file");
   // Values only read for the entity types that use them.
   EXPECT_EQ(dxf_error_of(entities("0\nTEXT\n10\nabc\n")), "");
 }
@@ -505,14 +504,15 @@ TEST(DxfReader, TruncatedAndEmptyFiles) {
 TEST(DxfReader, LimitsAndOverflow) {
   DxfReadOptions options;
   options.max_segments = 3;
-  EXPECT_EQ(dxf_error_of(entities("0\nLWPOLYLINE\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n10\n0\n20\n1\n"), options),
-            "t.dxf:5: more than 3 segments");
+  EXPECT_EQ(
+      dxf_error_of(entities("0\nLWPOLYLINE\n70\n1\n10\n0\n20\n0\n10\n1\n20\n0\n10\n1\n20\n1\n10\n0\n20\n1\n"), options),
+      "t.dxf:5: more than 3 segments");
   EXPECT_EQ(dxf_error_of(entities("0\nCIRCLE\n10\n1e308\n40\n1e308\n")), "t.dxf:5: coordinates out of range");
   EXPECT_EQ(dxf_error_of(entities("0\nELLIPSE\n10\n1e308\n11\n1e308\n")), "t.dxf:5: coordinates out of range");
   // Within the convex hull of its control points a spline cannot overflow, but its weights can.
   EXPECT_EQ(dxf_error_of(entities("0\nSPLINE\n71\n2\n10\n0\n20\n0\n10\n1e308\n20\n1e308\n10\n-1e308\n20\n0\n")), "");
   EXPECT_EQ(dxf_error_of(entities("0\nSPLINE\n71\n2\n41\n1\n41\n1e10\n41\n1\n"
-                              "10\n0\n20\n0\n10\n1e308\n20\n1e308\n10\n-1e308\n20\n0\n")),
+                                  "10\n0\n20\n0\n10\n1e308\n20\n1e308\n10\n-1e308\n20\n0\n")),
             "t.dxf:5: coordinates out of range");
 }
 
@@ -537,7 +537,7 @@ TEST(DxfReader, BinaryDxf) {
   b.text(0, "LWPOLYLINE").text(8, "L2").code(90).bytes += std::string("\x02\0\0\0", 4);
   b.int16(70, 1).real(10, 0).real(20, 0).real(42, 0.5).real(10, 2).real(20, 0);
   b.code(310).bytes += std::string("\x03\x01\x02\x03", 4);  // a binary chunk, passed over
-  b.code(290).bytes += '\x01';                                 // a bool
+  b.code(290).bytes += '\x01';                              // a bool
   b.text(0, "ENDSEC").text(0, "EOF");
   const Drawing d = read(b.bytes);
   EXPECT_TRUE(d.binary);

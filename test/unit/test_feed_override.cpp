@@ -155,8 +155,9 @@ void compare_grid_with_oracle(const FeedOverrideParams& base, const std::string&
       out << line;
     }
   }
-  const std::string command = "/usr/bin/python3 '" + (tk::test::project_root() / "test" / "oracle" / "fuzzyfeed_law.py").string() +
-                              "' grid " + options + " < '" + input.string() + "'";
+  const std::string command = "/usr/bin/python3 '" +
+                              (tk::test::project_root() / "test" / "oracle" / "fuzzyfeed_law.py").string() + "' grid " +
+                              options + " < '" + input.string() + "'";
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr) << command;
   std::size_t i = 0;

@@ -46,7 +46,8 @@ TEST(FftSquaring, EdgeValuesIncludingANegativeSquareMinusTwo) {
     const mpz_class N = value_of(form);
     auto fft = FftSquaring::create(form);
     ASSERT_NE(fft, nullptr);
-    for (const mpz_class& x : {mpz_class(0), mpz_class(1), mpz_class(2), mpz_class(N - 1), mpz_class(N - 2), mpz_class(N / 2)})
+    for (const mpz_class& x :
+         {mpz_class(0), mpz_class(1), mpz_class(2), mpz_class(N - 1), mpz_class(N - 2), mpz_class(N / 2)})
       for (unsigned long minus : {0ul, 2ul}) expect_chain_matches(*fft, form, x, minus, 3);
   }
 }
@@ -71,7 +72,8 @@ TEST(FftSquaring, ProofsAgreeAcrossArithmetics) {
     ProofOptions gmp, fft;
     gmp.arithmetic = Arithmetic::gmp;
     fft.arithmetic = Arithmetic::fft;
-    const auto llr_gmp = llr_prove(1327691127, n, LlrStart::llr, gmp), llr_fft = llr_prove(1327691127, n, LlrStart::llr, fft);
+    const auto llr_gmp = llr_prove(1327691127, n, LlrStart::llr, gmp),
+               llr_fft = llr_prove(1327691127, n, LlrStart::llr, fft);
     EXPECT_EQ(llr_gmp.verdict, llr_fft.verdict) << n;
     EXPECT_EQ(llr_gmp.res64, llr_fft.res64) << n;
     EXPECT_GT(llr_fft.fft_length, 0u);

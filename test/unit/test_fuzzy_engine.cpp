@@ -183,7 +183,8 @@ TEST(FuzzyCentroid, ExactWithVerticalEdgesAndEqualTerms) {
 }
 
 TEST(FuzzyCentroid, DiscreteConvergesToExact) {
-  const ImpliedTerm terms[] = {{Trapezoid{0, 0, 2, 4}, 0.8}, {Trapezoid{3, 6, 6, 9}, 0.6}, {Trapezoid{5, 8, 9, 10}, 0.3}};
+  const ImpliedTerm terms[] = {
+      {Trapezoid{0, 0, 2, 4}, 0.8}, {Trapezoid{3, 6, 6, 9}, 0.6}, {Trapezoid{5, 8, 9, 10}, 0.3}};
   const double exact = exact_centroid(terms, Implication::minimum, 0, 10).centroid;
   double previous_error = 1e9;
   for (int resolution : {10, 100, 1000, 10000}) {
@@ -244,8 +245,8 @@ TEST(FuzzyMamdani, FastKernelsMatchTheNaiveDefinition) {
   // evaluation with tnorm() and the definitions.
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(0, 1);
-  for (TNorm t : {TNorm::minimum, TNorm::product, TNorm::drastic, TNorm::lukasiewicz, TNorm::trigonometric,
-                  TNorm::hamacher}) {
+  for (TNorm t :
+       {TNorm::minimum, TNorm::product, TNorm::drastic, TNorm::lukasiewicz, TNorm::trigonometric, TNorm::hamacher}) {
     for (int trial = 0; trial < 60; ++trial) {
       Engine e;
       for (const char* name : {"a", "b", "c"}) {
@@ -260,13 +261,16 @@ TEST(FuzzyMamdani, FastKernelsMatchTheNaiveDefinition) {
       out.name = "y";
       out.min = -10;
       out.max = 10;
-      for (int k = 0; k < 4; ++k) out.terms.push_back(Term::triangle("T" + std::to_string(k), -10 + 5 * k, -7 + 5 * k, -3 + 5 * k));
+      for (int k = 0; k < 4; ++k)
+        out.terms.push_back(Term::triangle("T" + std::to_string(k), -10 + 5 * k, -7 + 5 * k, -3 + 5 * k));
       e.outputs.push_back(out);
       e.rule_block.conjunction = t;
       e.rule_block.implication = trial % 2 ? Implication::minimum : Implication::product;
       for (int r = 0; r < 8; ++r)
-        e.rule_block.rules.push_back(Rule{{{0, std::size_t(r & 1)}, {1, std::size_t(r >> 1 & 1)}, {2, std::size_t(r >> 2 & 1)}},
-                                          {{0, std::size_t(r % 4)}}, 1});
+        e.rule_block.rules.push_back(
+            Rule{{{0, std::size_t(r & 1)}, {1, std::size_t(r >> 1 & 1)}, {2, std::size_t(r >> 2 & 1)}},
+                 {{0, std::size_t(r % 4)}},
+                 1});
       Mamdani m(e);
       const double in[3] = {u(rng), u(rng), trial % 3 ? u(rng) : 0.9};
       double y = 0;

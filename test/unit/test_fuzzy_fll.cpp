@@ -161,8 +161,8 @@ TEST(Fll, RoundTripAndFixpoint) {
 TEST(Fll, WriterLayout) {
   const std::string text = write_fll(read_fll_file(fixture("simple_dimmer.fll").string()));
   EXPECT_EQ(text.rfind("Engine: SimpleDimmer\nInputVariable: Ambient\n  enabled: true\n  range: 0 1\n"
-                      "  lock-range: false\n  term: DARK Triangle 0 0.25 0.5\n",
-                      0),
+                       "  lock-range: false\n  term: DARK Triangle 0 0.25 0.5\n",
+                       0),
             0u);
   EXPECT_NE(text.find("  aggregation: Maximum\n  defuzzifier: Centroid 200\n  default: nan\n  lock-previous: false\n"),
             std::string::npos);
@@ -181,7 +181,8 @@ TEST(Fll, ShortestRoundTripNumbers) {
   const std::string text = write_fll(e);
   EXPECT_NE(text.find("range: -0.1 1e+300\n"), std::string::npos) << text;
   EXPECT_NE(text.find("term: DARK Trapezoid 0.30000000000000004 0.3333333333333333 0.6666666666666666 0.7\n"),
-            std::string::npos) << text;
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find(" with 0.1\n"), std::string::npos);
   EXPECT_EQ(engine_difference(e, read_fll(text, "t")), "");
 }
@@ -191,9 +192,11 @@ TEST(Fll, CrlfCommentsAndBlankLines) {
   std::string crlf;
   for (char c : lf) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   EXPECT_EQ(engine_difference(read_fll(lf, "lf"), read_fll(crlf, "crlf")), "");
-  const std::string commented = "# header\n\n  Engine: E # name\n#x\nInputVariable: a\n range: 0 1 # r\n"
-                                "term: T Triangle 0 0.5 1#t\nOutputVariable: z\nrange: 0 1\naggregation: Maximum\ndefuzzifier: Centroid\nterm: U Triangle 0 0.5 1\n"
-                                "\t\nRuleBlock:\nimplication: Minimum\nrule: if a is T then z is U   # the only rule";
+  const std::string commented =
+      "# header\n\n  Engine: E # name\n#x\nInputVariable: a\n range: 0 1 # r\n"
+      "term: T Triangle 0 0.5 1#t\nOutputVariable: z\nrange: 0 1\naggregation: Maximum\ndefuzzifier: Centroid\nterm: U "
+      "Triangle 0 0.5 1\n"
+      "\t\nRuleBlock:\nimplication: Minimum\nrule: if a is T then z is U   # the only rule";
   const Engine e = read_fll(commented, "c");
   EXPECT_EQ(e.name, "E");
   EXPECT_EQ(e.inputs[0].max, 1);
@@ -203,19 +206,19 @@ TEST(Fll, CrlfCommentsAndBlankLines) {
 
 /// The smallest valid controller; the cases below change one line of it.
 const std::vector<std::string> kBase{
-    "Engine: E",                   // 1
-    "InputVariable: a",            // 2
-    "  range: 0 1",                // 3
-    "  term: LOW Triangle 0 0 1",  // 4
-    "  term: HIGH Trapezoid 0 1 1 1",  // 5
-    "OutputVariable: z",           // 6
-    "  range: 0 10",               // 7
-    "  aggregation: Maximum",      // 8
-    "  defuzzifier: Centroid 100",  // 9
-    "  term: OFF Triangle 0 0 10",  // 10
-    "RuleBlock: rb",               // 11
-    "  conjunction: Minimum",      // 12
-    "  implication: Minimum",      // 13
+    "Engine: E",                          // 1
+    "InputVariable: a",                   // 2
+    "  range: 0 1",                       // 3
+    "  term: LOW Triangle 0 0 1",         // 4
+    "  term: HIGH Trapezoid 0 1 1 1",     // 5
+    "OutputVariable: z",                  // 6
+    "  range: 0 10",                      // 7
+    "  aggregation: Maximum",             // 8
+    "  defuzzifier: Centroid 100",        // 9
+    "  term: OFF Triangle 0 0 10",        // 10
+    "RuleBlock: rb",                      // 11
+    "  conjunction: Minimum",             // 12
+    "  implication: Minimum",             // 13
     "  rule: if a is LOW then z is OFF",  // 14
 };
 
@@ -324,7 +327,11 @@ TEST(Fll, EmptyGarbageAndValidation) {
       EXPECT_EQ(std::string(e.what()), "no 'Engine:' line (empty input)");
     }
   }
-  EXPECT_THROW(read_fll(std::string("\x7f" "ELF\x02\x01\x01\0\0\0:\xff\xfe", 14), "bin"), tk::Error);
+  EXPECT_THROW(read_fll(std::string("\x7f"
+                                    "ELF\x02\x01\x01\0\0\0:\xff\xfe",
+                                    14),
+                        "bin"),
+               tk::Error);
   // No RuleBlock: validate()'s complaint, with the file name and no line.
   std::string no_rules;
   for (std::size_t i = 0; i < 10; ++i) no_rules += kBase[i] + "\n";

@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <numbers>
+#include <sstream>
 
-#include "io/error.hpp"
 #include "gcode_program.hpp"
+#include "io/error.hpp"
 #include "motion/gcode.hpp"
 
 using namespace tk::motion;
@@ -19,11 +19,11 @@ using gcode_test::error_of;
 using gcode_test::expect_point;
 using gcode_test::run;
 
-#define EXPECT_ERROR(program, text)                                                          \
-  do {                                                                                       \
-    const std::string message_ = error_of(program);                                          \
+#define EXPECT_ERROR(program, text)                                                       \
+  do {                                                                                    \
+    const std::string message_ = error_of(program);                                       \
     EXPECT_NE(message_.find(text), std::string::npos) << "program: " << (program) << "\n" \
-                                                      << "error: '" << message_ << "'";    \
+                                                      << "error: '" << message_ << "'";   \
   } while (0)
 
 }  // namespace
@@ -89,8 +89,10 @@ TEST(GcodeLexer, Errors) {
   EXPECT_EQ(lex_error("G1 X[1+2]"), "letter 'X' without a number");
   EXPECT_EQ(lex_error("[1]"), "unexpected character '[': expressions are not supported" + canon_hint);
   EXPECT_EQ(lex_error("O100 sub"), "'O' words (subroutines) are not supported" + canon_hint);
-  EXPECT_EQ(lex_error("G1 ^45 @10"), "'^' is LinuxCNC's polar angle word: polar coordinates are not supported" + canon_hint);
-  EXPECT_EQ(lex_error("G1 @10"), "'@' is LinuxCNC's polar distance word: polar coordinates are not supported" + canon_hint);
+  EXPECT_EQ(lex_error("G1 ^45 @10"),
+            "'^' is LinuxCNC's polar angle word: polar coordinates are not supported" + canon_hint);
+  EXPECT_EQ(lex_error("G1 @10"),
+            "'@' is LinuxCNC's polar distance word: polar coordinates are not supported" + canon_hint);
   EXPECT_EQ(lex_error("M3 $1 S100"), "'$' is LinuxCNC's spindle selection word: one spindle only, no '$'" + canon_hint);
   EXPECT_EQ(lex_error("G1 X1 \x01"), "unexpected byte 0x01");
   EXPECT_EQ(lex_error("G1 \xff"), "unexpected byte 0xff");
@@ -149,7 +151,8 @@ TEST(GcodeInterpreter, UnitsAndFeed) {
 
 TEST(GcodeInterpreter, IncrementalAndModalMotion) {
   GcodeInterpreter interpreter;
-  const auto m = run("G91 G0 X1 Y1\nX1\nG1 Z-2 F60\nG90 X5\nY2 Z1\nF100 S2000 M3\nT2 M6\n\n(comment)\nN50", interpreter);
+  const auto m =
+      run("G91 G0 X1 Y1\nX1\nG1 Z-2 F60\nG90 X5\nY2 Z1\nF100 S2000 M3\nT2 M6\n\n(comment)\nN50", interpreter);
   ASSERT_EQ(m.size(), 5u);
   expect_point(m[1].end, 2, 1, 0);
   EXPECT_EQ(m[1].kind, MotionKind::rapid);
@@ -158,7 +161,7 @@ TEST(GcodeInterpreter, IncrementalAndModalMotion) {
   expect_point(m[3].end, 5, 1, -2);
   expect_point(m[4].end, 5, 2, 1);
   EXPECT_EQ(m[4].source_line, 5u);
-  EXPECT_EQ(interpreter.blocks(), 7u);  // blank, comment and N-only lines are no blocks
+  EXPECT_EQ(interpreter.blocks(), 7u);                   // blank, comment and N-only lines are no blocks
   EXPECT_EQ(run("G0 X0 Y0 Z0\nG1 X0 F100").size(), 0u);  // no move, no motion
 }
 
@@ -231,10 +234,14 @@ TEST(GcodeArc, RadiusFormat) {
     double centre_y, sweep;
   };
   const double h = std::sqrt(75.0);  // 8.660254: the centre's distance from the chord for R10
-  const Case cases[] = {{"G2 X10 R5", 0, std::numbers::pi},           {"G2 X10 R-5", 0, std::numbers::pi},
-                        {"G3 X10 R5", 0, std::numbers::pi},           {"G2 X10 R10", -h, std::numbers::pi / 3},
-                        {"G2 X10 R-10", h, 5 * std::numbers::pi / 3}, {"G3 X10 R10", h, std::numbers::pi / 3},
-                        {"G3 X10 R-10", -h, 5 * std::numbers::pi / 3}, {"G2 X10 R4.999", 0, std::numbers::pi}};
+  const Case cases[] = {{"G2 X10 R5", 0, std::numbers::pi},
+                        {"G2 X10 R-5", 0, std::numbers::pi},
+                        {"G3 X10 R5", 0, std::numbers::pi},
+                        {"G2 X10 R10", -h, std::numbers::pi / 3},
+                        {"G2 X10 R-10", h, 5 * std::numbers::pi / 3},
+                        {"G3 X10 R10", h, std::numbers::pi / 3},
+                        {"G3 X10 R-10", -h, 5 * std::numbers::pi / 3},
+                        {"G2 X10 R4.999", 0, std::numbers::pi}};
   for (const Case& c : cases) {
     const auto m = run(std::string("F100\n") + c.block);
     ASSERT_EQ(m.size(), 1u) << c.block;
@@ -332,43 +339,42 @@ TEST(GcodeInterpreter, LenientSkipsWithWarnings) {
   GcodeInterpreter interpreter(options);
   std::vector<std::string> warnings;
   interpreter.on_warning([&warnings](const std::string& warning) { warnings.push_back(warning); });
-  const auto m = run(
-      "G41 D2 G1 X10 F100\n"   // the word goes, the move stays
-      "G1 X20 A5\n"            // the A word goes
-      "G81 X1 Y1 Z-1 R1\n"     // a canned cycle: no move
-      "X2 Y2\n"                // still in the skipped mode
-      "G80\n"
-      "G28 X0\n"               // its X is no move
-      "G0 X5 Y5",
-      interpreter);
+  const auto m =
+      run("G41 D2 G1 X10 F100\n"  // the word goes, the move stays
+          "G1 X20 A5\n"           // the A word goes
+          "G81 X1 Y1 Z-1 R1\n"    // a canned cycle: no move
+          "X2 Y2\n"               // still in the skipped mode
+          "G80\n"
+          "G28 X0\n"  // its X is no move
+          "G0 X5 Y5",
+          interpreter);
   ASSERT_EQ(m.size(), 3u);
   expect_point(m[0].end, 10, 0, 0);
   expect_point(m[1].end, 20, 0, 0);
   expect_point(m[2].start, 20, 0, 0);
   expect_point(m[2].end, 5, 5, 0);
   const std::vector<std::string> expected = {
-      "skipped G41 (cutter radius compensation)", "skipped A5 (3 axes only: X, Y, Z)",
-      "skipped G81 (canned cycle)", "skipped this line's motion: G81 (canned cycle) mode",
-      "skipped G28 (return to home)"};
+      "skipped G41 (cutter radius compensation)", "skipped A5 (3 axes only: X, Y, Z)", "skipped G81 (canned cycle)",
+      "skipped this line's motion: G81 (canned cycle) mode", "skipped G28 (return to home)"};
   EXPECT_EQ(warnings, expected);
   EXPECT_NE(error_of("G12", options).find("unknown G code G12"), std::string::npos);  // even when lenient
 }
 
 TEST(GcodeInterpreter, UnusedWordsAndProgramEnd) {
   GcodeInterpreter interpreter;
-  const auto m = run(
-      "N10 G17 G21 G90 G94 G40 G49 G54 G64 P0.01 Q0.01 G98\n"
-      "M03 S1000\nM3\nT1 M06\nH1\nM62 P1\nM63 P1\nM7 M8\nM9\nM0\nM1\nG97\nG61\n"
-      "/G0 X100\n"  // block delete switch on: skipped
-      "G0 X1\nM30\nG0 X5\nM3",
-      interpreter);
+  const auto m =
+      run("N10 G17 G21 G90 G94 G40 G49 G54 G64 P0.01 Q0.01 G98\n"
+          "M03 S1000\nM3\nT1 M06\nH1\nM62 P1\nM63 P1\nM7 M8\nM9\nM0\nM1\nG97\nG61\n"
+          "/G0 X100\n"  // block delete switch on: skipped
+          "G0 X1\nM30\nG0 X5\nM3",
+          interpreter);
   ASSERT_EQ(m.size(), 1u);
   expect_point(interpreter.position(), 1, 0, 0);
   EXPECT_TRUE(interpreter.program_ended());
-  const std::map<std::string, std::uint64_t> expected = {
-      {"G40", 1}, {"G54", 1}, {"G61", 1}, {"G64", 1}, {"G97", 1}, {"G98", 1},
-      {"H", 1},   {"M0", 1},  {"M1", 1},  {"M3", 2},  {"M6", 1},  {"M62", 1}, {"M63", 1}, {"M7", 1},
-      {"M8", 1},  {"M9", 1},  {"T", 1}};  // S is not here: G33 follows it
+  const std::map<std::string, std::uint64_t> expected = {{"G40", 1}, {"G54", 1}, {"G61", 1}, {"G64", 1}, {"G97", 1},
+                                                         {"G98", 1}, {"H", 1},   {"M0", 1},  {"M1", 1},  {"M3", 2},
+                                                         {"M6", 1},  {"M62", 1}, {"M63", 1}, {"M7", 1},  {"M8", 1},
+                                                         {"M9", 1},  {"T", 1}};  // S is not here: G33 follows it
   EXPECT_EQ(interpreter.unused_words(), expected);
   EXPECT_EQ(interpreter.blocks(), 15u);
   EXPECT_FALSE(GcodeInterpreter().program_ended());

@@ -15,8 +15,8 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <regex>
 #pragma GCC diagnostic pop
-#include <sstream>
 #include <numbers>
+#include <sstream>
 
 #include "io/error.hpp"
 #include "motion/gcode.hpp"

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/error.hpp"
 #include "gcode_program.hpp"
+#include "io/error.hpp"
 #include "motion/gcode.hpp"
 #include "motion/planner.hpp"
 
@@ -153,14 +153,14 @@ TEST(GcodeThreading, SpindleSpeedIsNoLongerAnUnusedWordTheMCodesStillAre) {
 
 TEST(GcodeThreading, DiameterModeHalvesXWords) {
   GcodeInterpreter interpreter;
-  const auto m = run(
-      "G0 X20\n"          // G8 by default: radius 20
-      "G7 X20 Z-1\n"      // G7 applies to its own line: radius 10
-      "X30 Y4\n"          // Y and Z are not diameters
-      "G91 X-4\n"         // incremental: the word is halved too, -2 mm
-      "G8 X3\n"           // radius mode again: +3 mm
-      "G90 G7 G20 X1",    // 1 in diameter: 12.7 mm radius
-      interpreter);
+  const auto m =
+      run("G0 X20\n"        // G8 by default: radius 20
+          "G7 X20 Z-1\n"    // G7 applies to its own line: radius 10
+          "X30 Y4\n"        // Y and Z are not diameters
+          "G91 X-4\n"       // incremental: the word is halved too, -2 mm
+          "G8 X3\n"         // radius mode again: +3 mm
+          "G90 G7 G20 X1",  // 1 in diameter: 12.7 mm radius
+          interpreter);
   ASSERT_EQ(m.size(), 6u);
   expect_exact_point(m[0].end, 20, 0, 0);
   expect_exact_point(m[1].end, 10, 0, -1);

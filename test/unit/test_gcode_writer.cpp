@@ -39,9 +39,7 @@ TEST(GcodeComment, ParenthesesBecomeBrackets) {
   EXPECT_EQ(gcode_comment("ap*sqrt(i/n))("), "(ap*sqrt[i/n]][)");
 }
 
-TEST(GcodeComment, ControlBytesBecomeSpaces) {
-  EXPECT_EQ(gcode_comment("a\nb\r\tc\x7f"), "(a b  c )");
-}
+TEST(GcodeComment, ControlBytesBecomeSpaces) { EXPECT_EQ(gcode_comment("a\nb\r\tc\x7f"), "(a b  c )"); }
 
 TEST(GcodeComment, EveryByteGivesAPlainComment) {
   for (int byte = 1; byte < 256; ++byte) {
@@ -52,9 +50,9 @@ TEST(GcodeComment, EveryByteGivesAPlainComment) {
 }
 
 TEST(GcodeComment, DirectivesAreQuoted) {
-  for (const char* text : {"MSG, hi", "msg,hi", "  Debug,#<x>", "print,x", "LOG,x", "logopen,f", "logappend,f",
-                           "logclose", "py,import os", "pyrun,x", "pyreload", "abort,x", "probeopen f", "probeclose",
-                           "AXIS,hide"}) {
+  for (const char* text :
+       {"MSG, hi", "msg,hi", "  Debug,#<x>", "print,x", "LOG,x", "logopen,f", "logappend,f", "logclose", "py,import os",
+        "pyrun,x", "pyreload", "abort,x", "probeopen f", "probeclose", "AXIS,hide"}) {
     const std::string comment = gcode_comment(text);
     EXPECT_EQ(comment, std::string("(\"") + text + "\")");
     expect_plain_comment(comment);

@@ -8,9 +8,9 @@
 
 #include <gmpxx.h>
 
+#include "brute_force_prime.hpp"
 #include "primes/number.hpp"
 #include "primes/primality.hpp"
-#include "brute_force_prime.hpp"
 
 using namespace tk::primes;
 

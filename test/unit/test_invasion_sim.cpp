@@ -204,9 +204,9 @@ TEST(PathClearance, AMoveItCannotResolveIsRefusedNotLooped) {
 // edges whose x or y interval holds P.
 TEST(IntervalLineDistance, TheSeedsEquationTwoByHand) {
   const std::vector<std::vector<Point>> square = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}};
-  EXPECT_DOUBLE_EQ(interval_line_distance(square, {5, -3}), 3);   // below: the bottom edge's x interval
-  EXPECT_DOUBLE_EQ(interval_line_distance(square, {13, 4}), 3);   // right: the right edge's y interval
-  EXPECT_DOUBLE_EQ(interval_line_distance(square, {5, 6}), 4);    // inside: unsigned, the nearest line
+  EXPECT_DOUBLE_EQ(interval_line_distance(square, {5, -3}), 3);       // below: the bottom edge's x interval
+  EXPECT_DOUBLE_EQ(interval_line_distance(square, {13, 4}), 3);       // right: the right edge's y interval
+  EXPECT_DOUBLE_EQ(interval_line_distance(square, {5, 6}), 4);        // inside: unsigned, the nearest line
   EXPECT_TRUE(std::isinf(interval_line_distance(square, {12, 13})));  // off every interval: never checked
   // Beyond a segment's end, in its x interval: the line passes 15 / hypot(1, 10) from (0.5, 20), the
   // segment's end (1, 10) is 10 mm away.

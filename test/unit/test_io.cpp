@@ -6,7 +6,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include "temp_file.hpp"
 #include "io/csv.hpp"
 #include "io/error.hpp"
 #include "io/input_file.hpp"
@@ -14,6 +13,7 @@
 #include "io/record_fields.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
+#include "temp_file.hpp"
 
 using tk::Error;
 using tk::Record;
@@ -32,8 +32,7 @@ std::vector<Record> read_all(const std::string& content, NativeFormatProbe probe
   return out;
 }
 
-std::string write_all(const std::vector<Record>& records, OutputFormat format,
-                      std::vector<std::string> declared = {}) {
+std::string write_all(const std::vector<Record>& records, OutputFormat format, std::vector<std::string> declared = {}) {
   // The memory stream is closed (and its buffer freed) even when write throws.
   struct Stream {
     char* buffer = nullptr;
@@ -220,9 +219,11 @@ TEST(RecordWriter, RowCellsMatchTheRecordPath) {
   };
   const std::vector<std::string> names{"x", "n", "word", "flag", "gap", "say \"hi\""};
   Record record = Record::object();
-  record["x"] = 0.1, record["n"] = -7, record["word"] = "subtune", record["flag"] = true, record["gap"] = NAN;  // NaN: null in JSON, empty in CSV, either way
+  record["x"] = 0.1, record["n"] = -7, record["word"] = "subtune", record["flag"] = true,
+  record["gap"] = NAN;  // NaN: null in JSON, empty in CSV, either way
   record["say \"hi\""] = 2.5e-300;
-  const Cell row[] = {Cell::real(0.1), Cell::integer(-7), Cell::text("subtune"), Cell::boolean(true), Cell::real(NAN), Cell::real(2.5e-300)};
+  const Cell row[] = {Cell::real(0.1),     Cell::integer(-7), Cell::text("subtune"),
+                      Cell::boolean(true), Cell::real(NAN),   Cell::real(2.5e-300)};
   for (const OutputFormat format : {OutputFormat::json_lines, OutputFormat::csv}) {
     Stream fast;
     {
@@ -234,7 +235,8 @@ TEST(RecordWriter, RowCellsMatchTheRecordPath) {
       EXPECT_THROW(writer.write_row(too_many), Error);
     }
     std::fclose(fast.file);
-    EXPECT_EQ(std::string(fast.buffer, fast.size), write_all({record}, format, names)) << (format == OutputFormat::csv ? "csv" : "json");
+    EXPECT_EQ(std::string(fast.buffer, fast.size), write_all({record}, format, names))
+        << (format == OutputFormat::csv ? "csv" : "json");
   }
 }
 

@@ -79,8 +79,7 @@ TEST(Candidate, RecordsForTextInput) {
 TEST(Candidate, FormsExpandIntoTheirMembers) {
   auto members = [](const char* json) {
     std::vector<std::pair<std::uint64_t, std::int64_t>> out;
-    for (const auto& m : candidate_from_record(tk::Record::parse(json), 1 << 20).members)
-      out.emplace_back(m.n, m.c);
+    for (const auto& m : candidate_from_record(tk::Record::parse(json), 1 << 20).members) out.emplace_back(m.n, m.c);
     return out;
   };
   using V = std::vector<std::pair<std::uint64_t, std::int64_t>>;
@@ -89,7 +88,8 @@ TEST(Candidate, FormsExpandIntoTheirMembers) {
   EXPECT_EQ(members(R"({"k":3,"n":10,"form":"cc1","length":3})"), (V{{10, -1}, {11, -1}, {12, -1}}));
   EXPECT_EQ(members(R"({"k":3,"n":10,"form":"cc2","length":2})"), (V{{10, 1}, {11, 1}}));
   EXPECT_EQ(members(R"({"k":"3","n":"10","form":"proth"})"), (V{{10, 1}}));
-  const auto c = candidate_from_record(tk::Record::parse(R"({"k":"16869987339975","n":171960,"form":"twin"})"), 1 << 20);
+  const auto c =
+      candidate_from_record(tk::Record::parse(R"({"k":"16869987339975","n":171960,"form":"twin"})"), 1 << 20);
   EXPECT_EQ(c.members[1].number.value, (mpz_class("16869987339975") << 171960) + 1);
 }
 
@@ -99,10 +99,10 @@ TEST(Candidate, IntegralFloatsBelow2To53AreIntegers) {
 }
 
 TEST(Candidate, MalformedRecordsAreErrors) {
-  for (const char* bad : {R"({"id":1})", R"({"k":3})", R"({"k":3,"n":10})", R"({"k":3,"n":10,"form":"quad"})",
-                          R"({"k":0,"n":10,"c":1})", R"({"k":3,"n":-1,"c":1})", R"({"k":1e300,"n":1,"c":1})",
-                          R"({"k":3.5,"n":1,"c":1})", R"({"number":""})", R"({"number":true})",
-                          R"({"k":3,"n":10,"form":"cc1"})", R"({"k":3,"n":10,"c":1,"b":1})",
-                          R"({"k":3,"n":10,"form":"twin","b":3})"})
+  for (const char* bad :
+       {R"({"id":1})", R"({"k":3})", R"({"k":3,"n":10})", R"({"k":3,"n":10,"form":"quad"})", R"({"k":0,"n":10,"c":1})",
+        R"({"k":3,"n":-1,"c":1})", R"({"k":1e300,"n":1,"c":1})", R"({"k":3.5,"n":1,"c":1})", R"({"number":""})",
+        R"({"number":true})", R"({"k":3,"n":10,"form":"cc1"})", R"({"k":3,"n":10,"c":1,"b":1})",
+        R"({"k":3,"n":10,"form":"twin","b":3})"})
     EXPECT_THROW(candidate_from_record(tk::Record::parse(bad), 1 << 20), tk::Error) << bad;
 }

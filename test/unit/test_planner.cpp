@@ -103,7 +103,8 @@ TEST(Planner, ADwellStopsTheMachineAndAddsItsTime) {
   Motion dwell;
   dwell.kind = MotionKind::dwell;
   dwell.duration = 2.5;
-  const auto blocks = plan({feed_line({0, 0, 0}, {10, 0, 0}, 10), dwell, feed_line({10, 0, 0}, {20, 0, 0}, 10)}, limits);
+  const auto blocks =
+      plan({feed_line({0, 0, 0}, {10, 0, 0}, 10), dwell, feed_line({10, 0, 0}, {20, 0, 0}, 10)}, limits);
   ASSERT_EQ(blocks.size(), 3u);
   EXPECT_EQ(blocks[0].exit_speed, 0);
   EXPECT_EQ(blocks[1].duration, 2.5);

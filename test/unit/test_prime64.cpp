@@ -8,9 +8,9 @@
 
 #include <gmpxx.h>
 
+#include "brute_force_prime.hpp"
 #include "primes/montgomery64.hpp"
 #include "primes/prime64.hpp"
-#include "brute_force_prime.hpp"
 
 using namespace tk::primes;
 
@@ -57,24 +57,24 @@ TEST(Prime64, KnownLargePrimesAndComposites) {
   EXPECT_TRUE(is_prime_u64(18446744073709551557ULL));   // largest 64-bit prime
   EXPECT_FALSE(is_prime_u64(18446744073709551615ULL));  // 2^64 - 1
   EXPECT_FALSE(is_prime_u64(18446744073709551613ULL));
-  EXPECT_TRUE(is_prime_u64(9223372036854775783ULL));    // largest prime below 2^63
-  EXPECT_TRUE(is_prime_u64(4294967291ULL));              // largest 32-bit prime
+  EXPECT_TRUE(is_prime_u64(9223372036854775783ULL));  // largest prime below 2^63
+  EXPECT_TRUE(is_prime_u64(4294967291ULL));           // largest 32-bit prime
   EXPECT_FALSE(is_prime_u64(4294967291ULL * 4294967279ULL));
   EXPECT_FALSE(is_prime_u64(4294967291ULL * 4294967291ULL));  // a perfect square
 }
 
 // Strong pseudoprimes to base 2 fool Miller-Rabin base 2 but not BPSW.
 TEST(Prime64, StrongPseudoprimesToBase2AreCaught) {
-  for (u64 n : {2047ULL, 3277ULL, 4033ULL, 4681ULL, 8321ULL, 3215031751ULL, 2152302898747ULL,
-                3474749660383ULL, 341550071728321ULL, 3825123056546413051ULL}) {
+  for (u64 n : {2047ULL, 3277ULL, 4033ULL, 4681ULL, 8321ULL, 3215031751ULL, 2152302898747ULL, 3474749660383ULL,
+                341550071728321ULL, 3825123056546413051ULL}) {
     EXPECT_TRUE(strong_probable_prime_u64(n, 2)) << n;
     EXPECT_FALSE(is_prime_u64(n)) << n;
   }
 }
 
 TEST(Prime64, CarmichaelNumbersPassFermatButNotBpsw) {
-  for (u64 n : {561ULL, 1105ULL, 1729ULL, 2465ULL, 2821ULL, 6601ULL, 8911ULL, 41041ULL, 825265ULL,
-                321197185ULL, 9585921133193329ULL}) {
+  for (u64 n : {561ULL, 1105ULL, 1729ULL, 2465ULL, 2821ULL, 6601ULL, 8911ULL, 41041ULL, 825265ULL, 321197185ULL,
+                9585921133193329ULL}) {
     EXPECT_TRUE(fermat_probable_prime_u64(n, 2)) << n;
     EXPECT_FALSE(is_prime_u64(n)) << n;
   }

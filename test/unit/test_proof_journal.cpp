@@ -19,15 +19,17 @@ bool same(const JournalEntry& a, const JournalEntry& b) {
   return a.key == b.key && a.output == b.output && a.log_offset == b.log_offset && a.log_lines == b.log_lines;
 }
 
-const JournalEntry kPrime{R"(start=llr {"k":3,"b":2,"n":391,"c":-1,"id":"x"})",
-                          R"({"k":3,"b":2,"n":391,"c":-1,"id":"x","verdict":"prime","test":"llr","P":3,"seconds":0.03})",
-                          0,
-                          {"3*2^391-1 is prime! (119 decimal digits)  Time : 0.030 sec."}};
-const JournalEntry kForm{R"(start=d13 {"k":3,"n":2,"form":"cc1","length":2})",
-                         R"({"k":3,"n":2,"form":"cc1","length":2,"verdict":"composite","test":"trial","seconds":1e-05,)"
-                         R"("members":[{"n":2,"c":-1,"verdict":"prime","test":"trial"},{"n":3,"c":-1,"verdict":"composite","test":"trial","witness":"factor 23"}]})",
-                         60,
-                         {"3*2^2-1 is prime! (2 decimal digits)  Time : 0.000 sec.", "3*2^3-1 is not prime.  factor 23  Time : 0.000 sec."}};
+const JournalEntry kPrime{
+    R"(start=llr {"k":3,"b":2,"n":391,"c":-1,"id":"x"})",
+    R"({"k":3,"b":2,"n":391,"c":-1,"id":"x","verdict":"prime","test":"llr","P":3,"seconds":0.03})",
+    0,
+    {"3*2^391-1 is prime! (119 decimal digits)  Time : 0.030 sec."}};
+const JournalEntry kForm{
+    R"(start=d13 {"k":3,"n":2,"form":"cc1","length":2})",
+    R"({"k":3,"n":2,"form":"cc1","length":2,"verdict":"composite","test":"trial","seconds":1e-05,)"
+    R"("members":[{"n":2,"c":-1,"verdict":"prime","test":"trial"},{"n":3,"c":-1,"verdict":"composite","test":"trial","witness":"factor 23"}]})",
+    60,
+    {"3*2^2-1 is prime! (2 decimal digits)  Time : 0.000 sec.", "3*2^3-1 is not prime.  factor 23  Time : 0.000 sec."}};
 
 TEST(ProofJournal, LinesReadBackAsWritten) {
   for (const JournalEntry& entry : {kPrime, kForm}) EXPECT_TRUE(same(parse_journal_line(journal_line(entry)), entry));
@@ -90,7 +92,7 @@ TEST(ProofJournal, LogCompletionAddsOnlyWhatIsMissing) {
   const std::string all = log_text(kForm);
   EXPECT_EQ(log_completion("", kForm), all);
   EXPECT_EQ(log_completion(all.substr(0, 10), kForm), all.substr(10));
-  EXPECT_EQ(log_completion(all, kForm), std::nullopt);             // all there
+  EXPECT_EQ(log_completion(all, kForm), std::nullopt);               // all there
   EXPECT_EQ(log_completion("something else", kForm), std::nullopt);  // not this record's lines
 }
 
@@ -118,9 +120,19 @@ TEST(ProofJournal, CheckpointFieldsMustBeWrittenAsRieselWritesThem) {
     return text + fmt::format("{:016x}\n", tk::io::fnv1a(text));
   };
   EXPECT_NO_THROW(parse_checkpoint(crafted("99999999", "5"), member));  // a syntax the proof itself refuses
-  for (const auto& [iteration, residue] : std::vector<std::pair<std::string, std::string>>{
-           {"-5", "5"}, {" 5", "5"}, {"00000000", "5"}, {"05", "5"}, {"5x", "5"}, {"", "5"}, {"18446744073709551616", "5"},
-           {"5", "-5"}, {"5", "AB"}, {"5", "05"}, {"5", " 5"}, {"5", ""}})
+  for (const auto& [iteration, residue] :
+       std::vector<std::pair<std::string, std::string>>{{"-5", "5"},
+                                                        {" 5", "5"},
+                                                        {"00000000", "5"},
+                                                        {"05", "5"},
+                                                        {"5x", "5"},
+                                                        {"", "5"},
+                                                        {"18446744073709551616", "5"},
+                                                        {"5", "-5"},
+                                                        {"5", "AB"},
+                                                        {"5", "05"},
+                                                        {"5", " 5"},
+                                                        {"5", ""}})
     EXPECT_THROW(parse_checkpoint(crafted(iteration, residue), member), tk::Error) << iteration << " / " << residue;
 }
 

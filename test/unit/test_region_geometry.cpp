@@ -293,9 +293,9 @@ TEST(Loops, IslandInAHoleAndNesting) {
 
 TEST(Loops, LooseEndsAndTJunctions) {
   std::vector<Segment> all = square(0, 0, 10, 10, 0, false);
-  all.push_back(line({5, 5}, {5, 1e-5}, 7));             // a stem ending on the bottom side
-  all.push_back(line({20, 0}, {25, 0}, 8));              // a lone line
-  all.push_back(line({25, 0}, {25, 0.5e-3 * 0.5}, 9));   // shorter than the tolerance: dropped
+  all.push_back(line({5, 5}, {5, 1e-5}, 7));            // a stem ending on the bottom side
+  all.push_back(line({20, 0}, {25, 0}, 8));             // a lone line
+  all.push_back(line({25, 0}, {25, 0.5e-3 * 0.5}, 9));  // shorter than the tolerance: dropped
   const LoopSet set = build_loops(all, 1e-3);
   ASSERT_EQ(set.loops.size(), 1u);
   EXPECT_EQ(set.open_segments.size(), 2u);
@@ -320,7 +320,7 @@ TEST(Loops, LooseEndsAndTJunctions) {
 TEST(Loops, JunctionsOfMoreThanTwoEnds) {
   // Two triangles touching at a vertex (a bow tie) give two loops; a
   // doubled side leaves the square closed and the copy open.
-  std::vector<Segment> bow = {line({0, 0}, {2, 1}), line({2, 1}, {2, -1}), line({2, -1}, {0, 0}),
+  std::vector<Segment> bow = {line({0, 0}, {2, 1}),  line({2, 1}, {2, -1}),   line({2, -1}, {0, 0}),
                               line({0, 0}, {-2, 1}), line({-2, 1}, {-2, -1}), line({-2, -1}, {0, 0})};
   const LoopSet tie = build_loops(bow, 1e-9);
   ASSERT_EQ(tie.loops.size(), 2u);
@@ -529,9 +529,10 @@ TEST(RegionIndex, MatchesBruteForceWithExtremeBulgesAndFarPoints) {
   // circle, on an outline with long and short sides; a hole that is a
   // three-quarter circle closed by a nearly flat arc.
   const std::vector<Segment> outline = {arc({0, 0}, {100, 0}, 1e-10),  arc({100, 0}, {100, 50}, -3e-9),
-                                        arc({100, 50}, {60, 50}, 2.5),  line({60, 50}, {40, 50}),
-                                        arc({40, 50}, {0, 50}, -0.8),   arc({0, 50}, {0, 0}, 1e-11)};
-  const std::vector<Segment> hole = {arc({20, 20}, {30, 20}, -std::tan(3 * std::numbers::pi / 8)), arc({30, 20}, {20, 20}, -1e-6)};
+                                        arc({100, 50}, {60, 50}, 2.5), line({60, 50}, {40, 50}),
+                                        arc({40, 50}, {0, 50}, -0.8),  arc({0, 50}, {0, 0}, 1e-11)};
+  const std::vector<Segment> hole = {arc({20, 20}, {30, 20}, -std::tan(3 * std::numbers::pi / 8)),
+                                     arc({30, 20}, {20, 20}, -1e-6)};
   const std::vector<Loop> loops = {{outline, 0, -1, 0}, {hole, 1, 0, 0}};
   std::vector<Point> points = probe_points(random, loops, 60000);
   std::uniform_real_distribution<double> far(-1e4, 1e4);

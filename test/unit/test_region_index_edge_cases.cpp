@@ -25,7 +25,8 @@ Segment element(Point a, Point b, double bulge = 0) {
 
 Loop closed(const std::vector<Point>& corners) {
   Loop loop;
-  for (std::size_t i = 0; i < corners.size(); ++i) loop.segments.push_back(element(corners[i], corners[(i + 1) % corners.size()]));
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    loop.segments.push_back(element(corners[i], corners[(i + 1) % corners.size()]));
   return loop;
 }
 
@@ -48,7 +49,8 @@ TEST(RegionIndexEdgeCases, StripLongerThanTheOldGridCapMatchesBruteForce) {
   std::mt19937_64 random(41);
   std::vector<Point> points = scatter(random, 1500, -300, 6300, -1, 2.3);
   for (const Point& p : scatter(random, 1000, 0, 6000, 0.9, 1.4)) points.push_back(p);  // among the teeth
-  for (int i = 0; i < 300; ++i) points.push_back({6000.0 * (13 * i) / teeth, i % 3 ? 1.15 : 0.5});  // on vertices' verticals
+  for (int i = 0; i < 300; ++i)
+    points.push_back({6000.0 * (13 * i) / teeth, i % 3 ? 1.15 : 0.5});  // on vertices' verticals
   const probe::Comparison c = probe::compare(loops, points);
   EXPECT_GT(c.sign_checked, 2500u);
 }

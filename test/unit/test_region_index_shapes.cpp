@@ -45,7 +45,8 @@ Loop spiky_gear(std::size_t spikes) {
   const double root = double(spikes) * 0.5 / (2 * std::numbers::pi);
   std::vector<Point> v;
   for (std::size_t i = 0; i < spikes; ++i) {
-    const double a = 2 * std::numbers::pi * double(i) / double(spikes), b = 2 * std::numbers::pi * (double(i) + 0.5) / double(spikes);
+    const double a = 2 * std::numbers::pi * double(i) / double(spikes),
+                 b = 2 * std::numbers::pi * (double(i) + 0.5) / double(spikes);
     v.push_back({root * std::cos(a), root * std::sin(a)});
     v.push_back({(root + 5) * std::cos(b), (root + 5) * std::sin(b)});
   }

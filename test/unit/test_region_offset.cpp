@@ -139,7 +139,8 @@ TEST(RegionOffset, HoleShrinksAndVanishesWhenTheToolIsWider) {
 
 TEST(RegionOffset, NarrowSlotClosesAndIsReportedUncut) {
   // 60 x 40 with a slot 3 wide and 15 deep from the top: a 4 mm tool does not enter.
-  const Offset o = offset(polygon_segments({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
+  const Offset o =
+      offset(polygon_segments({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
   ASSERT_EQ(o.result.loops.size(), 1u);
   // Steiner for the block, less the dent over the slot's mouth that neither
   // corner arc reaches: twice the integral of 2 - sqrt(4 - u^2), u in 0..1.5.
@@ -207,7 +208,8 @@ TEST(GuardQuery, BarrierIsTheNearestAllowedPoint) {
 }
 
 TEST(GuardQuery, InASlotNarrowerThanTheToolTheBarrierIsTheContour) {
-  const Offset o = offset(polygon_segments({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
+  const Offset o =
+      offset(polygon_segments({{0, 0}, {60, 0}, {60, 40}, {31.5, 40}, {31.5, 25}, {28.5, 25}, {28.5, 40}, {0, 40}}), 2);
   ASSERT_TRUE(o.result.contour);
   // Over the slot's mouth the region's boundary is the two corner arcs (radius 2 about (28.5, 40) and
   // (31.5, 40)), which meet at the dent (30, 40 + sqrt(4 - 1.5^2)). From deep in the slot, and from
@@ -238,7 +240,7 @@ TEST(InvasionGuard, LatencyAwareStopFromTheApproachSpeed) {
   EXPECT_FALSE(*c.stop);
   c = guard.check({5, -6}, 0.2);  // distance 5
   EXPECT_NEAR(*c.approach_mm_s, 20, 1e-9);
-  EXPECT_FALSE(*c.stop);  // 5 - 2 > 0
+  EXPECT_FALSE(*c.stop);              // 5 - 2 > 0
   c = guard.check({5, -2.5}, 0.375);  // distance 1.5 < 2 covered in 0.1 s
   EXPECT_TRUE(*c.stop);
   EXPECT_THROW(guard.check({5, -2}, 0.3), tk::Error);

@@ -18,7 +18,8 @@ using namespace tk::primes;
 std::vector<std::uint64_t> llr_primes(std::uint64_t k, std::uint64_t n_max) {
   std::vector<std::uint64_t> ns;
   for (std::uint64_t n = 2; n <= n_max; ++n)
-    if ((n >= 64 || k < (std::uint64_t(1) << n)) && llr_prove(k, n, LlrStart::llr).verdict == Verdict::prime) ns.push_back(n);
+    if ((n >= 64 || k < (std::uint64_t(1) << n)) && llr_prove(k, n, LlrStart::llr).verdict == Verdict::prime)
+      ns.push_back(n);
   return ns;
 }
 
@@ -31,14 +32,15 @@ std::vector<std::uint64_t> proth_primes(std::uint64_t k, std::uint64_t n_max) {
 
 TEST(RieselProof, OeisA002235ThreeTimesPowerMinusOne) {
   // n with 3*2^n - 1 prime (OEIS A002235), n >= 2 (k < 2^n)
-  EXPECT_EQ(llr_primes(3, 1300), (std::vector<std::uint64_t>{2, 3, 4, 6, 7, 11, 18, 34, 38, 43, 55, 64, 76, 94, 103, 143,
-                                                            206, 216, 306, 324, 391, 458, 470, 827, 1274}));
+  EXPECT_EQ(llr_primes(3, 1300),
+            (std::vector<std::uint64_t>{2,  3,   4,   6,   7,   11,  18,  34,  38,  43,  55,  64,  76,
+                                        94, 103, 143, 206, 216, 306, 324, 391, 458, 470, 827, 1274}));
 }
 
 TEST(RieselProof, OeisA002253ThreeTimesPowerPlusOne) {
   // n with 3*2^n + 1 prime (OEIS A002253), n >= 2 (k < 2^n)
-  EXPECT_EQ(proth_primes(3, 1300), (std::vector<std::uint64_t>{2, 5, 6, 8, 12, 18, 30, 36, 41, 66, 189, 201, 209, 276, 353,
-                                                              408, 438, 534}));
+  EXPECT_EQ(proth_primes(3, 1300),
+            (std::vector<std::uint64_t>{2, 5, 6, 8, 12, 18, 30, 36, 41, 66, 189, 201, 209, 276, 353, 408, 438, 534}));
 }
 
 TEST(RieselProof, OeisA002254FiveTimesPowerPlusOne) {
@@ -105,7 +107,7 @@ TEST(RieselProof, ResumingFromAStateGivesTheSameResult) {
 }
 
 TEST(RieselProof, BadFormsAreErrors) {
-  EXPECT_THROW(llr_prove(4, 10, LlrStart::llr), tk::Error);    // even k
+  EXPECT_THROW(llr_prove(4, 10, LlrStart::llr), tk::Error);     // even k
   EXPECT_THROW(llr_prove(2049, 11, LlrStart::llr), tk::Error);  // k >= 2^n
   EXPECT_THROW(llr_prove(1, 1, LlrStart::llr), tk::Error);      // n < 2
   EXPECT_THROW(proth_prove(3, 1), tk::Error);                   // k >= 2^n
@@ -140,7 +142,8 @@ TEST(RieselProof, AStateOutsideTheProofIsRefusedAndTheProofStartsOver) {
     EXPECT_EQ(verdict, Verdict::prime) << iteration;
     EXPECT_FALSE(why.empty()) << iteration;
   }
-  EXPECT_EQ(resumed_from(3, 391, -1, ProofState{99999999, 5}).second, "iteration 99999999 is outside this proof (389 squarings)");
+  EXPECT_EQ(resumed_from(3, 391, -1, ProofState{99999999, 5}).second,
+            "iteration 99999999 is outside this proof (389 squarings)");
   EXPECT_EQ(resumed_from(3, 391, -1, ProofState{100, llr_N}).second, "residue is not below N");
   // A state inside the proof is used (here a wrong one: the verdict follows it).
   EXPECT_EQ(resumed_from(3, 391, -1, ProofState{100, 5}), (std::pair<Verdict, std::string>{Verdict::composite, ""}));

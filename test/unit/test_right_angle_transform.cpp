@@ -30,7 +30,8 @@ std::vector<std::int64_t> exact_square(const std::vector<std::int64_t>& x) {
 double worst_error(RightAngleSquarer& squarer, int bits, std::uint32_t seed) {
   const std::size_t length = squarer.length();
   std::mt19937_64 random(seed);
-  std::uniform_int_distribution<std::int64_t> digit(-(std::int64_t{1} << (bits - 1)), (std::int64_t{1} << (bits - 1)) - 1);
+  std::uniform_int_distribution<std::int64_t> digit(-(std::int64_t{1} << (bits - 1)),
+                                                    (std::int64_t{1} << (bits - 1)) - 1);
   std::vector<std::int64_t> x(length / 2);
   std::vector<double> input(length, 0.0), output(length, -1.0);
   for (std::size_t j = 0; j < x.size(); ++j) input[j] = static_cast<double>(x[j] = digit(random));
@@ -55,7 +56,8 @@ TEST(RightAngleSquarer, ExactSquaresAtEveryKindOfLength) {
   // 2^a, 3 * 2^a, 9 * 2^a, 27 * 2^a; odd and even powers of 4 over the
   // lanes; lengths whose blocks all fit one inner block and lengths with
   // passes over the whole array (L/2 > 1024).
-  const std::size_t lengths[] = {64, 96, 128, 192, 256, 288, 384, 512, 576, 864, 1024, 1536, 2048, 2304, 3072, 3456, 4096, 6144, 9216, 13824, 18432};
+  const std::size_t lengths[] = {64,   96,   128,  192,  256,  288,  384,  512,  576,   864,  1024,
+                                 1536, 2048, 2304, 3072, 3456, 4096, 6144, 9216, 13824, 18432};
   int tried = 0;
   for (auto simd : widths)
     for (std::size_t length : lengths) {

@@ -80,8 +80,8 @@ TEST(GeneralizedSieve, EveryFormMatchesTrialDivision) {
   const struct {
     SieveForm form;
     unsigned length;
-  } forms[] = {{SieveForm::twin, 1}, {SieveForm::sg, 1}, {SieveForm::riesel, 1}, {SieveForm::proth, 1},
-               {SieveForm::cc1, 2},  {SieveForm::cc1, 3}, {SieveForm::cc2, 2},   {SieveForm::cc2, 4}};
+  } forms[] = {{SieveForm::twin, 1}, {SieveForm::sg, 1},  {SieveForm::riesel, 1}, {SieveForm::proth, 1},
+               {SieveForm::cc1, 2},  {SieveForm::cc1, 3}, {SieveForm::cc2, 2},    {SieveForm::cc2, 4}};
   for (const auto& f : forms)
     for (std::uint64_t n : {1u, 2u, 5u, 12u, 20u})
       for (std::uint64_t p_max : {3u, 50u, 2000u}) {
@@ -166,7 +166,8 @@ TEST(SieveRoots, RootsSolveTheirMembers) {
     spec.x_min = random() % 1000;
     SieveRootFinder finder(spec);
     std::vector<std::uint64_t> primes = primes_between(1000003, 1000003 + 2000);
-    for (std::uint64_t p : primes_between((std::uint64_t(1) << 40) + 1, (std::uint64_t(1) << 40) + 400)) primes.push_back(p);
+    for (std::uint64_t p : primes_between((std::uint64_t(1) << 40) + 1, (std::uint64_t(1) << 40) + 400))
+      primes.push_back(p);
     std::vector<std::uint64_t> roots(primes.size() * finder.member_count());
     finder.find(primes.data(), primes.size(), roots.data());
     for (std::size_t i = 0; i < primes.size(); ++i) {
@@ -280,7 +281,8 @@ TEST(NumberOption, PrimeHuntersNotation) {
   EXPECT_EQ(parse_count("2^63", "x"), std::uint64_t(1) << 63);
   EXPECT_EQ(parse_count("0^0", "x"), 1u);
   EXPECT_EQ(parse_count("1e19", "x"), 10000000000000000000u);
-  for (const char* bad : {"", "-1", "1e20", "2^64", "1.25e1", "1.5", "abc", "1e", "^3", "1:2", "0x10", "1e-3", "99999999999999999999"})
+  for (const char* bad :
+       {"", "-1", "1e20", "2^64", "1.25e1", "1.5", "abc", "1e", "^3", "1:2", "0x10", "1e-3", "99999999999999999999"})
     EXPECT_THROW(parse_count(bad, "x"), tk::UsageError) << bad;
   EXPECT_EQ(tk::cli::parse_range("1:1e3", "x"), std::make_pair(std::uint64_t(1), std::uint64_t(1000)));
   EXPECT_THROW(tk::cli::parse_range("5:4", "x"), tk::UsageError);
@@ -318,8 +320,8 @@ class SieveFiles : public ::testing::Test {
     std::ifstream in(file, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
-  std::string write(GeneralizedSieve& sieve, SieveOutputFormat format, const std::string& name, unsigned shard_index = 0,
-                    unsigned shard_count = 1) const {
+  std::string write(GeneralizedSieve& sieve, SieveOutputFormat format, const std::string& name,
+                    unsigned shard_index = 0, unsigned shard_count = 1) const {
     std::FILE* out = std::fopen(path(name).c_str(), "wb");
     write_survivors(sieve, format, sieve.spec().p_max, out, shard_index, shard_count);
     std::fclose(out);
@@ -409,7 +411,8 @@ TEST_F(SieveFiles, OutputFormats) {
   // 6*32 -+ 1 = 191, 193 and 36*32 -+ 1 = 1151, 1153 are the twin primes here.
   EXPECT_EQ(slurp(write(twin, SieveOutputFormat::newpgen, "t.npg")), "1000:T:0:2:3\n6 5\n36 5\n");
   EXPECT_EQ(slurp(write(twin, SieveOutputFormat::abc, "t.abc")), "ABC $a*2^5+1 & $a*2^5-1 // Sieved to 1000\n6\n36\n");
-  EXPECT_EQ(slurp(write(twin, SieveOutputFormat::abcd, "t.abcd")), "ABCD $a*2^5+1 & $a*2^5-1 [6] // Sieved to 1000\n30\n");
+  EXPECT_EQ(slurp(write(twin, SieveOutputFormat::abcd, "t.abcd")),
+            "ABCD $a*2^5+1 & $a*2^5-1 [6] // Sieved to 1000\n30\n");
   EXPECT_EQ(slurp(write(twin, SieveOutputFormat::json_lines, "t.jsonl")),
             "{\"k\":6,\"n\":5,\"form\":\"twin\"}\n{\"k\":36,\"n\":5,\"form\":\"twin\"}\n");
   EXPECT_EQ(slurp(write(twin, SieveOutputFormat::csv, "t.csv")), "k,n,form\n6,5,twin\n36,5,twin\n");
@@ -483,7 +486,8 @@ TEST(SieveShardTrailer, RoundTripAndCutShort) {
   EXPECT_EQ(parsed->count, 5u);
   EXPECT_EQ(parsed->candidates, 1225u);
   EXPECT_EQ(parsed->run, trailer.run);
-  for (std::size_t size = 0; size < line.size(); ++size) EXPECT_FALSE(parse_shard_trailer(line.substr(0, size))) << size;
+  for (std::size_t size = 0; size < line.size(); ++size)
+    EXPECT_FALSE(parse_shard_trailer(line.substr(0, size))) << size;
   EXPECT_FALSE(parse_shard_trailer("// sieve shard 6/5 of x: 1 candidates, complete"));
   EXPECT_FALSE(parse_shard_trailer("// sieve shard 1/1 of x: 1 candidates, complete"));
 }

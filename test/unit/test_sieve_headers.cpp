@@ -31,14 +31,10 @@ struct FormCase {
 };
 
 const std::vector<FormCase> kForms = {
-    {SieveForm::riesel, 1, {{0, -1}}},
-    {SieveForm::proth, 1, {{0, +1}}},
-    {SieveForm::twin, 2, {{0, -1}, {0, +1}}},
-    {SieveForm::sg, 2, {{0, -1}, {1, -1}}},
-    {SieveForm::cc1, 2, {{0, -1}, {1, -1}}},
-    {SieveForm::cc1, 4, {{0, -1}, {1, -1}, {2, -1}, {3, -1}}},
-    {SieveForm::cc2, 2, {{0, +1}, {1, +1}}},
-    {SieveForm::cc2, 3, {{0, +1}, {1, +1}, {2, +1}}},
+    {SieveForm::riesel, 1, {{0, -1}}},        {SieveForm::proth, 1, {{0, +1}}},
+    {SieveForm::twin, 2, {{0, -1}, {0, +1}}}, {SieveForm::sg, 2, {{0, -1}, {1, -1}}},
+    {SieveForm::cc1, 2, {{0, -1}, {1, -1}}},  {SieveForm::cc1, 4, {{0, -1}, {1, -1}, {2, -1}, {3, -1}}},
+    {SieveForm::cc2, 2, {{0, +1}, {1, +1}}},  {SieveForm::cc2, 3, {{0, +1}, {1, +1}, {2, +1}}},
 };
 
 std::vector<mpz_class> sorted_values(std::vector<mpz_class> values) {
@@ -81,8 +77,9 @@ TEST(SieveHeaders, WhatSieveWritesReadsBackAndStandsForTheFormsNumbers) {
       if (kind != CandidateHeader::abcd) {
         EXPECT_FALSE(decoded);
         const bool single = f.form == SieveForm::riesel || f.form == SieveForm::proth;
-        const std::string data = kind == CandidateHeader::abc && !single ? std::to_string(kK)
-                                                                         : std::to_string(kK) + " " + std::to_string(kN);
+        const std::string data = kind == CandidateHeader::abc && !single
+                                     ? std::to_string(kK)
+                                     : std::to_string(kK) + " " + std::to_string(kN);
         decoded = decoder->decode(data, Location{"c.txt", 2}, record);
       }
       ASSERT_TRUE(decoded);

@@ -45,9 +45,9 @@ TYPED_TEST(SquaringSafety, BorderlineDigitsStillNeverGiveAWrongSquare) {
 }
 
 TYPED_TEST(SquaringSafety, RefusesFormsItCannotReduce) {
-  EXPECT_EQ(TypeParam::create(SpecialForm{3, 63, -1}), nullptr);    // n < 64: GMP's job
-  EXPECT_EQ(TypeParam::create(SpecialForm{4, 1000, -1}), nullptr);  // even k
-  EXPECT_EQ(TypeParam::create(SpecialForm{3, 1000, 5}), nullptr);   // c other than +-1
+  EXPECT_EQ(TypeParam::create(SpecialForm{3, 63, -1}), nullptr);                   // n < 64: GMP's job
+  EXPECT_EQ(TypeParam::create(SpecialForm{4, 1000, -1}), nullptr);                 // even k
+  EXPECT_EQ(TypeParam::create(SpecialForm{3, 1000, 5}), nullptr);                  // c other than +-1
   EXPECT_EQ(TypeParam::create_with(SpecialForm{3, 10000, -1}, 512, 16), nullptr);  // would not fit the length
 }
 

@@ -14,9 +14,9 @@
 #include <cmath>
 #include <random>
 
+#include "deviation_study.hpp"
 #include "io/error.hpp"
 #include "motion/stepper.hpp"
-#include "deviation_study.hpp"
 #include "test_volume.hpp"
 
 namespace {
@@ -160,9 +160,13 @@ TEST(Stepper, ArcsAndHelicesStayNearTheirPathAndEndOnTarget) {
       // radius (the helix's rise aside). Within two steps' diagonal.
       const double h = 1.0 / 200;
       for (const auto& point : w.points) {
-        const double p0 = static_cast<double>(point[motion.axis0]) / kStepsPerMm[motion.axis0] - motion.center[motion.axis0];
-        const double p1 = static_cast<double>(point[motion.axis1]) / kStepsPerMm[motion.axis1] - motion.center[motion.axis1];
-        ASSERT_LT(std::fabs(std::hypot(p0, p1) - radius), 2 * std::sqrt(2.0) * h) << "arc " << arc << " method " << int(method) << " radius " << radius << " sweep " << sweep << " turns " << motion.turns;
+        const double p0 =
+            static_cast<double>(point[motion.axis0]) / kStepsPerMm[motion.axis0] - motion.center[motion.axis0];
+        const double p1 =
+            static_cast<double>(point[motion.axis1]) / kStepsPerMm[motion.axis1] - motion.center[motion.axis1];
+        ASSERT_LT(std::fabs(std::hypot(p0, p1) - radius), 2 * std::sqrt(2.0) * h)
+            << "arc " << arc << " method " << int(method) << " radius " << radius << " sweep " << sweep << " turns "
+            << motion.turns;
       }
       for (const StepEvent& event : w.events) ASSERT_LT(std::sqrt(event.deviation_sq), 4 * h) << "arc " << arc;
       from = motion.end;
@@ -328,7 +332,8 @@ TEST(Stepper, DirectDeviatesInProportionToTheLength) {
     double worst = 0;
     for (const auto& point : w.points)
       for (int axis = 1; axis < 3; ++axis)
-        worst = std::max(worst, std::fabs(motion.end[axis] * static_cast<double>(point[0]) / 3000 - static_cast<double>(point[axis])));
+        worst = std::max(worst, std::fabs(motion.end[axis] * static_cast<double>(point[0]) / 3000 -
+                                          static_cast<double>(point[axis])));
     EXPECT_LE(worst, 3000.0 / 8 + 1) << motion.end[1] << " " << motion.end[2];
   }
 }

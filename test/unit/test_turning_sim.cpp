@@ -96,7 +96,7 @@ TEST(TurningModel, ChipIsTheTravelOverOneRevolution) {
   RevolutionHistory h(2.5, 10, 0.1);
   EXPECT_NEAR(h.travel_over_revolution(), 0.25, 1e-12);
   // The tool stops: the chip thins over one revolution to nothing.
-  h.push(10);  // z: ..., 9.8, 9.9, 10, 10
+  h.push(10);                                                 // z: ..., 9.8, 9.9, 10, 10
   EXPECT_NEAR(h.travel_over_revolution(), 10 - 9.85, 1e-12);  // z(t - 2.5) halfway 9.8 .. 9.9
   h.push(10);
   EXPECT_NEAR(h.travel_over_revolution(), 10 - 9.95, 1e-12);

@@ -3,12 +3,12 @@
 /// kinematics against closed forms, and lap runs with hand-written controllers.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <unistd.h>
 #include <numbers>
+#include <sstream>
 
 #include "io/error.hpp"
 #include "vehicle/lap_svg.hpp"
@@ -120,7 +120,7 @@ TEST(VehicleDrive, DeadbandAndClamp) {
   body.set_command({-100, -100});
   drive(body, 1.0, 0.001);
   EXPECT_NEAR(body.pose().x, (255 - 30 - 70) * car.mm_per_s_per_unit, 1e-6);
-  body.set_command({NAN, NAN});  // no drive
+  body.set_command({NAN, NAN});                               // no drive
   EXPECT_EQ(body.left_speed(), -70 * car.mm_per_s_per_unit);  // the command acts on the next step
   body.advance(0.001);
   EXPECT_EQ(body.left_speed(), 0);
@@ -154,7 +154,8 @@ TEST(VehicleLaps, StandingStillStopsAfterOneSecond) {
   EXPECT_LE(r.total_s, options.stop_after_s + options.physics_step_s + 1e-9);
   EXPECT_EQ(r.distance_mm, 0);
   // Centred on the line: mid dark, outer sensors at the floor reading (within 5 sigma of noise).
-  EXPECT_GT(r.readings_at_end.mid, car.floor_counts + 0.99 * (car.line_counts - car.floor_counts) - 5 * car.noise_counts);
+  EXPECT_GT(r.readings_at_end.mid,
+            car.floor_counts + 0.99 * (car.line_counts - car.floor_counts) - 5 * car.noise_counts);
   EXPECT_NEAR(r.readings_at_end.left, car.floor_counts, 5 * car.noise_counts);
   EXPECT_NEAR(r.readings_at_end.right, car.floor_counts, 5 * car.noise_counts);
 }
@@ -163,8 +164,12 @@ TEST(VehicleLaps, DrivingStraightLeavesTheTrackWhereGeometrySays) {
   // Straight on from (0, -300) along +x: 150 mm outside the right half circle
   // (centre (500, 0), radius 300) at x = 500 + sqrt(450^2 - 300^2).
   std::vector<TracePoint> trace;
-  const LapResult r = run_laps(oval_track(1000, 300), CarParameters{}, LapOptions{},
-                               [](const SensorReadings&) { return MotorCommand{144, 144}; }, &trace);
+  const LapResult r = run_laps(
+      oval_track(1000, 300), CarParameters{}, LapOptions{},
+      [](const SensorReadings&) {
+        return MotorCommand{144, 144};
+      },
+      &trace);
   EXPECT_EQ(r.stop_reason, "left the track");
   const double x = 500 + std::sqrt(450.0 * 450 - 300 * 300);
   ASSERT_FALSE(trace.empty());

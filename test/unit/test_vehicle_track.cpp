@@ -3,17 +3,17 @@
 /// nearest-point queries and the track file reader, against closed forms.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 #include <numbers>
 
-#include "temp_file.hpp"
 #include "io/error.hpp"
-#include "vehicle/line_track.hpp"
 #include "project_paths.hpp"
+#include "temp_file.hpp"
+#include "vehicle/line_track.hpp"
 
 using namespace tk::vehicle;
 
@@ -74,7 +74,7 @@ TEST(VehicleTrack, NearestPointOnStraightAndArc) {
   EXPECT_NEAR(track.nearest(p).distance, 5, 0.011);
   EXPECT_NEAR(track.distance_within(p, 10), track.nearest(p).distance, 1e-12);
   EXPECT_TRUE(std::isinf(track.distance_within(p, 4)));
-  EXPECT_TRUE(std::isinf(track.distance_within({0, 0}, 100)));  // the infield's middle
+  EXPECT_TRUE(std::isinf(track.distance_within({0, 0}, 100)));        // the infield's middle
   EXPECT_TRUE(std::isinf(track.distance_within({5000, 5000}, 100)));  // off the grid
   // The windowed query agrees with the scan near its hint.
   const Nearest near = track.nearest_near(p, track.nearest(p).piece + 3, 60);
@@ -90,7 +90,8 @@ TEST(VehicleTrack, CircleWhenStraightsAreZero) {
 }
 
 TEST(VehicleTrack, ReadsCsvFixtureOfKnownLength) {
-  const Track track = read_track((tk::test::project_root() / "test" / "fixtures" / "tracks" / "rounded_rectangle.csv").string());
+  const Track track =
+      read_track((tk::test::project_root() / "test" / "fixtures" / "tracks" / "rounded_rectangle.csv").string());
   // 1200 x 800 with 200 mm corners: straights 2 (800 + 400), corners 4 x 30 chords of 3 degrees.
   EXPECT_NEAR(track.length_mm(), 2400 + 120 * 2 * 200 * std::sin(1.5 * std::numbers::pi / 180), 1e-3);
   EXPECT_DOUBLE_EQ(track.start().y, -400);

@@ -22,8 +22,16 @@ using squaring_test::value_of;
 TEST(WeightedSquaring, MatchesGmpForManyKOfBothSigns) {
   gmp_randclass random(gmp_randinit_default);
   random.seed(20261123);
-  const std::uint64_t ks[] = {1, 3, 5, 1023, 65537, 778965587811ull, 16869987339975ull, (1ull << 44) - 1,
-                              (1ull << 56) - 1, 72057594037927935ull - 2};
+  const std::uint64_t ks[] = {1,
+                              3,
+                              5,
+                              1023,
+                              65537,
+                              778965587811ull,
+                              16869987339975ull,
+                              (1ull << 44) - 1,
+                              (1ull << 56) - 1,
+                              72057594037927935ull - 2};
   const std::uint64_t ns[] = {64, 65, 127, 128, 1000, 4503, 36627};
   for (std::uint64_t k : ks)
     for (std::uint64_t n : ns)
@@ -59,7 +67,8 @@ TEST(WeightedSquaring, EdgeValuesIncludingANegativeSquareMinusTwo) {
     const mpz_class N = value_of(form);
     auto squarer = WeightedSquaring::create(form);
     ASSERT_NE(squarer, nullptr);
-    for (const mpz_class& x : {mpz_class(0), mpz_class(1), mpz_class(2), mpz_class(N - 1), mpz_class(N - 2), mpz_class(N / 2)})
+    for (const mpz_class& x :
+         {mpz_class(0), mpz_class(1), mpz_class(2), mpz_class(N - 1), mpz_class(N - 2), mpz_class(N / 2)})
       for (unsigned long minus : {0ul, 2ul}) expect_chain_matches(*squarer, form, x, minus, 3);
   }
 }
@@ -86,9 +95,9 @@ TEST(WeightedSquaring, EveryTransformMatchesGmp) {
     std::size_t length;
     int digit_bits;
   };
-  const Case cases[] = {{{778965587811ull, 36627, -1}, 4096, 21},  {{3, 36627, 1}, 6144, 14},
-                        {{16869987339975ull, 60000, -1}, 6144, 21}, {{(1ull << 56) - 5, 90001, 1}, 9216, 21},
-                        {{1, 20000, -1}, 2304, 19},                 {{65537, 4503, 1}, 576, 19}};
+  const Case cases[] = {
+      {{778965587811ull, 36627, -1}, 4096, 21}, {{3, 36627, 1}, 6144, 14},  {{16869987339975ull, 60000, -1}, 6144, 21},
+      {{(1ull << 56) - 5, 90001, 1}, 9216, 21}, {{1, 20000, -1}, 2304, 19}, {{65537, 4503, 1}, 576, 19}};
   using Transform = WeightedSquaring::Transform;
   int own = 0;
   for (Transform transform : {Transform::widest, Transform::avx2, Transform::fftw})

@@ -10,13 +10,13 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
-#include "threads/iso261.hpp"
 #include "project_paths.hpp"
+#include "threads/iso261.hpp"
 
 using namespace tk::threads;
 
@@ -44,9 +44,9 @@ TEST(Iso261Table, WellKnownCoarsePitches) {
     double d;
     double coarse;
   };
-  for (const Case c : {Case{1, 0.25}, Case{6, 1}, Case{8, 1.25}, Case{10, 1.5}, Case{12, 1.75},
-                       Case{16, 2}, Case{20, 2.5}, Case{24, 3}, Case{30, 3.5}, Case{36, 4},
-                       Case{42, 4.5}, Case{48, 5}, Case{56, 5.5}, Case{64, 6}, Case{68, 6}}) {
+  for (const Case c :
+       {Case{1, 0.25}, Case{6, 1}, Case{8, 1.25}, Case{10, 1.5}, Case{12, 1.75}, Case{16, 2}, Case{20, 2.5},
+        Case{24, 3}, Case{30, 3.5}, Case{36, 4}, Case{42, 4.5}, Case{48, 5}, Case{56, 5.5}, Case{64, 6}, Case{68, 6}}) {
     const auto row = iso261_size(c.d);
     ASSERT_TRUE(row.has_value()) << "M" << c.d;
     EXPECT_DOUBLE_EQ(row->diameter_mm, c.d);
@@ -81,8 +81,7 @@ TEST(Iso261Table, FinePitchesAscendingForKnownRows) {
 }
 
 TEST(Iso261Table, SizesWithoutCoarsePitch) {
-  for (double d : {5.5, 15.0, 17.0, 25.0, 26.0, 28.0, 32.0, 35.0, 38.0, 40.0, 50.0, 55.0, 58.0,
-                   62.0, 65.0}) {
+  for (double d : {5.5, 15.0, 17.0, 25.0, 26.0, 28.0, 32.0, 35.0, 38.0, 40.0, 50.0, 55.0, 58.0, 62.0, 65.0}) {
     EXPECT_EQ(iso261_size(d)->coarse_pitch_mm, 0.0) << "M" << d;
   }
   EXPECT_DOUBLE_EQ(iso261_size(9)->coarse_pitch_mm, 1.25);
@@ -112,8 +111,7 @@ TEST(Iso261Table, EveryRowIsConsistent) {
     EXPECT_LE(row.choice, 3);
     ASSERT_FALSE(row.fine_pitches_mm.empty());
     EXPECT_TRUE(std::is_sorted(row.fine_pitches_mm.begin(), row.fine_pitches_mm.end()));
-    EXPECT_EQ(std::adjacent_find(row.fine_pitches_mm.begin(), row.fine_pitches_mm.end()),
-              row.fine_pitches_mm.end());
+    EXPECT_EQ(std::adjacent_find(row.fine_pitches_mm.begin(), row.fine_pitches_mm.end()), row.fine_pitches_mm.end());
     for (double p : row.fine_pitches_mm) {
       EXPECT_GT(p, 0.0);
       if (row.coarse_pitch_mm > 0) {
@@ -127,8 +125,8 @@ TEST(Iso261Table, EveryRowIsConsistent) {
 }
 
 TEST(Iso261Lookup, UnknownDiametersAreNullopt) {
-  for (double d : {0.0, 0.9, 1.3, 1.7, 2.3, 2.6, 13.0, 19.0, 21.0, 23.0, 34.0, 66.0, 67.0, 77.0,
-                   301.0, 1000.0, -6.0, std::nan("")}) {
+  for (double d : {0.0, 0.9, 1.3, 1.7, 2.3, 2.6, 13.0, 19.0, 21.0, 23.0, 34.0, 66.0, 67.0, 77.0, 301.0, 1000.0, -6.0,
+                   std::nan("")}) {
     EXPECT_FALSE(iso261_size(d).has_value()) << d;
   }
 }
@@ -173,9 +171,9 @@ TEST(Iso261Fixture, LimitsFixtureUsesIso261Combinations) {
   std::string line;
   ASSERT_TRUE(std::getline(in, line));
   const auto header = split_csv(line);
-  const std::vector<std::string> expected{"designation", "d_max", "d_min", "d2_max", "d2_min",
-                                          "d3_max", "D1_min", "D1_max", "D2_min", "D2_max",
-                                          "source", "external_class", "internal_class"};
+  const std::vector<std::string> expected{"designation", "d_max",          "d_min",         "d2_max", "d2_min",
+                                          "d3_max",      "D1_min",         "D1_max",        "D2_min", "D2_max",
+                                          "source",      "external_class", "internal_class"};
   ASSERT_EQ(header, expected);
   int rows = 0;
   std::set<std::pair<long, long>> covered;  // (d, P) in micrometres

@@ -45,8 +45,8 @@ std::vector<Entry> all_entries() {
     const std::string at = " P " + std::to_string(p);
     for (int g : {4, 6, 8})
       if (auto v = major_diameter_tolerance(g, p))
-        out.push_back({"Td" + at, g, v->value, major_factor(g) * td6(p),
-                       double(major_diameter_tolerance(6, p)->value), major_factor(g)});
+        out.push_back({"Td" + at, g, v->value, major_factor(g) * td6(p), double(major_diameter_tolerance(6, p)->value),
+                       major_factor(g)});
     for (int g = 4; g <= 8; ++g)
       if (auto v = minor_diameter_tolerance(g, p)) {
         auto six = minor_diameter_tolerance(6, p);
@@ -61,8 +61,8 @@ std::vector<Entry> all_entries() {
         out.push_back({"TD1 P " + std::to_string(p), g, v->value, minor_factor(g) * td1_6(p), 0, 0});
   for (const Iso965DiameterPitch& r : iso965_pitch_diameter_rows()) {
     const double d = (r.over_mm + r.up_to_mm) / 2;  // any diameter inside the range
-    const std::string at = " d " + std::to_string(r.over_mm) + "-" + std::to_string(r.up_to_mm) + " P " +
-                           std::to_string(r.pitch_mm);
+    const std::string at =
+        " d " + std::to_string(r.over_mm) + "-" + std::to_string(r.up_to_mm) + " P " + std::to_string(r.pitch_mm);
     const double raw = td2_6(r.pitch_mm, r.over_mm, r.up_to_mm);
     const double six = external_pitch_diameter_tolerance(6, d, r.pitch_mm)->value;
     for (int g = 3; g <= 9; ++g)
@@ -87,8 +87,8 @@ bool is_r40(int v) {
   static const std::vector<int> mantissa = {100, 106, 112, 118, 125, 132, 140, 150, 160, 170, 180, 190, 200, 212,
                                             224, 236, 250, 265, 280, 300, 315, 335, 355, 375, 400, 425, 450, 475,
                                             500, 530, 560, 600, 630, 670, 710, 750, 800, 850, 900, 950};
-  static const std::vector<int> two_digit = {17, 18, 19, 20, 21, 22, 24, 25, 26, 28, 30, 32, 34, 36, 38,
-                                             40, 42, 45, 48, 50, 53, 56, 60, 63, 67, 71, 75, 80, 85, 90, 95};
+  static const std::vector<int> two_digit = {17, 18, 19, 20, 21, 22, 24, 25, 26, 28, 30, 32, 34, 36, 38, 40,
+                                             42, 45, 48, 50, 53, 56, 60, 63, 67, 71, 75, 80, 85, 90, 95};
   for (int m : mantissa)
     if (v == m || v == 10 * m) return true;
   for (int m : two_digit)
@@ -121,8 +121,8 @@ TEST(Iso965Tables, EntryCounts) {
 // A digit typo (365 for 265, 198 for 180) is 10 % or more off.
 TEST(Iso965Tables, EveryToleranceNearFormula) {
   for (const Entry& e : all_entries())
-    EXPECT_NEAR(e.value / e.formula, 1.0, 0.07) << e.what << " grade " << e.grade << ": " << e.value
-                                                << " against formula " << e.formula;
+    EXPECT_NEAR(e.value / e.formula, 1.0, 0.07)
+        << e.what << " grade " << e.grade << ": " << e.value << " against formula " << e.formula;
 }
 
 // Within a row the grades follow the clause 10 factors: every entry within 4.5 % of
@@ -197,18 +197,18 @@ TEST(Iso965Deviations, SignsSourcesAndUndefinedPositions) {
 // ---------------------------------------------------------------- published anchors
 
 TEST(Iso965Anchors, PublishedValues) {
-  EXPECT_EQ(external_pitch_diameter_tolerance(6, 8, 1.0)->value, 112);    // M8x1 6g
-  EXPECT_EQ(external_pitch_diameter_tolerance(6, 10, 1.5)->value, 132);   // M10 6g
-  EXPECT_EQ(external_pitch_diameter_tolerance(6, 30, 2.0)->value, 170);   // 22.4-45, P 2
+  EXPECT_EQ(external_pitch_diameter_tolerance(6, 8, 1.0)->value, 112);   // M8x1 6g
+  EXPECT_EQ(external_pitch_diameter_tolerance(6, 10, 1.5)->value, 132);  // M10 6g
+  EXPECT_EQ(external_pitch_diameter_tolerance(6, 30, 2.0)->value, 170);  // 22.4-45, P 2
   EXPECT_EQ(internal_pitch_diameter_tolerance(6, 30, 2.0)->value, 224);
   EXPECT_EQ(major_diameter_tolerance(6, 1.0)->value, 180);
   EXPECT_EQ(major_diameter_tolerance(6, 1.5)->value, 236);
   EXPECT_EQ(major_diameter_tolerance(6, 2.0)->value, 280);
   EXPECT_EQ(minor_diameter_tolerance(6, 2.0)->value, 375);
   // entries the tables smooth away from the formula (kept as printed)
-  EXPECT_EQ(major_diameter_tolerance(6, 4.0)->value, 475);                // formula 452
-  EXPECT_EQ(external_pitch_diameter_tolerance(6, 3, 0.5)->value, 75);     // formula 78.3
-  EXPECT_EQ(minor_diameter_tolerance(7, 0.5)->value, 180);                // formula 168.7
+  EXPECT_EQ(major_diameter_tolerance(6, 4.0)->value, 475);             // formula 452
+  EXPECT_EQ(external_pitch_diameter_tolerance(6, 3, 0.5)->value, 75);  // formula 78.3
+  EXPECT_EQ(minor_diameter_tolerance(7, 0.5)->value, 180);             // formula 168.7
   // the four cells where source B disagrees with A, C and the formula
   EXPECT_EQ(external_pitch_diameter_tolerance(9, 16, 1.25)->value, 265);
   EXPECT_EQ(external_pitch_diameter_tolerance(9, 60, 2.0)->value, 355);
@@ -270,11 +270,16 @@ TEST(Iso965Anchors, YamawaTapCatalogue) {
     int td2[3];  // 4H 5H 6H, 0 = not listed (the standard has no 6H at P 0.25)
     int G;       // 0 = not listed
   };
-  for (const Row& r : std::vector<Row>{{1.0, 0.25, {45, 56, 0}, 0},    {1.4, 0.3, {48, 60, 75}, 0},
-                                       {1.6, 0.35, {53, 67, 85}, 0},   {2.0, 0.4, {56, 71, 90}, 0},
-                                       {2.5, 0.45, {60, 75, 95}, 0},   {3.0, 0.5, {63, 80, 100}, 20},
-                                       {3.5, 0.6, {71, 90, 112}, 21},  {4.0, 0.7, {75, 95, 118}, 22},
-                                       {5.0, 0.8, {80, 100, 125}, 24}, {6.0, 1.0, {95, 118, 150}, 26},
+  for (const Row& r : std::vector<Row>{{1.0, 0.25, {45, 56, 0}, 0},
+                                       {1.4, 0.3, {48, 60, 75}, 0},
+                                       {1.6, 0.35, {53, 67, 85}, 0},
+                                       {2.0, 0.4, {56, 71, 90}, 0},
+                                       {2.5, 0.45, {60, 75, 95}, 0},
+                                       {3.0, 0.5, {63, 80, 100}, 20},
+                                       {3.5, 0.6, {71, 90, 112}, 21},
+                                       {4.0, 0.7, {75, 95, 118}, 22},
+                                       {5.0, 0.8, {80, 100, 125}, 24},
+                                       {6.0, 1.0, {95, 118, 150}, 26},
                                        {8.0, 1.25, {100, 125, 160}, 28}}) {
     for (int i = 0; i < 3; ++i) EXPECT_EQ(value_or_zero(internal_pitch_diameter_tolerance(4 + i, r.d, r.p)), r.td2[i]);
     if (r.G) {
@@ -363,10 +368,10 @@ TEST(Iso965Monotonic, ComputedValuesNeverShrinkWithPitch) {
 // ---------------------------------------------------------------- lookups
 
 TEST(Iso965Lookup, DiameterRangesAreOverUpToAndIncluding) {
-  EXPECT_EQ(external_pitch_diameter_tolerance(6, 1.4, 0.3)->value, 56);   // 1.4 is in 0.99-1.4
+  EXPECT_EQ(external_pitch_diameter_tolerance(6, 1.4, 0.3)->value, 56);  // 1.4 is in 0.99-1.4
   EXPECT_FALSE(external_pitch_diameter_tolerance(6, 1.4, 0.3)->computed);
   EXPECT_TRUE(external_pitch_diameter_tolerance(6, 1.41, 0.3)->computed);  // 1.4-2.8 lists no 0.3
-  EXPECT_EQ(external_pitch_diameter_tolerance(6, 5.6, 0.8)->value, 95);   // 2.8-5.6
+  EXPECT_EQ(external_pitch_diameter_tolerance(6, 5.6, 0.8)->value, 95);    // 2.8-5.6
   EXPECT_EQ(external_pitch_diameter_tolerance(6, 5.61, 1.0)->value, 112);  // 5.6-11.2
   EXPECT_EQ(external_pitch_diameter_tolerance(6, 355, 8.0)->value, 355);
   EXPECT_TRUE(external_pitch_diameter_tolerance(6, 355.1, 8.0)->computed);
@@ -405,7 +410,7 @@ TEST(Iso965Computed, UntabulatedPitchOrDiameter) {
   EXPECT_EQ(fundamental_deviation('h', 0.9)->value, 0);
   EXPECT_FALSE(fundamental_deviation('h', 0.9)->computed);  // zero by definition at every pitch
   // R40 values under 100 um go to whole micrometres with halves to even, as the tables print them:
-  EXPECT_EQ(fundamental_deviation('G', 1.1)->value, 26);   // 27.1 -> R40 26.5 -> 26
+  EXPECT_EQ(fundamental_deviation('G', 1.1)->value, 26);    // 27.1 -> R40 26.5 -> 26
   EXPECT_EQ(fundamental_deviation('g', 1.45)->value, -32);  // 30.95 -> R40 31.5 -> 32
   // beyond the tables' 8 mm
   EXPECT_EQ(major_diameter_tolerance(6, 10)->value, 850);  // 180 * 10^(2/3) - 3.15 / sqrt(10) = 834.5 -> 850
@@ -413,8 +418,8 @@ TEST(Iso965Computed, UntabulatedPitchOrDiameter) {
 
 // A grade the tables leave empty stays empty, tabulated or not.
 TEST(Iso965Computed, EmptyCellsAndFinePitchesGiveNothing) {
-  EXPECT_FALSE(major_diameter_tolerance(8, 0.5));    // Td(8) starts at P 0.8
-  EXPECT_FALSE(major_diameter_tolerance(8, 0.55));   // not tabulated, still below 0.8
+  EXPECT_FALSE(major_diameter_tolerance(8, 0.5));   // Td(8) starts at P 0.8
+  EXPECT_FALSE(major_diameter_tolerance(8, 0.55));  // not tabulated, still below 0.8
   EXPECT_TRUE(major_diameter_tolerance(8, 0.9));
   EXPECT_FALSE(minor_diameter_tolerance(8, 0.75));
   EXPECT_FALSE(minor_diameter_tolerance(6, 0.25));

@@ -54,9 +54,19 @@ TEST(ThreadDesignation, ReadsTheSpellingsUsersWrite) {
   // A space separates parts as '-' does; dashes and the minus sign are '-'.
   EXPECT_EQ(parse_designation("M8x1.25 6g").canonical(), "M8x1.25-6g");
   EXPECT_EQ(parse_designation("M20x1.5-6g LH").canonical(), "M20x1.5-6g-LH");
-  EXPECT_EQ(parse_designation("M20x1.5\xE2\x80\x93" "6g").canonical(), "M20x1.5-6g");        // en dash
-  EXPECT_EQ(parse_designation("M20x1.5\xE2\x88\x92" "6H").canonical(), "M20x1.5-6H");        // minus sign
-  EXPECT_EQ(parse_designation("M20\xC2\xA0" "x\xC2\xA0" "1.5").canonical(), "M20x1.5");        // no-break spaces
+  EXPECT_EQ(parse_designation("M20x1.5\xE2\x80\x93"
+                              "6g")
+                .canonical(),
+            "M20x1.5-6g");  // en dash
+  EXPECT_EQ(parse_designation("M20x1.5\xE2\x88\x92"
+                              "6H")
+                .canonical(),
+            "M20x1.5-6H");  // minus sign
+  EXPECT_EQ(parse_designation("M20\xC2\xA0"
+                              "x\xC2\xA0"
+                              "1.5")
+                .canonical(),
+            "M20x1.5");  // no-break spaces
   EXPECT_EQ(parse_designation("M20x1.5-6gLH").canonical(), "M20x1.5-6g-LH");
   EXPECT_EQ(parse_designation("M20x1.5-6H-l").engagement, Engagement::long_l);
   EXPECT_EQ(parse_designation("m1,6").pitch_mm, 0.35);  // ISO 261: M1.6 coarse 0.35
@@ -64,9 +74,28 @@ TEST(ThreadDesignation, ReadsTheSpellingsUsersWrite) {
 }
 
 TEST(ThreadDesignation, RefusesWhatIsNotADesignation) {
-  for (const char* bad : {"M0", "Mx2", "M30x0", "M30x2-6q", "", "30x2", "M30x2-", "M30x2-6g-6g", "M30x2-6H/6H",
-                          "M30x2-2g", "M30x2-6g5h", "M16xPh3P1.5", "M30x2-6g-LH-LH", "M30x2-S-L", "M30x2 6g 6g", "M30x2-6gLH-LH",
-                          "M1e3", "M30x2-6gg", "M30x2-66", "M-30", "M30x2-6g\x01", "M31"})
+  for (const char* bad : {"M0",
+                          "Mx2",
+                          "M30x0",
+                          "M30x2-6q",
+                          "",
+                          "30x2",
+                          "M30x2-",
+                          "M30x2-6g-6g",
+                          "M30x2-6H/6H",
+                          "M30x2-2g",
+                          "M30x2-6g5h",
+                          "M16xPh3P1.5",
+                          "M30x2-6g-LH-LH",
+                          "M30x2-S-L",
+                          "M30x2 6g 6g",
+                          "M30x2-6gLH-LH",
+                          "M1e3",
+                          "M30x2-6gg",
+                          "M30x2-66",
+                          "M-30",
+                          "M30x2-6g\x01",
+                          "M31"})
     EXPECT_THROW(parse_designation(bad), tk::Error) << bad;
 }
 
@@ -115,7 +144,7 @@ TEST(ThreadLimits, InternalMatchIso965Part2) {
 TEST(ThreadLimits, RefusesGradesTheDiameterDoesNotHave) {
   const BasicProfile p = basic_profile(30, 2);
   EXPECT_THROW(external_limits(p, parse_designation("M30x2-3g").external.value()), tk::Error);  // d: 4, 6, 8
-  EXPECT_NO_THROW(external_limits(p, parse_designation("M30x2-3g6g").external.value()));      // d2 has 3
+  EXPECT_NO_THROW(external_limits(p, parse_designation("M30x2-3g6g").external.value()));        // d2 has 3
   EXPECT_THROW(external_limits(p, parse_designation("M30x2-5g").external.value()), tk::Error);
   EXPECT_THROW(internal_limits(p, parse_designation("M30x2-9H").internal.value()), tk::Error);  // D2: 4-8
   // e is not defined below P 0.5 mm.

@@ -71,7 +71,8 @@ testing::AssertionResult well_formed(const std::string& xml) {
         open.push_back(name), ++i;
         break;
       }
-      if (name_at(i).empty() || xml.compare(i, 2, "=\"") != 0) return failure("a malformed attribute in <" + name + ">");
+      if (name_at(i).empty() || xml.compare(i, 2, "=\"") != 0)
+        return failure("a malformed attribute in <" + name + ">");
       for (i += 2; i < xml.size() && xml[i] != '"'; ++i)
         if (xml[i] == '<' || (xml[i] == '&' && !entity_ok(i))) return failure("a bad character in an attribute");
       if (i++ == xml.size()) return failure("an unterminated attribute");
@@ -103,8 +104,10 @@ std::vector<std::vector<std::array<double, 2>>> polylines(const std::string& svg
 }
 
 /// A one-series plot of `value` at `samples` times spread over [0, 1).
-TimePanelsPlot one_series(std::size_t samples, SampleValue value, TimePanel::Range range = TimePanel::Range::from_data) {
-  TimePanelsPlot plot{.title = "test", .samples = samples, .time_s = [samples](std::size_t i) { return double(i) / samples; }};
+TimePanelsPlot one_series(std::size_t samples, SampleValue value,
+                          TimePanel::Range range = TimePanel::Range::from_data) {
+  TimePanelsPlot plot{
+      .title = "test", .samples = samples, .time_s = [samples](std::size_t i) { return double(i) / samples; }};
   plot.panels.push_back({.y_label = "v", .series = {{std::move(value)}}, .range = range});
   return plot;
 }
@@ -114,7 +117,8 @@ constexpr double kPanelTop = 50, kPanelBottom = 300;
 
 TEST(TimePanelsSvg, IsWellFormedXmlWithOnePolylinePerSeriesAndAnEscapedTitle) {
   const auto sine = [](std::size_t i) { return std::sin(i * 0.01); };
-  TimePanelsPlot plot{.title = "a <title> & \"quotes\"", .samples = 1000, .time_s = [](std::size_t i) { return i * 1e-3; }};
+  TimePanelsPlot plot{
+      .title = "a <title> & \"quotes\"", .samples = 1000, .time_s = [](std::size_t i) { return i * 1e-3; }};
   plot.panels.push_back({.y_label = "x & y, mm",
                          .series = {{sine, "#1f5fbf", 1.2, "x<ref>"}, {sine, "#c8281e", 2, ""}},
                          .levels = {{0.5, 0.5, "#c8281e", "limit & more"}, {-0.2, 0.2, "#2a9d3a", ""}}});
@@ -132,7 +136,8 @@ TEST(TimePanelsSvg, IsWellFormedXmlWithOnePolylinePerSeriesAndAnEscapedTitle) {
 
 TEST(TimePanelsSvg, AMillionSamplesOfASineKeepTheirEnvelopeInTwoPointsPerColumn) {
   constexpr std::size_t kSamples = 1000000;
-  const std::string svg = time_panels_svg(one_series(kSamples, [](std::size_t i) { return std::sin(2 * std::numbers::pi * 1e-3 * i); }));
+  const std::string svg =
+      time_panels_svg(one_series(kSamples, [](std::size_t i) { return std::sin(2 * std::numbers::pi * 1e-3 * i); }));
   ASSERT_TRUE(well_formed(svg));
   const auto lines = polylines(svg);
   ASSERT_EQ(lines.size(), 1u);
@@ -152,7 +157,8 @@ TEST(TimePanelsSvg, AMillionSamplesOfASineKeepTheirEnvelopeInTwoPointsPerColumn)
 }
 
 TEST(TimePanelsSvg, ShortSeriesAreDrawnSampleBySampleSkippingNonFiniteValues) {
-  const auto lines = polylines(time_panels_svg(one_series(100, [](std::size_t i) { return i == 7 ? NAN : double(i); })));
+  const auto lines =
+      polylines(time_panels_svg(one_series(100, [](std::size_t i) { return i == 7 ? NAN : double(i); })));
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_EQ(lines[0].size(), 99u);
 }
@@ -167,7 +173,8 @@ TEST(TimePanelsSvg, RangesFromTheDataSymmetricOrFixed) {
   EXPECT_NE(symmetric.find(">1.0</text>"), std::string::npos);
   EXPECT_NE(symmetric.find(">0.0</text>"), std::string::npos);  // not 5.55e-17; the step's decimals
 
-  TimePanelsPlot fixed = one_series(100, [](std::size_t) { return 500.0; }, TimePanel::Range::fixed);
+  TimePanelsPlot fixed = one_series(
+      100, [](std::size_t) { return 500.0; }, TimePanel::Range::fixed);
   fixed.panels[0].y_min = 0, fixed.panels[0].y_max = 200;
   const std::string svg = time_panels_svg(fixed);
   EXPECT_NE(svg.find(">200</text>"), std::string::npos);

@@ -35,8 +35,11 @@ int main(int argc, char** argv) {
   CLI::App& app = tool.app();
   app.add_option("part", s.part_path, "the DXF file ('-' for standard input)")->required()->type_name("PART.dxf");
   app.add_option("--layer", s.layers, "use only this layer (again for more)")->type_name("L");
-  app.add_option("--units", s.units, "the drawing's unit when $INSUNITS is 0 or absent: mm, cm, m, in, ft, ...")->type_name("U");
-  app.add_option("--join-tol", s.join_tolerance, "ends closer than this meet, mm")->capture_default_str()->type_name("MM");
+  app.add_option("--units", s.units, "the drawing's unit when $INSUNITS is 0 or absent: mm, cm, m, in, ft, ...")
+      ->type_name("U");
+  app.add_option("--join-tol", s.join_tolerance, "ends closer than this meet, mm")
+      ->capture_default_str()
+      ->type_name("MM");
   app.add_option("--tool-radius", s.tool_radius, "grow the part (or shrink the pocket) by the tool's radius, mm")
       ->capture_default_str()
       ->type_name("R");
@@ -50,12 +53,14 @@ int main(int argc, char** argv) {
   app.add_option("--offset-tol", s.offset_tolerance, "tolerance of the offset's polygon stage, mm")
       ->capture_default_str()
       ->type_name("MM");
-  auto* check = app.add_option("--check", s.check_path, "check tool positions (records with x, y and optionally t); standard input when no file")
+  auto* check = app.add_option("--check", s.check_path,
+                               "check tool positions (records with x, y and optionally t); standard input when no file")
                     ->expected(0, 1)
                     ->type_name("[POSITIONS]");
   app.add_flag("--summary", s.summary, "with --check: a final record (positions, invasions, deepest invasion)");
   auto* latency_option =
-      app.add_option("--latency", s.latency, "with --check and times, --simulate: seconds from a sample to a stop taking effect")
+      app.add_option("--latency", s.latency,
+                     "with --check and times, --simulate: seconds from a sample to a stop taking effect")
           ->capture_default_str()
           ->type_name("S");
   app.add_option("--margin", s.margin, "the latency-aware guard's aim, mm")->capture_default_str()->type_name("MM");
@@ -68,31 +73,41 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"climb", "conventional"}))
       ->capture_default_str();
   app.add_flag("--simulate", simulate, "run the seed's invasion experiment against the region");
-  app.add_option("--tolerances", tolerances_text, "with --simulate: the fixed guard's tolerances, mm (the seed's Tables 2-3)")
+  app.add_option("--tolerances", tolerances_text,
+                 "with --simulate: the fixed guard's tolerances, mm (the seed's Tables 2-3)")
       ->capture_default_str()
       ->type_name("T,...");
   app.add_option("--joystick-speed", speeds_text, "with --simulate: the operator's feeds, mm/s (the seed's Table 2)")
       ->capture_default_str()
       ->type_name("V,...");
-  auto* period_option = app.add_option("--period", s.period, "with --simulate: control period, s")->capture_default_str()->type_name("S");
+  auto* period_option =
+      app.add_option("--period", s.period, "with --simulate: control period, s")->capture_default_str()->type_name("S");
   auto* latency_mm_option =
-      app.add_option("--latency-mm", s.latency_mm, "with --simulate: the latency as travel at each feed, mm (instead of --latency)")
+      app.add_option("--latency-mm", s.latency_mm,
+                     "with --simulate: the latency as travel at each feed, mm (instead of --latency)")
           ->type_name("MM")
           ->excludes(latency_option);
   auto* period_mm_option =
-      app.add_option("--period-mm", s.period_mm, "with --simulate: the control period as travel at each feed, mm (instead of --period)")
+      app.add_option("--period-mm", s.period_mm,
+                     "with --simulate: the control period as travel at each feed, mm (instead of --period)")
           ->type_name("MM")
           ->excludes(period_option);
-  app.add_option("--invasion-check", s.invasion_check,
-                 "with --simulate: what the fixed guard compares with T: the exact distance, or the seed's eq. (2) (printed)")
+  app.add_option(
+         "--invasion-check", s.invasion_check,
+         "with --simulate: what the fixed guard compares with T: the exact distance, or the seed's eq. (2) (printed)")
       ->check(CLI::IsMember({"exact", "printed"}))
       ->capture_default_str();
-  app.add_option("--strokes", s.strokes, "with --simulate: approaches per guard")->capture_default_str()->type_name("N");
-  app.add_option("--seed", s.seed, "with --simulate: random seed of the strokes")->capture_default_str()->type_name("N");
+  app.add_option("--strokes", s.strokes, "with --simulate: approaches per guard")
+      ->capture_default_str()
+      ->type_name("N");
+  app.add_option("--seed", s.seed, "with --simulate: random seed of the strokes")
+      ->capture_default_str()
+      ->type_name("N");
 
   return tool.run(argc, argv, [&] {
     const bool checking = check->count() > 0;
-    if (checking + toolpath + simulate > 1) throw tk::UsageError("--check, --toolpath and --simulate exclude each other");
+    if (checking + toolpath + simulate > 1)
+      throw tk::UsageError("--check, --toolpath and --simulate exclude each other");
     if (s.summary && !checking) throw tk::UsageError("--summary goes with --check");
     // The ranges dxf2region(1) gives under OPTIONS: a metre-radius tool is
     // past the largest face mill; an offset tolerance finer than 0.1 um is
@@ -137,13 +152,9 @@ int main(int argc, char** argv) {
     tk::io::RecordWriter writer(tool.output_format());
     const bool region_mode = !checking && !toolpath && !simulate;
     const dxf2region::Job job = dxf2region::prepare(s, writer, region_mode, tool);
-    if (toolpath)
-      dxf2region::write_toolpath(s, job, writer, tool);
-    else if (simulate)
-      dxf2region::simulate(s, job, writer);
-    else if (checking)
-      dxf2region::check_positions(s, job, writer);
-    else
-      dxf2region::write_region(s, job, writer, tool);
+    if (toolpath) dxf2region::write_toolpath(s, job, writer, tool);
+    else if (simulate) dxf2region::simulate(s, job, writer);
+    else if (checking) dxf2region::check_positions(s, job, writer);
+    else dxf2region::write_region(s, job, writer, tool);
   });
 }

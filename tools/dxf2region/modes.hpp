@@ -54,8 +54,8 @@ Job prepare(const Settings& settings, tk::io::RecordWriter& writer, bool region_
 /// The default mode: the region's loops, then what was found in the drawing.
 void write_region(const Settings& settings, const Job& job, tk::io::RecordWriter& writer, tk::cli::ToolApp& tool);
 /// What was found in the drawing (loose ends, T-junctions, uncut spans) and its totals.
-void write_findings(const Settings& settings, const Job& job, const tk::cad::RegionOffset& region, tk::io::RecordWriter& writer,
-                    tk::cli::ToolApp& tool);
+void write_findings(const Settings& settings, const Job& job, const tk::cad::RegionOffset& region,
+                    tk::io::RecordWriter& writer, tk::cli::ToolApp& tool);
 
 /// --toolpath: the finishing contour as G-code.
 void write_toolpath(const Settings& settings, const Job& job, tk::io::RecordWriter& writer, tk::cli::ToolApp& tool);

@@ -21,8 +21,8 @@ tk::cad::InvasionSimOptions Settings::experiment_at(double v) const {
   return options;
 }
 
-void write_findings(const Settings& s, const Job& job, const tk::cad::RegionOffset& region, tk::io::RecordWriter& writer,
-                    tk::cli::ToolApp& tool) {
+void write_findings(const Settings& s, const Job& job, const tk::cad::RegionOffset& region,
+                    tk::io::RecordWriter& writer, tk::cli::ToolApp& tool) {
   const tk::cad::LoopSet& found = job.part.loops;
   for (const tk::cad::LooseEnd& end : found.loose_ends) writer.write(tk::cad::loose_end_record(end));
   for (const tk::cad::TJunction& junction : found.t_junctions) writer.write(tk::cad::t_junction_record(junction));
@@ -52,16 +52,18 @@ Job prepare(const Settings& s, tk::io::RecordWriter& writer, bool region_mode, t
     warn(name + ": " + std::to_string(count) + " " + type + (count == 1 ? " entity" : " entities") + " not used");
   if (!found.loose_ends.empty())
     warn(fmt::format("{}: {} loose ends (first at {:g}, {:g}, line {}): open chains are not part of the region", name,
-                     found.loose_ends.size(), found.loose_ends[0].at.x, found.loose_ends[0].at.y, found.loose_ends[0].source_line));
+                     found.loose_ends.size(), found.loose_ends[0].at.x, found.loose_ends[0].at.y,
+                     found.loose_ends[0].source_line));
   const std::vector<tk::cad::Point> doubled = tk::cad::doubled_edges(found.loops);
   job.doubled_edges = doubled.size();
   if (!doubled.empty())
-    warn(fmt::format("{}: {} edges drawn twice (first about {:g}, {:g}): the region there may not be what was meant", name,
-                     doubled.size(), doubled[0].x, doubled[0].y));
+    warn(fmt::format("{}: {} edges drawn twice (first about {:g}, {:g}): the region there may not be what was meant",
+                     name, doubled.size(), doubled[0].x, doubled[0].y));
   if (region_mode) writer.declare_fields(tk::cad::region_record_fields());
   if (found.loops.empty()) {
     if (region_mode) write_findings(s, job, {}, writer, tool);  // what was found helps to mend the drawing
-    throw tk::Error("no closed loop in the drawing" + std::string(s.layers.empty() ? "" : " on the chosen layers"), {name, 0});
+    throw tk::Error("no closed loop in the drawing" + std::string(s.layers.empty() ? "" : " on the chosen layers"),
+                    {name, 0});
   }
 
   tk::cad::OffsetOptions offset_options;
@@ -77,11 +79,13 @@ Job prepare(const Settings& s, tk::io::RecordWriter& writer, bool region_mode, t
   }
   const tk::cad::RegionOffset& region = job.region;
   if (region.polygon_loops > 0)
-    warn(std::to_string(region.polygon_loops) + " offset loops stay as polygons (the exact lines and arcs did not check out)");
+    warn(std::to_string(region.polygon_loops) +
+         " offset loops stay as polygons (the exact lines and arcs did not check out)");
   if (region.loops.empty())
     warn("the tool fits nowhere in the pocket: every position is prohibited, and there is no contour");
   if (!region.uncut.empty())
-    warn(std::to_string(region.uncut.size()) + " stretches of the drawing are out of the tool's reach (records \"uncut\")");
+    warn(std::to_string(region.uncut.size()) +
+         " stretches of the drawing are out of the tool's reach (records \"uncut\")");
 
   if (!s.svg_path.empty()) {
     tk::cad::SvgLayers layers_to_draw;
@@ -90,8 +94,10 @@ Job prepare(const Settings& s, tk::io::RecordWriter& writer, bool region_mode, t
     layers_to_draw.region = &region.loops;
     layers_to_draw.loose_ends = &found.loose_ends;
     layers_to_draw.uncut = &region.uncut;
-    layers_to_draw.title = fmt::format("dxf2region {}: drawing (black), prohibited region for tool radius {:g} mm (red, its contour blue), "
-                                       "out of reach (orange)", name, s.tool_radius);
+    layers_to_draw.title = fmt::format(
+        "dxf2region {}: drawing (black), prohibited region for tool radius {:g} mm (red, its contour blue), "
+        "out of reach (orange)",
+        name, s.tool_radius);
     tk::cad::write_region_svg(s.svg_path, layers_to_draw);
   }
   return job;

@@ -18,9 +18,11 @@ void write_toolpath(const Settings& s, const Job& job, tk::io::RecordWriter& wri
   options.cut_z = s.cut_z;
   options.safe_z = s.safe_z;
   options.climb = s.direction == "climb";
-  options.title = fmt::format("dxf2region {}, tool radius {:g} mm, {}, {}", job.name, s.tool_radius, s.side, s.direction);
+  options.title =
+      fmt::format("dxf2region {}, tool radius {:g} mm, {}, {}", job.name, s.tool_radius, s.side, s.direction);
   const std::string gcode = tk::cad::toolpath_gcode(job.region.loops, options);
-  if (std::fwrite(gcode.data(), 1, gcode.size(), stdout) != gcode.size()) throw tk::Error("write error on standard output");
+  if (std::fwrite(gcode.data(), 1, gcode.size(), stdout) != gcode.size())
+    throw tk::Error("write error on standard output");
   writer.flush();
 }
 

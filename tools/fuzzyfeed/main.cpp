@@ -27,7 +27,8 @@ using namespace tk::machining;
 constexpr double kMaxTraceCycles = 2e6;
 
 /// The stream mode: each record gets the law's answer to its load.
-void filter_records(const std::vector<std::string>& inputs, const FeedOverrideParams& law_params, tk::io::OutputFormat format) {
+void filter_records(const std::vector<std::string>& inputs, const FeedOverrideParams& law_params,
+                    tk::io::OutputFormat format) {
   FeedOverride law(law_params);
   tk::io::RecordWriter writer(format);
   writer.declare_fields({"wk", "override", "feed_out"});
@@ -65,8 +66,8 @@ class TraceFile {
     file_.declare_fields({"t", "z", "depth", "chip", "load_true", "load", "wk", "override", "feed", "feed_out"});
   }
   void add(const TraceSample& s) {
-    values_.assign({s.t_s, s.z_mm, s.depth_mm, s.chip_mm, s.load_true_pct, s.load_pct, s.step.wk, s.step.override_pct, feed_,
-                    feed_ * s.step.override_pct / 100});
+    values_.assign({s.t_s, s.z_mm, s.depth_mm, s.chip_mm, s.load_true_pct, s.load_pct, s.step.wk, s.step.override_pct,
+                    feed_, feed_ * s.step.override_pct / 100});
     file_.write_numbers(values_, 0);
   }
   void close() { file_.close(); }
@@ -78,23 +79,31 @@ class TraceFile {
 };
 
 tk::Record segment_record(const SegmentStats& s) {
-  return {{"record", "segment"},       {"segment", s.index},
-          {"z_from", s.segment.z_from_mm}, {"z_to", s.segment.z_to_mm},
-          {"depth", s.segment.depth_mm},   {"start_s", s.start_s},
-          {"duration_s", s.duration_s},    {"load_at_100_pct", s.load_at_100_pct},
-          {"mean_load_pct", s.mean_load_pct}, {"max_load_pct", s.max_load_pct},
-          {"mean_override_pct", s.mean_override_pct}, {"settled_override_pct", s.settled_override_pct},
-          {"oscillation_pct", s.oscillation_pct}, {"override_sd_pct", s.override_sd_pct}};
+  return {{"record", "segment"},
+          {"segment", s.index},
+          {"z_from", s.segment.z_from_mm},
+          {"z_to", s.segment.z_to_mm},
+          {"depth", s.segment.depth_mm},
+          {"start_s", s.start_s},
+          {"duration_s", s.duration_s},
+          {"load_at_100_pct", s.load_at_100_pct},
+          {"mean_load_pct", s.mean_load_pct},
+          {"max_load_pct", s.max_load_pct},
+          {"mean_override_pct", s.mean_override_pct},
+          {"settled_override_pct", s.settled_override_pct},
+          {"oscillation_pct", s.oscillation_pct},
+          {"override_sd_pct", s.override_sd_pct}};
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  tk::cli::ToolApp tool("fuzzyfeed",
-                        "Fuzzy adaptive feed-rate override, Stryczek & Orawczak's formulas (1)-(7): reads spindle-load "
-                        "records (t, load, optionally feed), one per IPO cycle, and adds the correction coefficient wk and "
-                        "the new override; or simulates a turning pass under the law (--simulate).",
-                        "See fuzzyfeed(1).");
+  tk::cli::ToolApp tool(
+      "fuzzyfeed",
+      "Fuzzy adaptive feed-rate override, Stryczek & Orawczak's formulas (1)-(7): reads spindle-load "
+      "records (t, load, optionally feed), one per IPO cycle, and adds the correction coefficient wk and "
+      "the new override; or simulates a turning pass under the law (--simulate).",
+      "See fuzzyfeed(1).");
   tool.add_input_files("load records (t, load[, feed]); standard input when none or '-'");
   FeedOverrideParams law;
   TurningParams process;
@@ -103,13 +112,18 @@ int main(int argc, char** argv) {
   bool simulate = false, segments = false;
   CLI::App& app = tool.app();
   const std::string law_group = "The law (both modes)", sim_group = "Simulation (with --simulate)";
-  app.add_option("--mz", law.mz_pct, "M_z, the spindle load (% of rated torque) to hold")->capture_default_str()->type_name("PCT")->group(law_group);
+  app.add_option("--mz", law.mz_pct, "M_z, the spindle load (% of rated torque) to hold")
+      ->capture_default_str()
+      ->type_name("PCT")
+      ->group(law_group);
   app.add_option("--variant", variant, "original: formulas (1)-(4); modified: (5), (6), (3), (7)")
       ->check(CLI::IsMember({"original", "modified"}))
       ->capture_default_str()
       ->group(law_group);
   app.add_option("--k", law.k, "modified, (5): W_k = k exp(...) below M_z")->capture_default_str()->group(law_group);
-  app.add_option("--p", law.p, "modified, (6): W_k = p exp(...) + (1 - p) above M_z")->capture_default_str()->group(law_group);
+  app.add_option("--p", law.p, "modified, (6): W_k = p exp(...) + (1 - p) above M_z")
+      ->capture_default_str()
+      ->group(law_group);
   app.add_option("--d", law.d_pct, "modified, (7): O_n = W_k (O_a - d) + d above M_z, %")
       ->capture_default_str()
       ->type_name("PCT")
@@ -122,14 +136,18 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->type_name("PCT")
       ->group(law_group);
-  app.add_flag("--simulate", simulate, "simulate a turning pass under the law and write a summary record")->group(sim_group);
+  app.add_flag("--simulate", simulate, "simulate a turning pass under the law and write a summary record")
+      ->group(sim_group);
   std::vector<CLI::Option*> sim_options{
-      app.add_option("--profile", profile_path, "allowance profile records (z_from, z_to, depth or z, depth; mm)")->type_name("FILE"),
+      app.add_option("--profile", profile_path, "allowance profile records (z_from, z_to, depth or z, depth; mm)")
+          ->type_name("FILE"),
       app.add_option("--trace", trace_path, "write one record per IPO cycle to FILE")->type_name("FILE"),
       app.add_option("--svg", svg_path, "plot load and override against time to FILE")->type_name("FILE"),
       app.add_flag("--segments", segments, "a record per constant-allowance segment before the summary"),
       app.add_option("--feed", process.feed_mm_rev, "programmed feed, mm/rev")->capture_default_str()->type_name("MM"),
-      app.add_option("--cutting-speed", process.cutting_speed_m_min, "v_c, m/min")->capture_default_str()->type_name("V"),
+      app.add_option("--cutting-speed", process.cutting_speed_m_min, "v_c, m/min")
+          ->capture_default_str()
+          ->type_name("V"),
       app.add_option("--diameter", process.diameter_mm, "workpiece diameter, mm (constant spindle speed from v_c)")
           ->capture_default_str()
           ->type_name("MM"),
@@ -137,13 +155,18 @@ int main(int argc, char** argv) {
       app.add_option("--efficiency", process.cutting.efficiency, "η of the main drive")->capture_default_str(),
       app.add_option("--kc11", process.cutting.kc11_n_mm2, "Kienzle k_c1.1, N/mm² (E295)")->capture_default_str(),
       app.add_option("--mc", process.cutting.mc, "Kienzle exponent m_c (E295)")->capture_default_str(),
-      app.add_option("--kappa", process.cutting.kappa_deg, "the tool's setting angle κ_r, degrees")->capture_default_str(),
+      app.add_option("--kappa", process.cutting.kappa_deg, "the tool's setting angle κ_r, degrees")
+          ->capture_default_str(),
       app.add_option("--ipo", process.ipo_s, "interpolation cycle, s")->capture_default_str()->type_name("S"),
-      app.add_option("--kv", process.kv, "the feed axis's servo gain K_v, (m/min)/mm")->capture_default_str()->type_name("KV"),
+      app.add_option("--kv", process.kv, "the feed axis's servo gain K_v, (m/min)/mm")
+          ->capture_default_str()
+          ->type_name("KV"),
       app.add_option("--lag", process.load_smoothing_s, "smoothing time constant of the load signal, s")
           ->capture_default_str()
           ->type_name("S"),
-      app.add_option("--noise", process.noise_pct, "σ of the load signal's noise, % of rated")->capture_default_str()->type_name("PCT"),
+      app.add_option("--noise", process.noise_pct, "σ of the load signal's noise, % of rated")
+          ->capture_default_str()
+          ->type_name("PCT"),
       app.add_option("--seed", process.seed, "of the noise")->capture_default_str()->type_name("N"),
       app.add_option("--above-tol", process.above_tolerance, "time_above_mz counts load above (1 + this) M_z")
           ->capture_default_str()
@@ -159,7 +182,8 @@ int main(int argc, char** argv) {
       filter_records(tool.common().inputs, law, tool.output_format());
       return;
     }
-    if (!tool.common().inputs.empty()) throw tk::UsageError("--simulate reads no records (use --profile FILE for the allowance)");
+    if (!tool.common().inputs.empty())
+      throw tk::UsageError("--simulate reads no records (use --profile FILE for the allowance)");
     process.cutting.rated_power_w = power_kw * 1000;
     validate(process);
     if (!profile_path.empty()) process.profile = read_profile(profile_path);
@@ -183,13 +207,15 @@ int main(int argc, char** argv) {
     if (trace) trace->close();
     const RunStats baseline = simulate_turning(process, std::nullopt, law.mz_pct);
     if (!svg_path.empty()) {
-      if (plot.truncated()) tool.warn(fmt::format("the plot shows the first {} IPO cycles only", TurningSvg::kMaxSamples));
+      if (plot.truncated())
+        tool.warn(fmt::format("the plot shows the first {} IPO cycles only", TurningSvg::kMaxSamples));
       TurningPlotInfo info;
       info.mz_pct = law.mz_pct;
-      info.title = fmt::format("fuzzyfeed --variant {}: M_z {:g} %, {:g} mm/rev, v_c {:g} m/min, IPO {:g} ms, K_v {:g}, "
-                               "lag {:g} ms, noise {:g} %; {:.1f} s against {:.1f} s at 100 %",
-                               variant, law.mz_pct, process.feed_mm_rev, process.cutting_speed_m_min, process.ipo_s * 1e3,
-                               process.kv, process.load_smoothing_s * 1e3, process.noise_pct, run.time_s, baseline.time_s);
+      info.title = fmt::format(
+          "fuzzyfeed --variant {}: M_z {:g} %, {:g} mm/rev, v_c {:g} m/min, IPO {:g} ms, K_v {:g}, "
+          "lag {:g} ms, noise {:g} %; {:.1f} s against {:.1f} s at 100 %",
+          variant, law.mz_pct, process.feed_mm_rev, process.cutting_speed_m_min, process.ipo_s * 1e3, process.kv,
+          process.load_smoothing_s * 1e3, process.noise_pct, run.time_s, baseline.time_s);
       plot.write(svg_path, info);
     }
 

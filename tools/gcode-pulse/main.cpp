@@ -30,7 +30,8 @@ std::array<double, 3> parse_axes(const std::string& text, const char* option, tk
 tk::motion::SvgWindow parse_window(const std::string& text) {
   const double limit = tk::motion::InterpreterOptions{}.max_coordinate_mm;
   const auto refuse = [limit] {
-    return tk::UsageError(fmt::format("--window needs X0,Y0,X1,Y1 in mm from {0:g} to {1:g} with X0 < X1 and Y0 < Y1", -limit, limit));
+    return tk::UsageError(
+        fmt::format("--window needs X0,Y0,X1,Y1 in mm from {0:g} to {1:g} with X0 < X1 and Y0 < Y1", -limit, limit));
   };
   std::vector<double> v;
   try {
@@ -66,8 +67,8 @@ int main(int argc, char** argv) {
                  "nearest (the neighbour nearest the programmed path), direct (Panayotov & Goranov's: the "
                  "neighbour nearest where the line from the current point to the end leaves the box of one "
                  "step, the line drawn again after every step), bresenham or dda")
-      ->check(CLI::IsMember(std::vector<std::string>(tk::motion::kStepMethodNames.begin(),
-                                                     tk::motion::kStepMethodNames.end())))
+      ->check(CLI::IsMember(
+          std::vector<std::string>(tk::motion::kStepMethodNames.begin(), tk::motion::kStepMethodNames.end())))
       ->capture_default_str()
       ->type_name("NAME");
   app.add_flag("--summary", summary_only, "write one summary record instead of the pulses");
@@ -82,17 +83,26 @@ int main(int argc, char** argv) {
                  "LinuxCNC tool table (T1 P1 Z12.5 ...; offsets in mm) whose offsets G43 applies; without one, "
                  "G43 of a tool other than 0 is refused")
       ->type_name("FILE");
-  app.add_flag("--lenient", lenient, "skip words that change motion but cannot be honoured (G41, canned cycles...) with a warning");
+  app.add_flag("--lenient", lenient,
+               "skip words that change motion but cannot be honoured (G41, canned cycles...) with a warning");
   app.add_option("--svg", svg_path, "draw the ideal and the stepped path in the XY plane (needs --window)")
       ->type_name("FILE");
   app.add_option("--window", window_text, "the part of the XY plane to draw, mm")->type_name("X0,Y0,X1,Y1");
   app.add_option("--machine", machine_file, "machine description (JSON, keys as these options; options given here win)")
       ->type_name("FILE");
-  app.add_option("--accel", accel, "acceleration along the path, mm/s^2")->check(in(tk::motion::kAccelRange))->capture_default_str()->type_name("A");
+  app.add_option("--accel", accel, "acceleration along the path, mm/s^2")
+      ->check(in(tk::motion::kAccelRange))
+      ->capture_default_str()
+      ->type_name("A");
   app.add_option("--axis-accel", axis_accel, "acceleration limit of each axis, mm/s^2 (default: none)")
       ->type_name("X,Y,Z");
-  app.add_option("--rapid", rapid, "G0 speed, mm/min")->check(in(tk::motion::kFeedRange))->capture_default_str()->type_name("F");
-  app.add_option("--max-feed", max_feed, "cap on programmed feeds, mm/min (default: --rapid)")->check(in(tk::motion::kFeedRange))->type_name("F");
+  app.add_option("--rapid", rapid, "G0 speed, mm/min")
+      ->check(in(tk::motion::kFeedRange))
+      ->capture_default_str()
+      ->type_name("F");
+  app.add_option("--max-feed", max_feed, "cap on programmed feeds, mm/min (default: --rapid)")
+      ->check(in(tk::motion::kFeedRange))
+      ->type_name("F");
   app.add_option("--axis-max-feed", axis_max_feed, "speed limit of each axis, G0 included, mm/min (default: none)")
       ->type_name("X,Y,Z");
   app.add_option("--junction-deviation", junction_deviation, "corner rounding allowed for junction speeds, mm")
@@ -100,8 +110,10 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->type_name("MM");
   app.add_option("--lookahead", lookahead, "blocks planned together")
-      ->check(count_check(static_cast<std::uint64_t>(tk::motion::kLookaheadRange.low), static_cast<std::uint64_t>(tk::motion::kLookaheadRange.high)))
-      ->capture_default_str()->type_name("N");
+      ->check(count_check(static_cast<std::uint64_t>(tk::motion::kLookaheadRange.low),
+                          static_cast<std::uint64_t>(tk::motion::kLookaheadRange.high)))
+      ->capture_default_str()
+      ->type_name("N");
   app.add_option("--start", start, "where the machine stands when the program starts, mm (default: 0,0,0)")
       ->type_name("X,Y,Z");
   app.add_option("--max-pulses", max_pulses,
@@ -121,9 +133,12 @@ int main(int argc, char** argv) {
     if (!machine_file.empty()) settings = tk::motion::read_machine_file(machine_file);
     tk::motion::MachineSettings given;
     auto on_command_line = [&](const char* name) { return app.get_option(name)->count() > 0; };
-    if (on_command_line("--steps-per-mm")) given.steps_per_mm = parse_axes(steps, "--steps-per-mm", tk::motion::kStepsPerMmRange);
-    if (on_command_line("--axis-max-feed")) given.axis_max_feed = parse_axes(axis_max_feed, "--axis-max-feed", tk::motion::kFeedRange);
-    if (on_command_line("--axis-accel")) given.axis_accel = parse_axes(axis_accel, "--axis-accel", tk::motion::kAccelRange);
+    if (on_command_line("--steps-per-mm"))
+      given.steps_per_mm = parse_axes(steps, "--steps-per-mm", tk::motion::kStepsPerMmRange);
+    if (on_command_line("--axis-max-feed"))
+      given.axis_max_feed = parse_axes(axis_max_feed, "--axis-max-feed", tk::motion::kFeedRange);
+    if (on_command_line("--axis-accel"))
+      given.axis_accel = parse_axes(axis_accel, "--axis-accel", tk::motion::kAccelRange);
     if (on_command_line("--start")) given.start = parse_axes(start, "--start", tk::motion::start_range());
     if (on_command_line("--accel")) given.accel = accel;
     if (on_command_line("--rapid")) given.rapid = rapid;
@@ -145,7 +160,8 @@ int main(int argc, char** argv) {
 
     if (binary && summary_only) throw tk::UsageError("--binary and --summary exclude each other");
     if (binary && tool.common().csv) throw tk::UsageError("--binary and --csv exclude each other");
-    if (binary && isatty(STDOUT_FILENO)) throw tk::UsageError("--binary will not write to a terminal: redirect standard output");
+    if (binary && isatty(STDOUT_FILENO))
+      throw tk::UsageError("--binary will not write to a terminal: redirect standard output");
     if (svg_path.empty() != window_text.empty()) throw tk::UsageError("--svg and --window go together");
     gcode_pulse::RunOutput output;
     output.summary_only = summary_only;

@@ -45,7 +45,8 @@ void run_programs(const tk::motion::PulseOptions& options, RunOutput& output, tk
   }
   if (summary_only) {
     tk::Record record = tk::motion::pulse_summary_record(run.summary(), output.method_name);
-    if (tool.output_format() == tk::io::OutputFormat::csv) record["unused_words"] = tk::Record(record["unused_words"].dump());
+    if (tool.output_format() == tk::io::OutputFormat::csv)
+      record["unused_words"] = tk::Record(record["unused_words"].dump());
     writer.write(record);
   }
   if (binary_writer) binary_writer->finish();

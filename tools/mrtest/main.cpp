@@ -63,7 +63,9 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->allow_extra_args(false)  // "-b 2,3 FILE": FILE is not a base
       ->check(CLI::Range(std::uint64_t{2}, ~std::uint64_t{0}));
-  app.add_option("-r,--rounds", rounds, "extra random bases for mr and fermat")->check(CLI::Range(0u, 100000u))->type_name("N");
+  app.add_option("-r,--rounds", rounds, "extra random bases for mr and fermat")
+      ->check(CLI::Range(0u, 100000u))
+      ->type_name("N");
   app.add_option("--seed", seed, "seed for the random bases (with each number, fixes them)")->type_name("S");
   app.add_option("--trial-bound", trial_bound, "trial division by primes up to B (0: none; default by size)")
       ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1} << 32))

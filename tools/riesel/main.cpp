@@ -52,19 +52,22 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->type_name("NAME");
   app.add_option("--arithmetic", arithmetic,
-                 "auto, gmp (GMP's multiplication) or fft (the weighted transform, every square verified); auto takes the FFT from " +
+                 "auto, gmp (GMP's multiplication) or fft (the weighted transform, every square verified); auto takes "
+                 "the FFT from " +
                      std::to_string(tk::primes::kFftMinBits) + " bits on")
       ->check(CLI::IsMember({"auto", "gmp", "fft"}))
       ->capture_default_str()
       ->type_name("NAME");
   app.add_option("--state", state_dir, "keep a lock, a journal, lresults.txt and checkpoints in DIR; a re-run resumes")
       ->type_name("DIR");
-  CLI::Option* checkpoint_every =
-      app.add_option("--checkpoint-every", checkpoint_seconds, "seconds between checkpoints of a running proof (with --state)")
-          ->check(tk::cli::number_check(tk::cli::NumberDomain::positive))
-          ->capture_default_str()
-          ->type_name("S");
-  app.add_option("--shard", shard, "prove only candidates K, K+N, K+2N, ... (K/N)")->capture_default_str()->type_name("K/N");
+  CLI::Option* checkpoint_every = app.add_option("--checkpoint-every", checkpoint_seconds,
+                                                 "seconds between checkpoints of a running proof (with --state)")
+                                      ->check(tk::cli::number_check(tk::cli::NumberDomain::positive))
+                                      ->capture_default_str()
+                                      ->type_name("S");
+  app.add_option("--shard", shard, "prove only candidates K, K+N, K+2N, ... (K/N)")
+      ->capture_default_str()
+      ->type_name("K/N");
   app.add_flag("--require-proof", require_proof,
                "a number with no LLR or Proth proof (k >= 2^n, n too small, another shape) is an error, not BPSW");
   app.add_flag("--skip-bad", skip_bad, "report malformed records on stderr and go on");
@@ -81,7 +84,8 @@ int main(int argc, char** argv) {
 
     std::unique_ptr<tk::primes::ProofJournal> journal;
     if (!state_dir.empty())
-      journal = std::make_unique<tk::primes::ProofJournal>(state_dir, [&](const std::string& problem) { tool.warn(problem); });
+      journal = std::make_unique<tk::primes::ProofJournal>(state_dir,
+                                                           [&](const std::string& problem) { tool.warn(problem); });
     const tk::cli::StopSignals stop;
 
     tk::primes::ProofPlan plan;
@@ -137,17 +141,21 @@ int main(int argc, char** argv) {
       const auto started = std::chrono::steady_clock::now();
       const tk::primes::Candidate candidate = tk::primes::candidate_from_record(job.record, max_bits);
       auto member_started = started;
-      const Verdict verdict = tk::primes::prove_candidate(candidate, plan, job.record, [&](const tk::primes::MemberProof& proof) {
-        const auto now = std::chrono::steady_clock::now();
-        if (proof.verdict != Verdict::unknown)
-          out.log_lines.push_back(tk::primes::llr_result_line(proof, std::chrono::duration<double>(now - member_started).count()));
-        if (journal && proof.verdict != Verdict::unknown) journal->remove_checkpoint(proof.text + " start=" + start);
-        member_started = now;
-      });
+      const Verdict verdict =
+          tk::primes::prove_candidate(candidate, plan, job.record, [&](const tk::primes::MemberProof& proof) {
+            const auto now = std::chrono::steady_clock::now();
+            if (proof.verdict != Verdict::unknown)
+              out.log_lines.push_back(
+                  tk::primes::llr_result_line(proof, std::chrono::duration<double>(now - member_started).count()));
+            if (journal && proof.verdict != Verdict::unknown)
+              journal->remove_checkpoint(proof.text + " start=" + start);
+            member_started = now;
+          });
       if (verdict == Verdict::unknown && !stop.caught())  // never write a verdict that was not computed
         throw tk::Error("the proof stopped without a verdict");
       out.write = verdict != Verdict::unknown;  // a signal cut it short: the checkpoint has it
-      tk::cli::set_seconds(job.record, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+      tk::cli::set_seconds(job.record,
+                           std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
       out.record = std::move(job.record);
       return out;
     };

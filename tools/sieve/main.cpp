@@ -65,22 +65,27 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
   tk::primes::GeneralizedSieve sieve(spec);
   const auto outcome = tk::primes::run_sieve(sieve, run, [&](const std::string& text) { tool.warn(text); });
   if (stop.caught()) {
-    const char* saved = o.checkpoint.empty() ? "; no --checkpoint, so the work is lost" : "; checkpoint saved, continue with --resume";
+    const char* saved =
+        o.checkpoint.empty() ? "; no --checkpoint, so the work is lost" : "; checkpoint saved, continue with --resume";
     if (!sieve.small_primes_done())
-      stop.die("sieve", fmt::format(" while the primes up to 2^20 sieved, after {} of {} segments{}", sieve.next_segment(),
-                                    (sieve.spec().count() + sieve.kSegmentBits - 1) / sieve.kSegmentBits, saved));
+      stop.die("sieve",
+               fmt::format(" while the primes up to 2^20 sieved, after {} of {} segments{}", sieve.next_segment(),
+                           (sieve.spec().count() + sieve.kSegmentBits - 1) / sieve.kSegmentBits, saved));
     stop.die("sieve", fmt::format(" after p = {}{}", sieve.sieved_to(), saved));
   }
-  if (outcome.rate_stopped) tool.warn(fmt::format("removal rate fell below --min-rate: stopped at p = {}", outcome.depth));
+  if (outcome.rate_stopped)
+    tool.warn(fmt::format("removal rate fell below --min-rate: stopped at p = {}", outcome.depth));
   using Format = tk::primes::SieveOutputFormat;
-  const Format format = o.newpgen ? Format::newpgen
-                        : o.abc   ? Format::abc
-                        : o.abcd  ? Format::abcd
-                        : tool.output_format() == tk::io::OutputFormat::csv ? Format::csv : Format::json_lines;
+  const Format format = o.newpgen                                           ? Format::newpgen
+                        : o.abc                                             ? Format::abc
+                        : o.abcd                                            ? Format::abcd
+                        : tool.output_format() == tk::io::OutputFormat::csv ? Format::csv
+                                                                            : Format::json_lines;
   tk::primes::write_survivors(sieve, format, outcome.depth, stdout, run.shard_index, run.shard_count);
 }
 
-void run_primes(tk::cli::ToolApp& tool, const std::string& from_text, const std::string& to_text, bool count, bool json) {
+void run_primes(tk::cli::ToolApp& tool, const std::string& from_text, const std::string& to_text, bool count,
+                bool json) {
   const std::uint64_t from = tk::cli::parse_count(from_text, "A");
   const std::uint64_t to = tk::cli::parse_count(to_text, "B");
   if (to < from) throw tk::UsageError(fmt::format("the interval {}..{} is empty: B is below A", from, to));
@@ -113,7 +118,8 @@ void run_primes(tk::cli::ToolApp& tool, const std::string& from_text, const std:
       const std::size_t end = text.find('\n', start);
       const std::string_view digits = text.substr(start, end - start);
       const std::uint64_t p = std::stoull(std::string(digits));
-      writer.write(tk::Record{{"number", p < (std::uint64_t(1) << 53) ? tk::Record(p) : tk::Record(std::string(digits))}});
+      writer.write(
+          tk::Record{{"number", p < (std::uint64_t(1) << 53) ? tk::Record(p) : tk::Record(std::string(digits))}});
       start = end + 1;
     }
   });
@@ -123,15 +129,16 @@ void run_primes(tk::cli::ToolApp& tool, const std::string& from_text, const std:
 }  // namespace
 
 int main(int argc, char** argv) {
-  tk::cli::ToolApp tool("sieve",
-                        "Sieve of Eratosthenes for an interval, and the generalized sieve that removes k*2^n+-1 "
-                        "candidates with a small factor before twin, Sophie Germain, Cunningham-chain, Riesel or "
-                        "Proth searches.",
-                        "Examples:\n  sieve primes 1 1e10 --count\n  sieve twin --n 171960 --k 1:1e9 --pmax 1e9 -j 2 --newpgen\n"
-                        "  sieve sg --n 4000 --h0 15 --c 30030 --x 1:2^20 --pmax 1e8\n"
-                        "  sieve cc2 --n 256000 --h0 0 --c 30030 --x 1:1e6 --pmax 134217689   (the paper's Cc22 project)\n"
-                        "  sieve merge shard1.npg shard2.npg\n"
-                        "See sieve(1).");
+  tk::cli::ToolApp tool(
+      "sieve",
+      "Sieve of Eratosthenes for an interval, and the generalized sieve that removes k*2^n+-1 "
+      "candidates with a small factor before twin, Sophie Germain, Cunningham-chain, Riesel or "
+      "Proth searches.",
+      "Examples:\n  sieve primes 1 1e10 --count\n  sieve twin --n 171960 --k 1:1e9 --pmax 1e9 -j 2 --newpgen\n"
+      "  sieve sg --n 4000 --h0 15 --c 30030 --x 1:2^20 --pmax 1e8\n"
+      "  sieve cc2 --n 256000 --h0 0 --c 30030 --x 1:1e6 --pmax 134217689   (the paper's Cc22 project)\n"
+      "  sieve merge shard1.npg shard2.npg\n"
+      "See sieve(1).");
   CLI::App& app = tool.app();
   tool.add_threads_option();
   app.require_subcommand(1);
@@ -170,13 +177,21 @@ int main(int argc, char** argv) {
     sub->add_option("--pmax", o.pmax, "sieve with every prime up to this bound")->required()->type_name("P");
     if (named.form == tk::primes::SieveForm::cc1 || named.form == tk::primes::SieveForm::cc2)
       sub->add_option("--length", o.length, "chain length (2 to 64)")->capture_default_str()->type_name("L");
-    sub->add_option("--min-rate", o.min_rate, "stop early once fewer than this many candidates per second are removed")->type_name("R");
-    sub->add_option("--rate-window", o.rate_window, "seconds over which --min-rate is measured")->capture_default_str()->type_name("S");
+    sub->add_option("--min-rate", o.min_rate, "stop early once fewer than this many candidates per second are removed")
+        ->type_name("R");
+    sub->add_option("--rate-window", o.rate_window, "seconds over which --min-rate is measured")
+        ->capture_default_str()
+        ->type_name("S");
     sub->add_option("--factors", o.factors, "append 'p | k*2^n+-1' for every removal to FILE")->type_name("FILE");
-    sub->add_option("--checkpoint", o.checkpoint, "save the state to FILE every few minutes and on SIGINT/SIGTERM")->type_name("FILE");
-    sub->add_option("--checkpoint-every", o.checkpoint_seconds, "seconds between checkpoints")->capture_default_str()->type_name("S");
+    sub->add_option("--checkpoint", o.checkpoint, "save the state to FILE every few minutes and on SIGINT/SIGTERM")
+        ->type_name("FILE");
+    sub->add_option("--checkpoint-every", o.checkpoint_seconds, "seconds between checkpoints")
+        ->capture_default_str()
+        ->type_name("S");
     sub->add_flag("--resume", o.resume, "continue from the --checkpoint FILE (start afresh when it does not exist)");
-    sub->add_option("--shard", o.shard, "sieve only block K of every N blocks of large primes (K/N)")->capture_default_str()->type_name("K/N");
+    sub->add_option("--shard", o.shard, "sieve only block K of every N blocks of large primes (K/N)")
+        ->capture_default_str()
+        ->type_name("K/N");
     sub->add_flag("--riesel-condition", o.riesel_condition,
                   "require the paper's Riesel conditions on every k*2^e-1 member (k made odd below 2^e, (13/N) = -1)");
     auto* newpgen = sub->add_flag("--newpgen", o.newpgen, "write a NewPGen file (LLR and PFGW read it)");

@@ -33,9 +33,23 @@ struct GainGrids {
   std::string lambda = "40", alpha = "200", beta = "200";
 };
 
-const std::vector<std::string> kSummaryFields{
-    "controller", "Lambda", "alpha", "beta", "rms_error_mm", "max_error_mm", "rms_velocity_error_mm_s", "rms_s", "chattering",
-    "hf_share", "effort_rms_n", "max_force_n", "saturated_share", "measured_s", "plant_steps", "diverged", "diverged_at_s"};
+const std::vector<std::string> kSummaryFields{"controller",
+                                              "Lambda",
+                                              "alpha",
+                                              "beta",
+                                              "rms_error_mm",
+                                              "max_error_mm",
+                                              "rms_velocity_error_mm_s",
+                                              "rms_s",
+                                              "chattering",
+                                              "hf_share",
+                                              "effort_rms_n",
+                                              "max_force_n",
+                                              "saturated_share",
+                                              "measured_s",
+                                              "plant_steps",
+                                              "diverged",
+                                              "diverged_at_s"};
 
 tk::Record summary_record(const FeedDriveConfig& c, const FeedDriveSummary& s) {
   tk::Record r{{"controller", controller_name(c.gains.kind)}};
@@ -58,8 +72,8 @@ tk::Record summary_record(const FeedDriveConfig& c, const FeedDriveSummary& s) {
 /// an error, not a record with nulls in it.
 const FeedDriveSummary& checked(const FeedDriveSummary& s) {
   if (s.diverged) return s;  // its figures are written as null
-  for (const double v : {s.rms_error_mm, s.max_error_mm, s.rms_velocity_error_mm_s, s.rms_s, s.chattering_n_s, s.hf_share,
-                         s.effort_rms_n, s.max_force_n, s.saturated_share})
+  for (const double v : {s.rms_error_mm, s.max_error_mm, s.rms_velocity_error_mm_s, s.rms_s, s.chattering_n_s,
+                         s.hf_share, s.effort_rms_n, s.max_force_n, s.saturated_share})
     if (!std::isfinite(v)) throw tk::Error("the run's figures overflowed (is the reference beyond 1e12 mm?)");
   return s;
 }
@@ -75,7 +89,8 @@ std::vector<double> gain_grid(const std::string& text, const char* option) {
 
 double single_value(const std::string& text, const char* option) {
   const std::vector<double> values = gain_grid(text, option);
-  if (values.size() != 1) throw tk::UsageError(fmt::format("{} takes one value here; ranges are for 'smcsim sweep'", option));
+  if (values.size() != 1)
+    throw tk::UsageError(fmt::format("{} takes one value here; ranges are for 'smcsim sweep'", option));
   return values[0];
 }
 
@@ -85,16 +100,16 @@ void check_combination(const FeedDriveConfig& c) {
     throw tk::UsageError(fmt::format("--period {} s is longer than --duration {} s", c.period_s, c.duration_s));
   const double periods = c.duration_s / c.period_s;
   if (periods > kMaxPeriods)
-    throw tk::UsageError(fmt::format("--duration {} s at --period {} s is {:.3g} control periods; at most {:g}", c.duration_s,
-                                     c.period_s, periods, kMaxPeriods));
+    throw tk::UsageError(fmt::format("--duration {} s at --period {} s is {:.3g} control periods; at most {:g}",
+                                     c.duration_s, c.period_s, periods, kMaxPeriods));
   if (periods * c.substeps > kMaxPlantSteps)
-    throw tk::UsageError(fmt::format("--substeps {} over {:.3g} control periods is {:.3g} plant steps; at most {:g}", c.substeps,
-                                     periods, periods * c.substeps, kMaxPlantSteps));
+    throw tk::UsageError(fmt::format("--substeps {} over {:.3g} control periods is {:.3g} plant steps; at most {:g}",
+                                     c.substeps, periods, periods * c.substeps, kMaxPlantSteps));
   if (c.settle_s >= c.duration_s)
     throw tk::UsageError(fmt::format("--settle {} s leaves nothing of --duration {} s", c.settle_s, c.duration_s));
   if (c.cut.radial_depth_mm > c.cut.diameter_mm)
-    throw tk::UsageError(
-        fmt::format("--radial-depth {} mm is more than --tool-diameter {} mm", c.cut.radial_depth_mm, c.cut.diameter_mm));
+    throw tk::UsageError(fmt::format("--radial-depth {} mm is more than --tool-diameter {} mm", c.cut.radial_depth_mm,
+                                     c.cut.diameter_mm));
   c.validate();  // anything left is the library's to name
 }
 
@@ -111,8 +126,8 @@ void run_sweep(const FeedDriveConfig& base, const GainGrids& grids, unsigned thr
   } else {
     const std::vector<double> alphas = gain_grid(grids.alpha, "--alpha"), betas = gain_grid(grids.beta, "--beta");
     if (alphas.size() * betas.size() > kMaxSweepPoints)
-      throw tk::UsageError(fmt::format("--alpha and --beta make {} × {} settings; a sweep takes at most {}", alphas.size(),
-                                       betas.size(), kMaxSweepPoints));
+      throw tk::UsageError(fmt::format("--alpha and --beta make {} × {} settings; a sweep takes at most {}",
+                                       alphas.size(), betas.size(), kMaxSweepPoints));
     for (const double alpha : alphas)
       for (const double beta : betas) {
         gains.alpha = alpha, gains.beta = beta;
@@ -120,7 +135,8 @@ void run_sweep(const FeedDriveConfig& base, const GainGrids& grids, unsigned thr
       }
   }
   tk::cli::require_run_size(static_cast<double>(points.size()) * static_cast<double>(base.periods()) * base.substeps,
-                            kMaxSweepPlantSteps, "plant steps", "the sweep's settings, --duration, --period and --substeps");
+                            kMaxSweepPlantSteps, "plant steps",
+                            "the sweep's settings, --duration, --period and --substeps");
   tk::io::RecordWriter writer(format);
   writer.declare_fields(kSummaryFields);
   std::vector<tk::Record> diverged;  // written after every setting that held, so that they sort last
@@ -132,10 +148,8 @@ void run_sweep(const FeedDriveConfig& base, const GainGrids& grids, unsigned thr
         return summary_record(c, checked(simulate_feed_drive(c)));
       },
       [&](tk::Record& r) {
-        if (r["diverged"].get<bool>())
-          diverged.push_back(std::move(r));
-        else
-          writer.write(r);
+        if (r["diverged"].get<bool>()) diverged.push_back(std::move(r));
+        else writer.write(r);
       });
   for (ControllerGains& p : points) pool.submit(p);
   pool.finish();
@@ -159,7 +173,8 @@ void run_single(const FeedDriveConfig& config, bool summary_only, std::uint64_t 
         [&](const FeedDriveSample& s) {
           if (plotting) plot.add(s);
           if (summary_only) return;
-          values = {s.t_s, s.x_ref_mm, s.x_mm, s.error_mm, s.error_rate_mm_s, s.surface_mm_s, s.force_n, s.disturbance_n};
+          values = {s.t_s,          s.x_ref_mm, s.x_mm,         s.error_mm, s.error_rate_mm_s,
+                    s.surface_mm_s, s.force_n,  s.disturbance_n};
           for (const double v : values)  // the records stay JSON: no inf or nan in them
             if (!std::isfinite(v))
               throw tk::Error(fmt::format("the run overflowed at t = {} s (is the reference beyond 1e12 mm?)", s.t_s));
@@ -180,10 +195,12 @@ void run_single(const FeedDriveConfig& config, bool summary_only, std::uint64_t 
                                                         : std::string();
     if (sliding && g.printed_bracket) gains += " --seed-bracket";
     if (sliding && g.switching_sign < 0) gains += " --seed-sign";
-    plot.write(svg_path, fmt::format("smcsim --controller {}{}: {}", controller_name(g.kind), gains, config.reference.describe()));
+    plot.write(svg_path, fmt::format("smcsim --controller {}{}: {}", controller_name(g.kind), gains,
+                                     config.reference.describe()));
   }
   if (summary.diverged && !summary_only)
-    throw tk::Error(fmt::format("the loop diverged at t = {} s (error beyond {} mm)", summary.diverged_at_s, config.divergence_mm));
+    throw tk::Error(
+        fmt::format("the loop diverged at t = {} s (error beyond {} mm)", summary.diverged_at_s, config.divergence_mm));
 }
 
 }  // namespace
@@ -204,82 +221,261 @@ int main(int argc, char** argv) {
   double amplitude = 1, omega = 3, step_at = 0, slope = 1;
   bool summary_only = false, seed_sign = false, seed_bracket = false, no_cut = false;
   std::uint64_t every = 10;
-  const CLI::Validator finite_value = tk::cli::number_check(tk::cli::NumberDomain::finite), non_negative = tk::cli::number_check(tk::cli::NumberDomain::non_negative),
-                       positive = tk::cli::number_check(tk::cli::NumberDomain::positive), fraction = tk::cli::number_check(tk::cli::NumberDomain::fraction);
+  const CLI::Validator finite_value = tk::cli::number_check(tk::cli::NumberDomain::finite),
+                       non_negative = tk::cli::number_check(tk::cli::NumberDomain::non_negative),
+                       positive = tk::cli::number_check(tk::cli::NumberDomain::positive),
+                       fraction = tk::cli::number_check(tk::cli::NumberDomain::fraction);
   CLI::App& app = tool.app();
-  const std::string ctl = "Controllers", plant = "Plant", ref = "Reference", cut = "Cutting force", sim = "Simulation", out = "Output";
-  app.add_option("--controller", controller, "smc, sta, pid or ppd")->check(CLI::IsMember({"smc", "sta", "pid", "ppd"}))->capture_default_str()->group(ctl);
-  app.add_option("--Lambda", grids.lambda, "smc: switching gain Λ (force unit; a range in a sweep)")->capture_default_str()->type_name("F")->group(ctl);
-  app.add_option("--alpha", grids.alpha, "sta: α (a range in a sweep)")->capture_default_str()->type_name("F")->group(ctl);
-  app.add_option("--beta", grids.beta, "sta: β (a range in a sweep)")->capture_default_str()->type_name("F")->group(ctl);
-  app.add_option("--mu", c.gains.mu, "surface S = ė + μ e + λ ∫e: μ, 1/s")->check(non_negative)->capture_default_str()->group(ctl);
-  app.add_option("--lambda", c.gains.lambda, "surface: λ, 1/s²")->check(non_negative)->capture_default_str()->group(ctl);
-  app.add_option("--boundary-layer", c.gains.boundary_layer, "smc: sat(S/φ) instead of sign(S); φ in length units per second (0: sign)")->check(non_negative)->capture_default_str()->type_name("PHI")->group(ctl);
-  app.add_flag("--seed-sign", seed_sign, "smc, sta: switch with −Λ sign(S) as the paper writes it (destabilises: see smcsim(1))")->group(ctl);
-  app.add_flag("--seed-bracket", seed_bracket, "smc, sta: the bracket of the paper's eq. 8-9, m̂[ẍ_ref + (b/m)ẋ_ref + λe] with b/m read b̂/m̂, not F_eq (see smcsim(1))")->group(ctl);
-  app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")->check(tk::cli::range_check(1e-3, 1e5))->capture_default_str()->type_name("HZ")->group(ctl);
+  const std::string ctl = "Controllers", plant = "Plant", ref = "Reference", cut = "Cutting force", sim = "Simulation",
+                    out = "Output";
+  app.add_option("--controller", controller, "smc, sta, pid or ppd")
+      ->check(CLI::IsMember({"smc", "sta", "pid", "ppd"}))
+      ->capture_default_str()
+      ->group(ctl);
+  app.add_option("--Lambda", grids.lambda, "smc: switching gain Λ (force unit; a range in a sweep)")
+      ->capture_default_str()
+      ->type_name("F")
+      ->group(ctl);
+  app.add_option("--alpha", grids.alpha, "sta: α (a range in a sweep)")
+      ->capture_default_str()
+      ->type_name("F")
+      ->group(ctl);
+  app.add_option("--beta", grids.beta, "sta: β (a range in a sweep)")
+      ->capture_default_str()
+      ->type_name("F")
+      ->group(ctl);
+  app.add_option("--mu", c.gains.mu, "surface S = ė + μ e + λ ∫e: μ, 1/s")
+      ->check(non_negative)
+      ->capture_default_str()
+      ->group(ctl);
+  app.add_option("--lambda", c.gains.lambda, "surface: λ, 1/s²")
+      ->check(non_negative)
+      ->capture_default_str()
+      ->group(ctl);
+  app.add_option("--boundary-layer", c.gains.boundary_layer,
+                 "smc: sat(S/φ) instead of sign(S); φ in length units per second (0: sign)")
+      ->check(non_negative)
+      ->capture_default_str()
+      ->type_name("PHI")
+      ->group(ctl);
+  app.add_flag("--seed-sign", seed_sign,
+               "smc, sta: switch with −Λ sign(S) as the paper writes it (destabilises: see smcsim(1))")
+      ->group(ctl);
+  app.add_flag("--seed-bracket", seed_bracket,
+               "smc, sta: the bracket of the paper's eq. 8-9, m̂[ẍ_ref + (b/m)ẋ_ref + λe] with b/m read b̂/m̂, not F_eq "
+               "(see smcsim(1))")
+      ->group(ctl);
+  app.add_option("--pid-bandwidth", c.gains.pid_bandwidth_hz, "pid: default gains place a triple pole here, Hz")
+      ->check(tk::cli::range_check(1e-3, 1e5))
+      ->capture_default_str()
+      ->type_name("HZ")
+      ->group(ctl);
   app.add_option("--kp", c.gains.kp, "pid: proportional gain, kg/s² (N/m)")->check(non_negative)->group(ctl);
   app.add_option("--ki", c.gains.ki, "pid: integral gain, kg/s³")->check(non_negative)->group(ctl);
   app.add_option("--kd", c.gains.kd, "pid: derivative gain, kg/s")->check(non_negative)->group(ctl);
-  app.add_option("--pid-ff", c.gains.pid_feedforward, "pid: share of m̂ ẍ_ref + b̂ ẋ_ref fed forward, 0-1")->check(fraction)->capture_default_str()->group(ctl);
-  app.add_option("--kv", c.gains.position_gain, "ppd: position loop gain K_v, 1/s")->check(non_negative)->capture_default_str()->group(ctl);
-  app.add_option("--velocity-bandwidth", c.gains.velocity_bandwidth_hz, "ppd: velocity P gain = m̂·2π·this, Hz")->check(tk::cli::range_check(1e-3, 1e5))->capture_default_str()->type_name("HZ")->group(ctl);
-  app.add_option("--kvp", c.gains.velocity_p, "ppd: velocity loop P gain, kg/s (overrides the bandwidth)")->check(non_negative)->group(ctl);
-  app.add_option("--kvd", c.gains.velocity_d, "ppd: velocity loop D gain, kg")->check(non_negative)->capture_default_str()->group(ctl);
-  app.add_option("--velocity-ff", c.gains.velocity_feedforward, "ppd: share of the reference velocity fed forward, 0-1")->check(fraction)->capture_default_str()->group(ctl);
+  app.add_option("--pid-ff", c.gains.pid_feedforward, "pid: share of m̂ ẍ_ref + b̂ ẋ_ref fed forward, 0-1")
+      ->check(fraction)
+      ->capture_default_str()
+      ->group(ctl);
+  app.add_option("--kv", c.gains.position_gain, "ppd: position loop gain K_v, 1/s")
+      ->check(non_negative)
+      ->capture_default_str()
+      ->group(ctl);
+  app.add_option("--velocity-bandwidth", c.gains.velocity_bandwidth_hz, "ppd: velocity P gain = m̂·2π·this, Hz")
+      ->check(tk::cli::range_check(1e-3, 1e5))
+      ->capture_default_str()
+      ->type_name("HZ")
+      ->group(ctl);
+  app.add_option("--kvp", c.gains.velocity_p, "ppd: velocity loop P gain, kg/s (overrides the bandwidth)")
+      ->check(non_negative)
+      ->group(ctl);
+  app.add_option("--kvd", c.gains.velocity_d, "ppd: velocity loop D gain, kg")
+      ->check(non_negative)
+      ->capture_default_str()
+      ->group(ctl);
+  app.add_option("--velocity-ff", c.gains.velocity_feedforward, "ppd: share of the reference velocity fed forward, 0-1")
+      ->check(fraction)
+      ->capture_default_str()
+      ->group(ctl);
 
-  app.add_option("--mass", c.plant.mass_kg, "the axis's mass m, kg")->check(tk::cli::range_check(1e-3, 1e4))->capture_default_str()->group(plant);
-  app.add_option("--damping", c.plant.damping_kg_s, "viscous damping b, kg/s")->check(non_negative)->capture_default_str()->group(plant);
-  app.add_option("--mass-end", c.plant.mass_end_kg, "the mass drifts linearly to this by the end (material removal)")->check(tk::cli::range_check(1e-3, 1e4))->group(plant);
-  app.add_option("--damping-end", c.plant.damping_end_kg_s, "the damping drifts linearly to this by the end (lubricant)")->check(non_negative)->group(plant);
-  app.add_option("--mass-estimate", c.mass_estimate_kg, "m̂, the controller's mass")->check(tk::cli::range_check(1e-3, 1e4))->capture_default_str()->group(plant);
-  app.add_option("--damping-estimate", c.damping_estimate_kg_s, "b̂, the controller's damping")->check(non_negative)->capture_default_str()->group(plant);
-  app.add_option("--kt", c.amplifier_a_v, "current amplifier gain K_t, A/V")->check(tk::cli::range_check(1e-3, 1000))->capture_default_str()->group(plant);
-  app.add_option("--ka", c.force_constant_n_a, "motor force constant K_a, N/A")->check(tk::cli::range_check(1e-3, 1e4))->capture_default_str()->group(plant);
-  app.add_option("--voltage-limit", c.voltage_limit_v, "the amplifier's input saturates at ± this, V")->check(tk::cli::range_check(0.01, 1000))->capture_default_str()->group(plant);
+  app.add_option("--mass", c.plant.mass_kg, "the axis's mass m, kg")
+      ->check(tk::cli::range_check(1e-3, 1e4))
+      ->capture_default_str()
+      ->group(plant);
+  app.add_option("--damping", c.plant.damping_kg_s, "viscous damping b, kg/s")
+      ->check(non_negative)
+      ->capture_default_str()
+      ->group(plant);
+  app.add_option("--mass-end", c.plant.mass_end_kg, "the mass drifts linearly to this by the end (material removal)")
+      ->check(tk::cli::range_check(1e-3, 1e4))
+      ->group(plant);
+  app.add_option("--damping-end", c.plant.damping_end_kg_s,
+                 "the damping drifts linearly to this by the end (lubricant)")
+      ->check(non_negative)
+      ->group(plant);
+  app.add_option("--mass-estimate", c.mass_estimate_kg, "m̂, the controller's mass")
+      ->check(tk::cli::range_check(1e-3, 1e4))
+      ->capture_default_str()
+      ->group(plant);
+  app.add_option("--damping-estimate", c.damping_estimate_kg_s, "b̂, the controller's damping")
+      ->check(non_negative)
+      ->capture_default_str()
+      ->group(plant);
+  app.add_option("--kt", c.amplifier_a_v, "current amplifier gain K_t, A/V")
+      ->check(tk::cli::range_check(1e-3, 1000))
+      ->capture_default_str()
+      ->group(plant);
+  app.add_option("--ka", c.force_constant_n_a, "motor force constant K_a, N/A")
+      ->check(tk::cli::range_check(1e-3, 1e4))
+      ->capture_default_str()
+      ->group(plant);
+  app.add_option("--voltage-limit", c.voltage_limit_v, "the amplifier's input saturates at ± this, V")
+      ->check(tk::cli::range_check(0.01, 1000))
+      ->capture_default_str()
+      ->group(plant);
 
-  CLI::Option* reference_option = app.add_option("--reference", reference, "sine, step or ramp")->check(CLI::IsMember({"sine", "step", "ramp"}))->capture_default_str()->group(ref);
-  CLI::Option* file_option = app.add_option("--reference-file", reference_file, "records t, x (mm), optionally v, a: the reference from samples ('-': stdin)")->type_name("FILE")->group(ref);
-  CLI::Option* amplitude_option = app.add_option("--amplitude", amplitude, "sine amplitude or step height, mm")->check(tk::cli::range_check(-1e4, 1e4))->capture_default_str()->type_name("MM")->group(ref);
-  CLI::Option* omega_option = app.add_option("--omega", omega, "sine frequency, rad/s")->check(tk::cli::range_check(0, 1e6))->capture_default_str()->group(ref);
-  CLI::Option* slope_option = app.add_option("--slope", slope, "ramp speed, mm/s")->check(tk::cli::range_check(-1e5, 1e5))->capture_default_str()->group(ref);
-  CLI::Option* start_option = app.add_option("--start", step_at, "step or ramp start, s")->check(finite_value)->capture_default_str()->type_name("S")->group(ref);
-  for (CLI::Option* shape : {reference_option, amplitude_option, omega_option, slope_option, start_option}) file_option->excludes(shape);
+  CLI::Option* reference_option = app.add_option("--reference", reference, "sine, step or ramp")
+                                      ->check(CLI::IsMember({"sine", "step", "ramp"}))
+                                      ->capture_default_str()
+                                      ->group(ref);
+  CLI::Option* file_option =
+      app.add_option("--reference-file", reference_file,
+                     "records t, x (mm), optionally v, a: the reference from samples ('-': stdin)")
+          ->type_name("FILE")
+          ->group(ref);
+  CLI::Option* amplitude_option = app.add_option("--amplitude", amplitude, "sine amplitude or step height, mm")
+                                      ->check(tk::cli::range_check(-1e4, 1e4))
+                                      ->capture_default_str()
+                                      ->type_name("MM")
+                                      ->group(ref);
+  CLI::Option* omega_option = app.add_option("--omega", omega, "sine frequency, rad/s")
+                                  ->check(tk::cli::range_check(0, 1e6))
+                                  ->capture_default_str()
+                                  ->group(ref);
+  CLI::Option* slope_option = app.add_option("--slope", slope, "ramp speed, mm/s")
+                                  ->check(tk::cli::range_check(-1e5, 1e5))
+                                  ->capture_default_str()
+                                  ->group(ref);
+  CLI::Option* start_option = app.add_option("--start", step_at, "step or ramp start, s")
+                                  ->check(finite_value)
+                                  ->capture_default_str()
+                                  ->type_name("S")
+                                  ->group(ref);
+  for (CLI::Option* shape : {reference_option, amplitude_option, omega_option, slope_option, start_option})
+    file_option->excludes(shape);
 
   app.add_flag("--no-cut", no_cut, "no cutting force")->group(cut);
-  app.add_option("--teeth", c.cut.teeth, "flutes")->check(tk::cli::count_check(1, 64))->capture_default_str()->group(cut);
-  app.add_option("--tool-diameter", c.cut.diameter_mm, "mm")->check(tk::cli::range_check(0.01, 100))->capture_default_str()->group(cut);
-  app.add_option("--spindle", c.cut.spindle_rpm, "spindle speed, rpm")->check(tk::cli::range_check(1, 1e6))->capture_default_str()->group(cut);
-  app.add_option("--axial-depth", c.cut.axial_depth_mm, "mm")->check(tk::cli::range_check(1e-4, 100))->capture_default_str()->group(cut);
-  app.add_option("--radial-depth", c.cut.radial_depth_mm, "mm (up-milling); default a full slot")->check(tk::cli::range_check(1e-4, 100))->group(cut);
-  app.add_option("--feed", c.cut.feed_mm_min, "mm/min")->check(tk::cli::range_check(0, 1e5))->capture_default_str()->group(cut);
-  app.add_option("--ktc", c.cut.ktc_n_mm2, "tangential shear coefficient, N/mm²")->check(finite_value)->capture_default_str()->group(cut);
-  app.add_option("--krc", c.cut.krc_n_mm2, "radial shear coefficient, N/mm²")->check(finite_value)->capture_default_str()->group(cut);
-  app.add_option("--kte", c.cut.kte_n_mm, "tangential edge coefficient, N/mm")->check(finite_value)->capture_default_str()->group(cut);
-  app.add_option("--kre", c.cut.kre_n_mm, "radial edge coefficient, N/mm")->check(finite_value)->capture_default_str()->group(cut);
+  app.add_option("--teeth", c.cut.teeth, "flutes")
+      ->check(tk::cli::count_check(1, 64))
+      ->capture_default_str()
+      ->group(cut);
+  app.add_option("--tool-diameter", c.cut.diameter_mm, "mm")
+      ->check(tk::cli::range_check(0.01, 100))
+      ->capture_default_str()
+      ->group(cut);
+  app.add_option("--spindle", c.cut.spindle_rpm, "spindle speed, rpm")
+      ->check(tk::cli::range_check(1, 1e6))
+      ->capture_default_str()
+      ->group(cut);
+  app.add_option("--axial-depth", c.cut.axial_depth_mm, "mm")
+      ->check(tk::cli::range_check(1e-4, 100))
+      ->capture_default_str()
+      ->group(cut);
+  app.add_option("--radial-depth", c.cut.radial_depth_mm, "mm (up-milling); default a full slot")
+      ->check(tk::cli::range_check(1e-4, 100))
+      ->group(cut);
+  app.add_option("--feed", c.cut.feed_mm_min, "mm/min")
+      ->check(tk::cli::range_check(0, 1e5))
+      ->capture_default_str()
+      ->group(cut);
+  app.add_option("--ktc", c.cut.ktc_n_mm2, "tangential shear coefficient, N/mm²")
+      ->check(finite_value)
+      ->capture_default_str()
+      ->group(cut);
+  app.add_option("--krc", c.cut.krc_n_mm2, "radial shear coefficient, N/mm²")
+      ->check(finite_value)
+      ->capture_default_str()
+      ->group(cut);
+  app.add_option("--kte", c.cut.kte_n_mm, "tangential edge coefficient, N/mm")
+      ->check(finite_value)
+      ->capture_default_str()
+      ->group(cut);
+  app.add_option("--kre", c.cut.kre_n_mm, "radial edge coefficient, N/mm")
+      ->check(finite_value)
+      ->capture_default_str()
+      ->group(cut);
 
-  app.add_option("--duration", c.duration_s, "simulated time, s")->check(tk::cli::range_check(1e-6, 1e5))->capture_default_str()->type_name("S")->group(sim);
-  app.add_option("--period", c.period_s, "control period, s")->check(tk::cli::range_check(1e-7, 1))->capture_default_str()->type_name("S")->group(sim);
-  app.add_option("--substeps", c.substeps, "exact plant steps per control period")->check(tk::cli::count_check(1, 100000))->capture_default_str()->type_name("N")->group(sim);
-  app.add_option("--encoder", c.encoder_mm, "encoder resolution, mm (0: none)")->check(tk::cli::range_check(0, 1))->capture_default_str()->type_name("MM")->group(sim);
-  app.add_option("--position-filter", c.position_filter_hz, "low-pass on the position estimate, Hz (0: none)")->check(tk::cli::range_check(0, 1e7))->capture_default_str()->type_name("HZ")->group(sim);
-  app.add_option("--velocity-filter", c.velocity_filter_hz, "low-pass on the velocity estimate, Hz (0: none)")->check(tk::cli::range_check(0, 1e7))->capture_default_str()->type_name("HZ")->group(sim);
-  app.add_option("--units", units, "mm: gains in kg·mm/s² (mN); m: in newtons (see smcsim(1), UNITS)")->check(CLI::IsMember({"mm", "m"}))->capture_default_str()->group(sim);
-  app.add_option("--initial-position", c.initial_position_mm, "x(0), mm (default: on the reference)")->check(finite_value)->type_name("MM")->group(sim);
-  app.add_option("--initial-velocity", c.initial_velocity_mm_s, "ẋ(0), mm/s (default: the reference's)")->check(finite_value)->type_name("MM/S")->group(sim);
+  app.add_option("--duration", c.duration_s, "simulated time, s")
+      ->check(tk::cli::range_check(1e-6, 1e5))
+      ->capture_default_str()
+      ->type_name("S")
+      ->group(sim);
+  app.add_option("--period", c.period_s, "control period, s")
+      ->check(tk::cli::range_check(1e-7, 1))
+      ->capture_default_str()
+      ->type_name("S")
+      ->group(sim);
+  app.add_option("--substeps", c.substeps, "exact plant steps per control period")
+      ->check(tk::cli::count_check(1, 100000))
+      ->capture_default_str()
+      ->type_name("N")
+      ->group(sim);
+  app.add_option("--encoder", c.encoder_mm, "encoder resolution, mm (0: none)")
+      ->check(tk::cli::range_check(0, 1))
+      ->capture_default_str()
+      ->type_name("MM")
+      ->group(sim);
+  app.add_option("--position-filter", c.position_filter_hz, "low-pass on the position estimate, Hz (0: none)")
+      ->check(tk::cli::range_check(0, 1e7))
+      ->capture_default_str()
+      ->type_name("HZ")
+      ->group(sim);
+  app.add_option("--velocity-filter", c.velocity_filter_hz, "low-pass on the velocity estimate, Hz (0: none)")
+      ->check(tk::cli::range_check(0, 1e7))
+      ->capture_default_str()
+      ->type_name("HZ")
+      ->group(sim);
+  app.add_option("--units", units, "mm: gains in kg·mm/s² (mN); m: in newtons (see smcsim(1), UNITS)")
+      ->check(CLI::IsMember({"mm", "m"}))
+      ->capture_default_str()
+      ->group(sim);
+  app.add_option("--initial-position", c.initial_position_mm, "x(0), mm (default: on the reference)")
+      ->check(finite_value)
+      ->type_name("MM")
+      ->group(sim);
+  app.add_option("--initial-velocity", c.initial_velocity_mm_s, "ẋ(0), mm/s (default: the reference's)")
+      ->check(finite_value)
+      ->type_name("MM/S")
+      ->group(sim);
 
   app.add_flag("--summary", summary_only, "one summary record instead of the time series")->group(out);
-  app.add_option("--every", every, "a time-series record every N control periods")->check(tk::cli::count_check(1, 1000000000000))->capture_default_str()->type_name("N")->group(out);
-  app.add_option("--settle", c.settle_s, "summary figures from this time on, s")->check(non_negative)->capture_default_str()->type_name("S")->group(out);
-  app.add_option("--hf-cutoff", c.hf_cutoff_hz, "hf_share: share of F's power above this, Hz (0: not computed)")->check(tk::cli::range_check(0, 1e7))->capture_default_str()->type_name("HZ")->group(out);
-  app.add_option("--svg", svg_path, "the paper's four panels (position, errors, control) as SVG")->type_name("FILE")->group(out);
-  CLI::App* sweep = app.add_subcommand("sweep", "one summary record per gain setting (--Lambda, or --alpha and --beta, as FROM:TO:STEP), on -j threads");
+  app.add_option("--every", every, "a time-series record every N control periods")
+      ->check(tk::cli::count_check(1, 1000000000000))
+      ->capture_default_str()
+      ->type_name("N")
+      ->group(out);
+  app.add_option("--settle", c.settle_s, "summary figures from this time on, s")
+      ->check(non_negative)
+      ->capture_default_str()
+      ->type_name("S")
+      ->group(out);
+  app.add_option("--hf-cutoff", c.hf_cutoff_hz, "hf_share: share of F's power above this, Hz (0: not computed)")
+      ->check(tk::cli::range_check(0, 1e7))
+      ->capture_default_str()
+      ->type_name("HZ")
+      ->group(out);
+  app.add_option("--svg", svg_path, "the paper's four panels (position, errors, control) as SVG")
+      ->type_name("FILE")
+      ->group(out);
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "one summary record per gain setting (--Lambda, or --alpha and --beta, as FROM:TO:STEP), on -j threads");
   sweep->fallthrough();
 
   return tool.run(argc, argv, [&] {
     c.gains.kind = parse_controller_kind(controller);
     if ((seed_sign || seed_bracket) && c.gains.kind != ControllerKind::smc && c.gains.kind != ControllerKind::sta)
-      throw tk::UsageError(fmt::format("--seed-sign and --seed-bracket change the sliding-mode laws (smc, sta), not {}", controller));
+      throw tk::UsageError(
+          fmt::format("--seed-sign and --seed-bracket change the sliding-mode laws (smc, sta), not {}", controller));
     c.gains.switching_sign = seed_sign ? -1 : 1;
     c.gains.printed_bracket = seed_bracket;
     c.length_unit_m = units == "m" ? 1 : 1e-3;
@@ -288,7 +484,8 @@ int main(int argc, char** argv) {
     if (sweep->parsed()) {
       if (!svg_path.empty()) throw tk::UsageError("--svg draws one run, not a sweep");
       if (c.gains.kind == ControllerKind::pid || c.gains.kind == ControllerKind::ppd)
-        throw tk::UsageError(fmt::format("a sweep varies --Lambda (smc) or --alpha and --beta (sta), not {} gains", controller));
+        throw tk::UsageError(
+            fmt::format("a sweep varies --Lambda (smc) or --alpha and --beta (sta), not {} gains", controller));
       if (c.gains.kind == ControllerKind::smc && (given("--alpha") || given("--beta")))
         throw tk::UsageError("--alpha and --beta are sta gains; a sweep of smc varies --Lambda");
       if (c.gains.kind == ControllerKind::sta && given("--Lambda"))
@@ -299,14 +496,10 @@ int main(int argc, char** argv) {
       c.gains.beta = single_value(grids.beta, "--beta");
     }
     check_combination(c);  // before a reference file is read
-    if (!reference_file.empty())
-      c.reference = Reference::from_records(reference_file);
-    else if (reference == "step")
-      c.reference = Reference::step(amplitude, step_at);
-    else if (reference == "ramp")
-      c.reference = Reference::ramp(slope, step_at);
-    else
-      c.reference = Reference::sine(amplitude, omega);
+    if (!reference_file.empty()) c.reference = Reference::from_records(reference_file);
+    else if (reference == "step") c.reference = Reference::step(amplitude, step_at);
+    else if (reference == "ramp") c.reference = Reference::ramp(slope, step_at);
+    else c.reference = Reference::sine(amplitude, omega);
     if (sweep->parsed()) {
       unsigned threads = tool.common().threads;
       if (!given("--threads")) threads = std::max(1u, std::thread::hardware_concurrency());

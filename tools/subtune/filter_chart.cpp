@@ -8,15 +8,15 @@
 #include "io/number_column.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
-#include "quality/subtune_report.hpp"
 #include "modes.hpp"
+#include "quality/subtune_report.hpp"
 
 namespace subtune {
 
 /// The filter under a chart instead of sub-tuning: per part the chart's
 /// statistic and limit, its level, and whether to adjust.
-void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& chart, const std::string& field, const Limits& limits,
-                  const std::string& svg_path, const tk::cli::ToolApp& tool) {
+void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& chart, const std::string& field,
+                  const Limits& limits, const std::string& svg_path, const tk::cli::ToolApp& tool) {
   tk::io::RecordReader reader(inputs, tk::io::number_column_probe(field));
   tk::io::RecordWriter writer(tool.output_format());
   std::vector<std::string> fields = chart_step_fields();
@@ -45,10 +45,11 @@ void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& char
   writer.flush();
   if (!svg_path.empty()) {
     const std::string name(policy_name(chart.kind()));
-    write_plot(plot, svg_path, {.title = fmt::format("subtune --policy {}: {} parts", name, parts),
-                          .level_label = level_label(chart.kind()),
-                          .lower = limits.lower.value_or(NAN),
-                          .upper = limits.upper.value_or(NAN)},
+    write_plot(plot, svg_path,
+               {.title = fmt::format("subtune --policy {}: {} parts", name, parts),
+                .level_label = level_label(chart.kind()),
+                .lower = limits.lower.value_or(NAN),
+                .upper = limits.upper.value_or(NAN)},
                tool);
   }
 }

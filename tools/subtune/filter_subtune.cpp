@@ -6,8 +6,8 @@
 #include "io/number_column.hpp"
 #include "io/record_reader.hpp"
 #include "io/record_writer.hpp"
-#include "quality/subtune_report.hpp"
 #include "modes.hpp"
+#include "quality/subtune_report.hpp"
 
 namespace subtune {
 
@@ -55,7 +55,8 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
       if (judged) record["in_tolerance"] = in_tolerance;
       writer.write(record);
     }
-    if (!svg_path.empty()) plot.add(static_cast<double>(parts), size, step.a + step.b * static_cast<double>(step.n), step.offset);
+    if (!svg_path.empty())
+      plot.add(static_cast<double>(parts), size, step.a + step.b * static_cast<double>(step.n), step.offset);
   }
   writer.flush();
   if (!svg_path.empty()) {

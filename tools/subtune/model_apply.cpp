@@ -28,12 +28,14 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
     const double a = length_field(record, "a", where);
     if (a < 0) throw tk::Error(fmt::format("allowance a = {} mm is negative", a), where);
     if (feed_range) {
-      const tk::machining::FeedChoice choice = tk::machining::feed_for_error(m, a, feed_range->target, feed_range->f_min, feed_range->f_max);
+      const tk::machining::FeedChoice choice =
+          tk::machining::feed_for_error(m, a, feed_range->target, feed_range->f_min, feed_range->f_max);
       tk::machining::add_feed_choice(record, choice);
       if (choice.status == tk::machining::FeedStatus::none) ++unsolved;
     } else {
       const std::optional<double> record_feed = tk::io::optional_number_field(record, "f", where);
-      if (!record_feed && std::isnan(fixed_feed)) throw tk::Error("no feed: give --feed or an f field in the record", where);
+      if (!record_feed && std::isnan(fixed_feed))
+        throw tk::Error("no feed: give --feed or an f field in the record", where);
       const double f = record_feed.value_or(fixed_feed);
       if (!(f > 0)) throw tk::Error(fmt::format("feed f = {} mm/rev must be positive", f), where);
       tk::machining::add_correction(record, m, a, f);
@@ -42,9 +44,10 @@ void apply_model(const std::vector<std::string>& inputs, const ForceErrorModel& 
   }
   writer.flush();
   if (unsolved > 0)
-    tool.warn(fmt::format("{} workpiece(s) have no feed in [{:g}, {:g}] mm/rev giving y = {:g} mm (feed_status none; "
-                          "error_min and error_max give the reachable range)",
-                          unsolved, feed_range->f_min, feed_range->f_max, feed_range->target));
+    tool.warn(
+        fmt::format("{} workpiece(s) have no feed in [{:g}, {:g}] mm/rev giving y = {:g} mm (feed_status none; "
+                    "error_min and error_max give the reachable range)",
+                    unsolved, feed_range->f_min, feed_range->f_max, feed_range->target));
 }
 
 }  // namespace subtune

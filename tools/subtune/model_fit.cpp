@@ -22,7 +22,8 @@ void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::O
   tk::Record record;
   while (reader.next(record)) {
     const tk::Location where = reader.where();
-    points.push_back({length_field(record, "a", where), length_field(record, "f", where), length_field(record, "y", where)});
+    points.push_back(
+        {length_field(record, "a", where), length_field(record, "f", where), length_field(record, "y", where)});
     if (residuals) records.push_back(std::move(record));
   }
   if (points.empty()) throw tk::Error("no calibration records (a, f, y) in the input");
@@ -37,7 +38,8 @@ void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::O
   for (const auto& [key, value] : model.items())
     if (key != "record") columns.push_back(key);
   writer.declare_fields(columns);  // CSV: one header for both kinds of record
-  for (std::size_t i = 0; i < records.size(); ++i) writer.write(tk::machining::point_record(records[i], fit.fitted[i], fit.residuals[i]));
+  for (std::size_t i = 0; i < records.size(); ++i)
+    writer.write(tk::machining::point_record(records[i], fit.fitted[i], fit.residuals[i]));
   writer.write(model);
   writer.flush();
 }
@@ -64,7 +66,9 @@ ForceErrorModel load_model(const std::string& path, const std::string& coefficie
       found = true;
     }
   }
-  if (!found) throw tk::Error(fmt::format("{}: no model record (b0, b1, b2, b12, b11, b22); make one with 'subtune model'", path));
+  if (!found)
+    throw tk::Error(
+        fmt::format("{}: no model record (b0, b1, b2, b12, b11, b22); make one with 'subtune model'", path));
   return m;
 }
 

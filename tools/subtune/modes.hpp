@@ -48,7 +48,6 @@ struct Limits {
   std::optional<double> lower, upper;
 };
 
-
 /// The record's own limits, else the options'.
 Limits limits_of(const tk::Record& record, const Limits& options, const tk::Location& where);
 bool within(double size, const Limits& l);
@@ -58,8 +57,8 @@ void filter_sizes(const std::vector<std::string>& inputs, const SubTuneSettings&
                   const Limits& limits, const std::string& svg_path, const tk::cli::ToolApp& tool);
 /// The filter under a chart instead of sub-tuning: per part the chart's
 /// statistic and limit, its level, and whether to adjust.
-void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& chart, const std::string& field, const Limits& limits,
-                  const std::string& svg_path, const tk::cli::ToolApp& tool);
+void filter_chart(const std::vector<std::string>& inputs, AdjustmentPolicy& chart, const std::string& field,
+                  const Limits& limits, const std::string& svg_path, const tk::cli::ToolApp& tool);
 
 /// 'subtune model': the force-error model fitted to calibration records.
 void fit_model(const std::vector<std::string>& inputs, bool residuals, tk::io::OutputFormat format);
@@ -83,7 +82,7 @@ struct SimulationOptions {
 };
 
 /// --simulate: one summary record per policy.
-void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartSettings charts, const SimulationOptions& o,
-              const tk::cli::ToolApp& tool);
+void simulate(const LatheSettings& lathe, const SubTuneSettings& subtune, ChartSettings charts,
+              const SimulationOptions& o, const tk::cli::ToolApp& tool);
 
 }  // namespace subtune

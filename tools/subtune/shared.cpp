@@ -13,7 +13,8 @@ namespace subtune {
 
 double length_field(const tk::Record& record, const std::string& key, const tk::Location& where) {
   const double v = tk::io::number_field(record, key, where);
-  if (std::abs(v) > kMaxLengthMm) throw tk::Error(fmt::format("{} = {} mm is beyond ±{:g} mm", key, v, kMaxLengthMm), where);
+  if (std::abs(v) > kMaxLengthMm)
+    throw tk::Error(fmt::format("{} = {} mm is beyond ±{:g} mm", key, v, kMaxLengthMm), where);
   if (v != 0 && std::abs(v) < kMinLengthMm)
     throw tk::Error(fmt::format("{} = {} mm is below {:g} mm in magnitude (and not 0)", key, v, kMinLengthMm), where);
   return v;
@@ -37,10 +38,10 @@ void write_plot(const SizePlot& plot, const std::string& path, const SizePlotInf
   plot.write(path, info);
 }
 
-
 /// The record's own limits, else the options'.
 Limits limits_of(const tk::Record& record, const Limits& options, const tk::Location& where) {
-  Limits l{tk::io::optional_number_field(record, "lower", where), tk::io::optional_number_field(record, "upper", where)};
+  Limits l{tk::io::optional_number_field(record, "lower", where),
+           tk::io::optional_number_field(record, "upper", where)};
   if (!l.lower) l.lower = options.lower;
   if (!l.upper) l.upper = options.upper;
   return l;

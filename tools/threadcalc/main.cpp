@@ -39,8 +39,7 @@ std::vector<ThreadResult> evaluate_text(const std::string& text, const Options& 
 }
 
 void warn_all(const ThreadResult& result, const tk::Location& where, const tk::cli::ToolApp& tool) {
-  for (const std::string& warning : result.warnings)
-    tool.warn(tk::Error(warning, where).located_message());
+  for (const std::string& warning : result.warnings) tool.warn(tk::Error(warning, where).located_message());
 }
 
 void write_records(const std::vector<std::string>& designations, const std::vector<std::string>& inputs,
@@ -111,8 +110,9 @@ void write_program(const std::vector<std::string>& designations, Options o, cons
   settings.length_mm = p.length;
   settings.rpm = p.rpm > 0 ? p.rpm : spindle_speed(p.cutting_speed, result.profile.major, p.max_rpm);
   if (settings.rpm < kMinRpm)
-    throw tk::UsageError(fmt::format("--vc {:g} m/min gives {:.3g} rpm at the {:g} mm diameter, below {:g} rpm: give a higher --vc or --rpm",
-                                     p.cutting_speed, settings.rpm, result.profile.major, kMinRpm));
+    throw tk::UsageError(fmt::format(
+        "--vc {:g} m/min gives {:.3g} rpm at the {:g} mm diameter, below {:g} rpm: give a higher --vc or --rpm",
+        p.cutting_speed, settings.rpm, result.profile.major, kMinRpm));
   settings.clearance_mm = p.clearance;
   settings.run_in_mm = p.run_in;
   settings.acceleration_mm_s2 = p.acceleration;
@@ -163,12 +163,16 @@ int main(int argc, char** argv) {
   std::vector<CLI::Option*> turning_options{
       app.add_option("--passes", o.turning.passes, "passes (default: the pitch's lower end in Widia's table)")
           ->check(tk::cli::count_check(2, 100)),
-      app.add_option("--min-last-pass", o.turning.min_last_pass_mm, "the default passes keep the last one at least this deep, mm")
-          ->check(range_check(0, 1))->capture_default_str(),
+      app.add_option("--min-last-pass", o.turning.min_last_pass_mm,
+                     "the default passes keep the last one at least this deep, mm")
+          ->check(range_check(0, 1))
+          ->capture_default_str(),
       app.add_option("--spring-passes", o.turning.spring_passes, "passes repeated at full depth")
-          ->check(tk::cli::count_check(0, 10))->capture_default_str(),
+          ->check(tk::cli::count_check(0, 10))
+          ->capture_default_str(),
       app.add_option("--infeed", infeed, "radial, or flank (modified flank infeed)")
-          ->check(CLI::IsMember({"radial", "flank"}))->capture_default_str(),
+          ->check(CLI::IsMember({"radial", "flank"}))
+          ->capture_default_str(),
       flank_angle,
       app.add_option("--stock", o.turning.topping_stock_mm,
                      "diametral stock the insert tops off the crest, mm (default 0.15, 0.15 P below P 1)")
@@ -187,22 +191,30 @@ int main(int argc, char** argv) {
       app.add_option("--rpm", program.rpm, "spindle speed (default: from --vc at the nominal diameter)")
           ->check(range_check(kMinRpm, kMaxRpm)),
       app.add_option("--vc", program.cutting_speed, "cutting speed, m/min")
-          ->check(range_check(1, 5000))->capture_default_str(),
+          ->check(range_check(1, 5000))
+          ->capture_default_str(),
       app.add_option("--max-rpm", program.max_rpm, "the highest spindle speed --vc may give")
-          ->check(range_check(kMinRpm, kMaxRpm))->capture_default_str(),
-      app.add_option("--clearance", program.clearance, "radial gap of the drive line from the blank (inside: at most a tenth of the bore), mm")
-          ->check(range_check(0.01, 100))->capture_default_str(),
+          ->check(range_check(kMinRpm, kMaxRpm))
+          ->capture_default_str(),
+      app.add_option("--clearance", program.clearance,
+                     "radial gap of the drive line from the blank (inside: at most a tenth of the bore), mm")
+          ->check(range_check(0.01, 100))
+          ->capture_default_str(),
       app.add_option("--accel", program.acceleration, "the Z axis's acceleration, mm/s^2 (sets the default run-in)")
-          ->check(range_check(1, 1e6))->capture_default_str(),
-      app.add_option("--run-in", program.run_in, "start this far ahead of the face (left hand: beyond the thread's end), mm (default: 3 P, or what --accel needs)")
+          ->check(range_check(1, 1e6))
+          ->capture_default_str(),
+      app.add_option("--run-in", program.run_in,
+                     "start this far ahead of the face (left hand: beyond the thread's end), mm (default: 3 P, or what "
+                     "--accel needs)")
           ->check(range_check(0, kMaxRunInMm))};
-  CLI::Option* gcode = app.add_option("--gcode", program.style, "write the threading program instead of records: g76 or passes")
-                           ->check(CLI::IsMember({"g76", "passes"}));
+  CLI::Option* gcode =
+      app.add_option("--gcode", program.style, "write the threading program instead of records: g76 or passes")
+          ->check(CLI::IsMember({"g76", "passes"}));
   program_options.push_back(gcode);
   for (CLI::Option* option : program_options) option->group(program_group);
 
   return tool.run(argc, argv, [&] {
-    o.choice = kind == "external" ? MemberChoice::external
+    o.choice = kind == "external"   ? MemberChoice::external
                : kind == "internal" ? MemberChoice::internal
                : kind == "both"     ? MemberChoice::both
                                     : MemberChoice::from_class;

@@ -49,16 +49,18 @@ struct ControllerOptions {
 
   void add_to(CLI::App& sub, bool many_tnorms) {
     auto* t = sub.add_option("--tnorm", tnorms,
-                             many_tnorms ? "t-norm(s): minimum, product, drastic, lukasiewicz, trigonometric, hamacher, all"
-                                         : "the rules' t-norm: minimum, product, drastic, lukasiewicz, trigonometric, hamacher")
+                             many_tnorms
+                                 ? "t-norm(s): minimum, product, drastic, lukasiewicz, trigonometric, hamacher, all"
+                                 : "the rules' t-norm: minimum, product, drastic, lukasiewicz, trigonometric, hamacher")
                   ->type_name("NAME");
     if (!many_tnorms) t->expected(1);
     adc_option = sub.add_option("--adc", adc_bits, "the sensors' ADC: 10 (Arduino Uno) or 12 bits (ESP32)")
-        ->check(CLI::IsMember({10, 12}))
-        ->capture_default_str();
+                     ->check(CLI::IsMember({10, 12}))
+                     ->capture_default_str();
     sub.add_option("--centroid", centroid, "exact, or discrete[:N] (fuzzylite's, N samples, default 100)")
         ->type_name("KIND");
-    sub.add_option("--speed-factor", speed_factor, "scales the motor terms (the paper: 1.92 first, 2.0 in its Tables 1-2)")
+    sub.add_option("--speed-factor", speed_factor,
+                   "scales the motor terms (the paper: 1.92 first, 2.0 in its Tables 1-2)")
         ->check(cli::range_check(0.1, 10))
         ->capture_default_str();
     sub.add_option("--backward-slowly", backward_slowly, "BACKWARD_SLOWLY's corners before scaling")
@@ -125,7 +127,8 @@ struct ControllerOptions {
       o.conjunction = t.value_or(TNorm::minimum);
       const std::vector<double> c = cli::parse_numbers(backward_slowly, "--backward-slowly", 4);
       if (!std::is_sorted(c.begin(), c.end()))
-        throw UsageError("--backward-slowly " + backward_slowly + ": the term needs its corners in order (A <= B <= C <= D)");
+        throw UsageError("--backward-slowly " + backward_slowly +
+                         ": the term needs its corners in order (A <= B <= C <= D)");
       o.backward_slowly = {c[0], c[1], c[2], c[3]};
       e = fuzzy::line_follower_engine(o);
     }
@@ -170,10 +173,8 @@ void run_eval(cli::ToolApp& tool, const ControllerOptions& options) {
     }
     controller.evaluate(in, out);
     for (std::size_t o = 0; o < out.size(); ++o) {
-      if (std::isnan(out[o]))
-        record[engine.outputs[o].name] = nullptr;  // no rule fired and the default is nan
-      else
-        record[engine.outputs[o].name] = out[o];
+      if (std::isnan(out[o])) record[engine.outputs[o].name] = nullptr;  // no rule fired and the default is nan
+      else record[engine.outputs[o].name] = out[o];
     }
     writer.write(record);
   }
@@ -205,7 +206,7 @@ struct LapsOptions {
   int laps = 3;
   std::string board = "uno";
   std::string no_rule = "stop";  ///< a motor none of whose rules fired: "stop" (its default, 0) or "hold"
-  double latency_ms = 0;  ///< when given; else the board's loop time for the t-norm (the paper's Tables 3-4)
+  double latency_ms = 0;         ///< when given; else the board's loop time for the t-norm (the paper's Tables 3-4)
   double period_ms = 0;
   double time_limit = 120;
   std::string track_path;
@@ -244,13 +245,16 @@ void check_laps_size(const LapsOptions& laps, const std::vector<double>& latenci
   const vehicle::LapOptions defaults;
   double steps = 0;
   for (double latency_ms : latencies_ms) {
-    const double period_s = laps.period_ms > 0 ? laps.period_ms / 1000 : latency_ms > 0 ? latency_ms / 1000 : defaults.physics_step_s;
+    const double period_s = laps.period_ms > 0 ? laps.period_ms / 1000
+                            : latency_ms > 0   ? latency_ms / 1000
+                                               : defaults.physics_step_s;
     steps += laps.time_limit * (1 / defaults.physics_step_s + 2 / period_s);  // a sample and a command per period
   }
   cli::require_run_size(steps, kMaxLapSteps, "simulation steps", "--time-limit, --period-ms, --latency-ms and --tnorm");
   if (tracing)
     cli::require_run_size(laps.time_limit / defaults.trace_interval_s * static_cast<double>(latencies_ms.size()),
-                          kMaxLapTracePoints, "trace points (one per 10 ms)", "--svg or --trace with --time-limit and --tnorm");
+                          kMaxLapTracePoints, "trace points (one per 10 ms)",
+                          "--svg or --trace with --time-limit and --tnorm");
 }
 
 void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOptions& laps) {
@@ -263,8 +267,9 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
   controller_options.adc_bits = fuzzy::board_adc_bits(board);
   std::vector<double> latencies_ms;
   for (TNorm t : controller_options.chosen_tnorms(false))
-    latencies_ms.push_back(latency_given ? laps.latency_ms
-                                         : fuzzy::paper_ms_per_2x1024(board, controller_options.engine(t).rule_block.conjunction) / 1024);
+    latencies_ms.push_back(
+        latency_given ? laps.latency_ms
+                      : fuzzy::paper_ms_per_2x1024(board, controller_options.engine(t).rule_block.conjunction) / 1024);
   check_laps_size(laps, latencies_ms, !laps.svg_path.empty() || !laps.trace_path.empty());
   vehicle::Track track = [&] {
     if (!laps.track_path.empty()) return vehicle::read_track(laps.track_path, laps.line_width);
@@ -285,7 +290,8 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
   std::unique_ptr<io::RecordFile> trace_file;
   if (!laps.trace_path.empty()) {
     trace_file = std::make_unique<io::RecordFile>(laps.trace_path, tool.output_format());
-    trace_file->declare_fields({"tnorm", "t", "x", "y", "heading", "left", "mid", "right", "left_motor", "right_motor"});
+    trace_file->declare_fields(
+        {"tnorm", "t", "x", "y", "heading", "left", "mid", "right", "left_motor", "right_motor"});
   }
   for (TNorm t : controller_options.chosen_tnorms(false)) {
     const fuzzy::Engine engine = controller_options.engine(t);
@@ -294,8 +300,7 @@ void run_laps(cli::ToolApp& tool, const ControllerOptions& options, const LapsOp
     fuzzy::Mamdani controller = controller_options.controller(engine);
     // One pass of the board's loop computes both motors: Table 3 or 4 over 1024.
     const TNorm conjunction = engine.rule_block.conjunction;
-    const double latency_ms =
-        latency_given ? laps.latency_ms : fuzzy::paper_ms_per_2x1024(board, conjunction) / 1024;
+    const double latency_ms = latency_given ? laps.latency_ms : fuzzy::paper_ms_per_2x1024(board, conjunction) / 1024;
     run.latency_s = latency_ms / 1000;
     double out[2];
     vehicle::MotorCommand held;  // the motors' last command, for --no-rule hold
@@ -378,13 +383,17 @@ int main(int argc, char** argv) {
   double seconds = 0.5;
   CLI::App* bench = app.add_subcommand("bench", "time the inference per t-norm: one record each");
   bench_options.add_to(*bench, true);
-  bench->add_option("--seconds", seconds, "CPU time per t-norm")->check(cli::range_check(0.001, 3600))->capture_default_str()->type_name("S");
+  bench->add_option("--seconds", seconds, "CPU time per t-norm")
+      ->check(cli::range_check(0.001, 3600))
+      ->capture_default_str()
+      ->type_name("S");
 
   LapsOptions laps;
   CLI::App* lap = app.add_subcommand("laps", "drive a simulated car round a track: one record per t-norm");
   laps_options.add_to(*lap, true);
   lap->add_option("--laps", laps.laps, "laps to complete")->check(cli::count_check(1, 1000))->capture_default_str();
-  lap->add_option("--board", laps.board, "uno or esp32: the ADC, and each t-norm's loop time from the paper's Tables 3-4")
+  lap->add_option("--board", laps.board,
+                  "uno or esp32: the ADC, and each t-norm's loop time from the paper's Tables 3-4")
       ->check(CLI::IsMember({"uno", "esp32"}))
       ->capture_default_str();
   lap->add_option("--no-rule", laps.no_rule, "a motor none of whose rules fire: stop (0) or hold its last command")
@@ -393,9 +402,10 @@ int main(int argc, char** argv) {
   // An empty or garbled number is a usage error here, not CLI11's silent 0.
   // A loop under 10 us (the paper's fastest is 313 us) only stretches the run.
   const CLI::Validator loop_ms = cli::range_check(0.01, 1000, cli::ZeroAllowed::yes);
-  laps.latency_option = lap->add_option("--latency-ms", laps.latency_ms, "sampling to command taking effect, for every t-norm (default: the board's)")
-      ->check(loop_ms)
-      ->type_name("MS");
+  laps.latency_option = lap->add_option("--latency-ms", laps.latency_ms,
+                                        "sampling to command taking effect, for every t-norm (default: the board's)")
+                            ->check(loop_ms)
+                            ->type_name("MS");
   lap->add_option("--period-ms", laps.period_ms, "control period (0: the latency, a loop that runs back to back)")
       ->check(loop_ms)
       ->capture_default_str()
@@ -403,7 +413,8 @@ int main(int argc, char** argv) {
   lap->add_option("--time-limit", laps.time_limit, "give up after this many simulated seconds")
       ->check(cli::range_check(0.01, 36000))
       ->capture_default_str();
-  lap->add_option("--track", laps.track_path, "centre line as records with x, y in mm (a closed loop)")->type_name("FILE");
+  lap->add_option("--track", laps.track_path, "centre line as records with x, y in mm (a closed loop)")
+      ->type_name("FILE");
   lap->add_option("--oval", laps.oval, "the default track: straight length and radius, mm")
       ->capture_default_str()
       ->type_name("L,R");
@@ -412,12 +423,13 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->type_name("MM");
   lap->add_option("--svg", laps.svg_path, "draw the track and each t-norm's path")->type_name("FILE");
-  lap->add_option("--trace", laps.trace_path, "write the runs' time series (t, x, y, readings, commands)")->type_name("FILE");
+  lap->add_option("--trace", laps.trace_path, "write the runs' time series (t, x, y, readings, commands)")
+      ->type_name("FILE");
   lap->add_option("--seed", laps.seed, "seed of the sensor noise")->capture_default_str();
-  laps.noise_option =
-      lap->add_option("--noise", laps.noise, "sensor noise, ADC counts (standard deviation; default the car's, 3 at 10 bits)")
-          ->check(cli::range_check(0, 4096))  // a 12-bit ADC's full scale
-          ->type_name("COUNTS");
+  laps.noise_option = lap->add_option("--noise", laps.noise,
+                                      "sensor noise, ADC counts (standard deviation; default the car's, 3 at 10 bits)")
+                          ->check(cli::range_check(0, 4096))  // a 12-bit ADC's full scale
+                          ->type_name("COUNTS");
   struct CarOption {
     const char* name;
     double* value;
@@ -432,10 +444,14 @@ int main(int argc, char** argv) {
       {"--wheel-base", &laps.car.wheel_base_mm, "distance between the wheels, mm", "MM", 10, 1000},
       {"--motor-tau-ms", &laps.motor_tau_ms, "wheel speed's first-order lag behind the command, ms", "MS", 0, 10000},
       {"--deadband", &laps.car.deadband_units, "command a wheel needs to turn", "UNITS", 0, 10000},
-      {"--speed-per-unit", &laps.car.mm_per_s_per_unit, "wheel speed per command unit above that, mm/s", "MM/S", 0.001, 1000},
+      {"--speed-per-unit", &laps.car.mm_per_s_per_unit, "wheel speed per command unit above that, mm/s", "MM/S", 0.001,
+       1000},
   };
   for (const CarOption& o : car_options)
-    lap->add_option(o.name, *o.value, o.help)->check(cli::range_check(o.low, o.high))->capture_default_str()->type_name(o.unit);
+    lap->add_option(o.name, *o.value, o.help)
+        ->check(cli::range_check(o.low, o.high))
+        ->capture_default_str()
+        ->type_name(o.unit);
 
   CLI::App* fll = app.add_subcommand("fll", "write the controller as fuzzylite FLL");
   fll_options.add_to(*fll, false);
