@@ -753,6 +753,10 @@ expect_error() {
   expect_error 2 "--n" twin --n 0 --k 1:10 --pmax 100
   expect_error 2 "--checkpoint-every" twin --n 5 --k 1:10 --pmax 100 --checkpoint-every 0
   expect_error 2 "--min-rate" twin --n 5 --k 1:10 --pmax 100 --min-rate -1
+  expect_error 2 "--rate-window" twin --n 5 --k 1:10 --pmax 100 --rate-window 0
+  expect_error 2 "--rate-window" twin --n 5 --k 1:10 --pmax 100 --rate-window -5
+  expect_error 2 "--rate-window" twin --n 5 --k 1:10 --pmax 100 --rate-window nan
+  expect_error 2 "--rate-window" twin --n 5 --k 1:10 --pmax 100 --rate-window inf
   expect_error 1 "no-such-dir/f.txt" twin --n 5 --k 1:10 --pmax 100 --factors no-such-dir/f.txt
 }
 

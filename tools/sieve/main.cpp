@@ -3,6 +3,8 @@
 /// twin, Sophie Germain, Cunningham-chain, Riesel and Proth searches.
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "cli/number_option.hpp"
 #include "cli/stop_signals.hpp"
 #include "cli/tool_app.hpp"
@@ -48,6 +50,8 @@ void run_form(tk::cli::ToolApp& tool, tk::primes::SieveForm form, const FormOpti
   const tk::primes::SieveSpec spec = spec_from(form, o);
   if (o.min_rate < 0 || !(o.min_rate == o.min_rate)) throw tk::UsageError("--min-rate must be a non-negative number");
   if (!(o.checkpoint_seconds > 0)) throw tk::UsageError("--checkpoint-every must be a positive number of seconds");
+  if (!(o.rate_window > 0) || !std::isfinite(o.rate_window))
+    throw tk::UsageError("--rate-window must be a positive, finite number of seconds");
   tk::primes::SieveRunOptions run;
   run.tool_name = tool.name();
   run.threads = tool.common().threads;
