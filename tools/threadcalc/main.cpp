@@ -2,134 +2,13 @@
 /// @brief threadcalc: ISO metric threads from their designation to limits of
 /// size (ISO 68-1, ISO 261, ISO 965-1), thread-turning data for a
 /// full-profile insert, and the threading program (Karker, Andó & Sudhan Raj).
-#include <fmt/format.h>
-
-#include <cmath>
-#include <iostream>
-
+/// Each mode is a file of its own (modes.hpp); this one wires the options.
 #include "cli/option_checks.hpp"
 #include "cli/tool_app.hpp"
 #include "io/error.hpp"
-#include "io/record_reader.hpp"
-#include "io/record_writer.hpp"
-#include "threads/designation_input.hpp"
-#include "threads/thread_gcode.hpp"
-#include "threads/thread_report.hpp"
+#include "modes.hpp"
 
-namespace {
-
-using namespace tk::threads;
-
-struct Options {
-  MemberChoice choice = MemberChoice::from_class;
-  TurningSettings turning;
-  int decimals = 4;
-  std::string field = "designation";
-};
-
-/// Parses and evaluates one designation; errors get `where`.
-std::vector<ThreadResult> evaluate_text(const std::string& text, const Options& o, const tk::Location& where) {
-  return tk::with_location(where, [&] {
-    const ThreadDesignation designation = parse_designation(text);
-    std::vector<ThreadResult> results;
-    for (const ThreadMember& member : members_of(designation, o.choice))
-      results.push_back(evaluate(designation, member, o.turning));
-    return results;
-  });
-}
-
-void warn_all(const ThreadResult& result, const tk::Location& where, const tk::cli::ToolApp& tool) {
-  for (const std::string& warning : result.warnings) tool.warn(tk::Error(warning, where).located_message());
-}
-
-void write_records(const std::vector<std::string>& designations, const std::vector<std::string>& inputs,
-                   const Options& o, const tk::cli::ToolApp& tool) {
-  tk::io::RecordWriter writer(tool.output_format());
-  std::vector<std::string> fields = report_fields();
-  // Designations from arguments make a record of their own; from records,
-  // the designation's column stays where the input has it.
-  if (!designations.empty()) fields.insert(fields.begin(), o.field);
-  writer.declare_fields(fields);
-  const auto emit = [&](const tk::Record& input, const std::string& text, const tk::Location& where) {
-    for (const ThreadResult& result : evaluate_text(text, o, where)) {
-      tk::Record record = input;
-      add_fields(record, result, o.decimals);
-      tk::with_location(where, [&] { writer.write(record); });
-      warn_all(result, where, tool);
-    }
-  };
-  if (!designations.empty()) {
-    for (std::size_t i = 0; i < designations.size(); ++i)
-      emit(tk::Record{{o.field, designations[i]}}, designations[i], {fmt::format("argument {}", i + 1), 0});
-    writer.flush();
-    return;
-  }
-  tk::io::RecordReader reader(inputs, designation_lines_probe(o.field));
-  tk::Record record;
-  while (reader.next(record)) {
-    const tk::Location where = reader.where();
-    const auto it = record.find(o.field);
-    if (it == record.end() || !it->is_string() || it->get<std::string>().empty())
-      throw tk::Error(fmt::format("no '{}' field with a designation", o.field), where);
-    emit(record, it->get<std::string>(), where);
-  }
-  writer.flush();
-}
-
-/// The program's ranges (threadcalc(1), PROGRAMS), as validate() checks them.
-constexpr double kMaxLengthMm = 10000, kMinRpm = 1, kMaxRpm = 100000, kMaxRunInMm = 1000;
-
-struct ProgramOptions {
-  std::string style;
-  double length = 0;
-  double rpm = 0;
-  double cutting_speed = 100;
-  double max_rpm = 3000;
-  double clearance = 1;
-  double run_in = 0;
-  double acceleration = 500;
-};
-
-void write_program(const std::vector<std::string>& designations, Options o, const ProgramOptions& p,
-                   const tk::cli::ToolApp& tool) {
-  if (designations.size() != 1) throw tk::UsageError("--gcode writes the program of one DESIGNATION");
-  if (!(p.length > 0)) throw tk::UsageError("--gcode needs the thread's --length");
-  const tk::Location where{"argument 1", 0};
-  const ThreadDesignation d = tk::with_location(where, [&] { return parse_designation(designations[0]); });
-  if (o.choice == MemberChoice::from_class) {
-    if (d.external && d.internal) throw tk::UsageError("a fit has two members: choose one with --kind");
-    o.choice = d.internal ? MemberChoice::internal : MemberChoice::external;
-  }
-  if (o.choice == MemberChoice::both) throw tk::UsageError("--gcode writes one member: --kind external or internal");
-  const ThreadResult result =
-      tk::with_location(where, [&] { return evaluate(d, members_of(d, o.choice).front(), o.turning); });
-  warn_all(result, where, tool);
-  ProgramSettings settings;
-  settings.title = member_designation(result);
-  settings.pitch_mm = result.profile.pitch;
-  settings.length_mm = p.length;
-  settings.rpm = p.rpm > 0 ? p.rpm : spindle_speed(p.cutting_speed, result.profile.major, p.max_rpm);
-  if (settings.rpm < kMinRpm)
-    throw tk::UsageError(fmt::format(
-        "--vc {:g} m/min gives {:.3g} rpm at the {:g} mm diameter, below {:g} rpm: give a higher --vc or --rpm",
-        p.cutting_speed, settings.rpm, result.profile.major, kMinRpm));
-  settings.clearance_mm = p.clearance;
-  settings.run_in_mm = p.run_in;
-  settings.acceleration_mm_s2 = p.acceleration;
-  // The default run-in is the Z axis's way up to P·S: a slow axis at a fast
-  // spindle would start the program metres ahead of the face.
-  if (p.run_in == 0)
-    tk::cli::require_run_size(synchronisation_distance(settings), kMaxRunInMm,
-                              "mm of run-in (the Z axis's way up to P times S; give --run-in, or lower the speed)",
-                              "--accel with the spindle speed and the pitch");
-  validate(settings);
-  settings.left_hand = result.designation.left_hand;
-  const ProgramStyle style = p.style == "g76" ? ProgramStyle::g76 : ProgramStyle::passes;
-  std::cout << thread_program(style, result.plan, settings) << std::flush;
-  if (!std::cout) throw tk::Error("cannot write the program to standard output");
-}
-
-}  // namespace
+using namespace threadcalc;
 
 int main(int argc, char** argv) {
   tk::cli::ToolApp tool("threadcalc",
