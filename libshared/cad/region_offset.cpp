@@ -23,6 +23,7 @@ namespace {
 
 constexpr double kClipperUnitMm = 1e-6;  // 1 nm integers: ±4.6e12 mm fit Clipper's 62-bit range
 constexpr double kLargestCoordinateMm = 1e9;
+constexpr double kCoarseJoinSagitta = 1e-3;  // of the tool radius, on large parts (join_tolerance)
 constexpr double kLargestPartMm = 1e6;  // a kilometre: beyond it, the units are wrong, not the machine big
 
 Point operator+(Point a, Point b) { return {a.x + b.x, a.y + b.y}; }
@@ -358,6 +359,18 @@ class StageClock {
   double last_;
 };
 
+/// Clipper's round joins: chords within `tolerance`, or on a large part
+/// (OffsetOptions::coarse_joins_from) within R / 1000 (35 chords a half
+/// turn). Each spike tip of a gear turns half round: at R = 1 mm and the
+/// default 0.1 um that is 111 vertices, and Clipper's sweep visits every
+/// active edge at each of them.
+double join_tolerance(const ClipperLib::Paths& paths, const OffsetOptions& options) {
+  std::size_t vertices = 0;
+  for (const ClipperLib::Path& path : paths) vertices += path.size();
+  if (vertices < options.coarse_joins_from) return options.tolerance;
+  return std::max(options.tolerance, options.tool_radius * kCoarseJoinSagitta);
+}
+
 }  // namespace
 
 double offset_vertices_estimate(const std::vector<Loop>& loops, double tool_radius, double tolerance) {
@@ -417,7 +430,7 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     }
     clock.add(&OffsetStageTimes::even_odd_union);
     ClipperLib::ClipperOffset offsetter;
-    offsetter.ArcTolerance = options.tolerance / kClipperUnitMm;
+    offsetter.ArcTolerance = join_tolerance(paths, options) / kClipperUnitMm;
     offsetter.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
     ClipperLib::PolyTree tree;
     offsetter.Execute(tree, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm);

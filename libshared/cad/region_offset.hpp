@@ -40,6 +40,13 @@ struct OffsetOptions {
   /// the offset is refused before it starts (a usage error: dxf2region(1)).
   double max_vertices = 3e5;                // its time grows with them: a drawing estimated at 124,000 took 7 s
   OffsetStageTimes* stage_times = nullptr;  ///< filled when given
+  /// The polygon stage's input vertices from which Clipper draws its round
+  /// joins coarser (chords within tool_radius / 1000 instead of
+  /// `tolerance`; the exact recovery turns them into true arcs either way):
+  /// on a large part its sweep over the joins' vertices dominates. Below
+  /// it the polygons stay as they were (a loop may start at another
+  /// element with coarse joins, never with other ones).
+  std::size_t coarse_joins_from = 5000;
 };
 
 /// The vertices the offset's polygon stage implies: chords within

@@ -1,0 +1,123 @@
+/// @file test_region_offset_joins.cpp
+/// @brief Clipper's round joins drawn coarser on large parts
+/// (OffsetOptions::coarse_joins_from) change nothing the exact recovery
+/// returns: the same lines and arcs (a loop may start at another element),
+/// the same loops left as polygons, the same uncut stretches, against the
+/// offset with the joins at the offset tolerance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cad/loops.hpp"
+#include "cad/region_distance.hpp"
+#include "cad/region_offset.hpp"
+#include "test_volume.hpp"
+
+namespace {
+
+using namespace tk::cad;
+
+bool near(Point a, Point b) { return std::abs(a.x - b.x) <= 1e-9 && std::abs(a.y - b.y) <= 1e-9; }
+
+/// The same elements in the same order round the loop, from wherever each starts.
+::testing::AssertionResult same_loop(const Loop& a, const Loop& b) {
+  const std::size_t n = a.segments.size();
+  if (b.segments.size() != n) return ::testing::AssertionFailure() << n << " elements against " << b.segments.size();
+  for (std::size_t shift = 0; shift < n; ++shift) {
+    bool all = true;
+    for (std::size_t i = 0; i < n && all; ++i) {
+      const Segment& s = a.segments[i];
+      const Segment& t = b.segments[(i + shift) % n];
+      all = near(s.start, t.start) && near(s.end, t.end) && std::abs(s.bulge - t.bulge) <= 1e-9;
+    }
+    if (all) return ::testing::AssertionSuccess();
+  }
+  return ::testing::AssertionFailure() << "no rotation of the " << n << " elements matches";
+}
+
+RegionOffset offset_with_joins(const std::vector<Loop>& loops, const RegionIndex& index, double radius,
+                               MachiningSide side, bool coarse) {
+  OffsetOptions options;
+  options.tool_radius = radius;
+  options.side = side;
+  options.coarse_joins_from = coarse ? 0 : std::numeric_limits<std::size_t>::max();
+  return offset_region(loops, index, options);
+}
+
+void expect_same_offset(const std::vector<Segment>& segments, double radius, MachiningSide side,
+                        const std::string& what) {
+  const LoopSet set = build_loops(segments, 1e-6);
+  const RegionIndex index(set.loops);
+  const RegionOffset fine = offset_with_joins(set.loops, index, radius, side, false);
+  const RegionOffset coarse = offset_with_joins(set.loops, index, radius, side, true);
+  ASSERT_EQ(fine.loops.size(), coarse.loops.size()) << what;
+  EXPECT_EQ(fine.polygon_loops, coarse.polygon_loops) << what;
+  for (std::size_t i = 0; i < fine.loops.size(); ++i) {
+    EXPECT_TRUE(same_loop(fine.loops[i], coarse.loops[i])) << what << ", loop " << i;
+    EXPECT_EQ(fine.loops[i].depth, coarse.loops[i].depth) << what;
+  }
+  ASSERT_EQ(fine.uncut.size(), coarse.uncut.size()) << what;
+  for (std::size_t i = 0; i < fine.uncut.size(); ++i) {
+    EXPECT_TRUE(near(fine.uncut[i].from, coarse.uncut[i].from)) << what;
+    EXPECT_TRUE(near(fine.uncut[i].to, coarse.uncut[i].to)) << what;
+    EXPECT_NEAR(fine.uncut[i].depth, coarse.uncut[i].depth, 1e-9) << what;
+  }
+}
+
+/// A closed polyline of `spikes` spikes `height` mm tall, `pitch` mm apart
+/// at the root, with each spike's flanks bulged by `bulge` (0: lines).
+std::vector<Segment> gear(int spikes, double height, double pitch, double bulge) {
+  const double root = spikes * pitch / (2 * std::numbers::pi);
+  std::vector<Point> v;
+  for (int i = 0; i < spikes; ++i) {
+    const double a = 2 * std::numbers::pi * i / spikes, b = 2 * std::numbers::pi * (i + 0.5) / spikes;
+    v.push_back({root * std::cos(a), root * std::sin(a)});
+    v.push_back({(root + height) * std::cos(b), (root + height) * std::sin(b)});
+  }
+  std::vector<Segment> out;
+  for (std::size_t i = 0; i < v.size(); ++i) out.push_back({v[i], v[(i + 1) % v.size()], bulge});
+  return out;
+}
+
+TEST(RegionOffsetJoins, CoarseJoinsRecoverTheSameGear) {
+  const int spikes = test_volume(48, 16);
+  for (const double radius : {0.5, 2.0})
+    for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
+      for (const double bulge : {0.0, 0.1}) {
+        const std::string what = "R " + std::to_string(radius) + (side == MachiningSide::inside ? " inside" : " outside") +
+                                  ", bulge " + std::to_string(bulge);
+        expect_same_offset(gear(spikes, side == MachiningSide::inside ? 3 : 5, 1.5, bulge), radius, side, what);
+      }
+}
+
+TEST(RegionOffsetJoins, CoarseJoinsRecoverTheSameRandomParts) {
+  std::mt19937_64 random(24);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const int trials = test_volume(12, 4);
+  for (int trial = 0; trial < trials; ++trial) {
+    // A random star with arcs, and a random circle inside it (a hole).
+    const int n = 5 + trial % 20;
+    std::vector<Point> points;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * std::numbers::pi * i / n, r = 20 + 15 * unit(random);
+      points.push_back({r * std::cos(angle), r * std::sin(angle)});
+    }
+    std::vector<Segment> part;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      part.push_back({points[i], points[(i + 1) % points.size()], unit(random) < 0.3 ? 0.4 * (unit(random) - 0.5) : 0});
+    const double hole = 2 + 8 * unit(random);
+    part.push_back({{hole, 0}, {-hole, 0}, 1});
+    part.push_back({{-hole, 0}, {hole, 0}, 1});
+    const double radius = 0.3 + 3 * unit(random);
+    for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
+      expect_same_offset(part, radius, side, "trial " + std::to_string(trial));
+  }
+}
+
+}  // namespace
