@@ -13,6 +13,7 @@
 
 #include "primes/fft_plans.hpp"
 #include "primes/right_angle_transform.hpp"
+#include "primes/weighted_passes.hpp"
 #include "primes/weighted_squaring.hpp"
 #include "primes/weighted_squaring_detail.hpp"
 
@@ -191,9 +192,10 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   rotation_.resize(length, 0);
   digit_.assign(digits_, 0);
   modulus_mod_p_ = mpz_fdiv_ui(modulus_of(form).get_mpz_t(), kP61);
-  high_limbs_ = (exponent_[coefficients_] - n) / 64 + 2;
-  high_.assign(high_limbs_ + 1, 0);
-  quotient_.assign(high_limbs_ + 3, 0);  // zeros past the end for reading two limbs at a time
+  k_mod_p_ = form.k % kP61;
+  two_n_mod_p_ = times_power61(1, static_cast<unsigned>(n % 61));
+  inverse_two_n_mod_p_ = times_power61(1, static_cast<unsigned>((61 - n % 61) % 61));
+  split_k();
   if (transform != Transform::fftw)
     right_angle_ = RightAngleSquarer::create(
         length_, transform == Transform::avx2 ? RightAngleSquarer::Simd::avx2 : RightAngleSquarer::Simd::best);
@@ -208,6 +210,22 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
   std::fill(input_, input_ + length_, 0.0);
   plans_ = real_fft_plans(length_);
+}
+
+// k = k_high_*2^S + k_low_ with S the largest digit size. A digit d below
+// 2^B multiplies into k_low_*d < 2^(S+B) and, moved one digit up,
+// k_high_*d*2^(S - s) < 2^(kbits - s_min + B): B = 60 - the larger exponent
+// keeps a product digit (two of those and a digit) below 2^62. Full
+// balancing leaves |d| <= 2^(S-1) + 1, so B must exceed S (it does for
+// every length create() picks: S <= 25).
+void WeightedSquaring::split_k() {
+  const int s_max = max_digit_bits_;
+  const int s_min = *std::min_element(bits_.begin(), bits_.end());
+  const int kbits = std::bit_width(form_.k);
+  k_low_ = static_cast<std::int64_t>(form_.k & ((std::uint64_t{1} << s_max) - 1));
+  k_high_ = static_cast<std::int64_t>(form_.k >> s_max);
+  digit_bound_bits_ = 60 - std::max(s_max, kbits - s_min);
+  multiplies_in_64_bits_ = digit_bound_bits_ > s_max;
 }
 
 // The right-angle transform gives N (not L) times the square, times
@@ -245,22 +263,32 @@ WeightedSquaring::~WeightedSquaring() {
   fftw_free(spectrum_);
 }
 
+// k*2^n = -c (mod N), so 1/k = -c*2^n.
+mpz_class WeightedSquaring::held_form(const mpz_class& x) const {
+  const mpz_class N = modulus_of(form_);
+  mpz_class inverse_k = 1;
+  inverse_k <<= static_cast<mp_bitcnt_t>(form_.n);
+  if (form_.c > 0) inverse_k = N - inverse_k;
+  mpz_class t = x * inverse_k;
+  mpz_mod(t.get_mpz_t(), t.get_mpz_t(), N.get_mpz_t());
+  return t;
+}
+
 void WeightedSquaring::load(const mpz_class& x) {
-  mpz_class value;
-  mpz_mod(value.get_mpz_t(), x.get_mpz_t(), modulus_of(form_).get_mpz_t());
+  const mpz_class t = held_form(x);
   std::vector<mp_limb_t> limbs(form_.n / 64 + 4, 0);
-  mpz_export(limbs.data(), nullptr, -1, sizeof(mp_limb_t), 0, 0, value.get_mpz_t());
+  mpz_export(limbs.data(), nullptr, -1, sizeof(mp_limb_t), 0, 0, t.get_mpz_t());
   for (std::size_t j = 0; j < low_digits_; ++j)
     coefficient_[j] = static_cast<std::int64_t>(bits_at(limbs.data(), exponent_[j], bits_[j]));
-  std::fill(quotient_.begin(), quotient_.end(), 0);
-  const mpz_class top = value >> static_cast<mp_bitcnt_t>(form_.n);  // below k
-  fold_into_input(static_cast<std::int64_t>(top.get_ui()), 0);
-  value_mod_p_ = mpz_fdiv_ui(value.get_mpz_t(), kP61);
+  const std::int64_t carry = balance_digits(coefficient_.data(), bits_.data(), low_digits_, 1, wide_);
+  const mpz_class top = t >> static_cast<mp_bitcnt_t>(form_.n);  // below k
+  write_input(static_cast<std::int64_t>(top.get_ui()) + carry);
+  value_mod_p_ = mpz_fdiv_ui(t.get_mpz_t(), kP61);
 }
 
 // The digits are balanced (some negative): carried into non-negative
 // digits first, so the value packs into limbs; the last carry (negative
-// for a negative value) is added at the top.
+// for a negative value) is added at the top. x = k*t.
 void WeightedSquaring::store(mpz_class& x) const {
   std::vector<mp_limb_t> limbs(exponent_[digits_] / 64 + 3, 0);
   std::int64_t carry = 0;
@@ -279,6 +307,7 @@ void WeightedSquaring::store(mpz_class& x) const {
     top <<= static_cast<mp_bitcnt_t>(exponent_[digits_]);
     x += top;
   }
+  x *= form_.k;
   const mpz_class N = modulus_of(form_);
   mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
 }
