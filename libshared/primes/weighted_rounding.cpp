@@ -86,8 +86,11 @@ struct Rounder {
     into += t;
     into = (into & p) + (into >> 61);
   }
-  TK_INLINE void add(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z, bool high) {
-    accumulate(high ? sum_high : sum, term(value, rotation, z));
+  TK_INLINE void add_low(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+    accumulate(sum, term(value, rotation, z));
+  }
+  TK_INLINE void add_high(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+    accumulate(sum_high, term(value, rotation, z));
   }
   // The vector where the low coefficients end: its first `low_lanes` to sum.
   TK_INLINE void add_split(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z,
@@ -97,12 +100,6 @@ struct Rounder {
     for (std::size_t l = 0; l < kLanes; ++l) (l < low_lanes ? low : high)[l] = t[l];
     accumulate(sum, low);
     accumulate(sum_high, high);
-  }
-  // Lanes j..j+kLanes of a run whose first `low` indices are low.
-  TK_INLINE void add_at(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z,
-                        std::size_t j, std::size_t low) {
-    if (j + kLanes <= low || j >= low) add(value, rotation, z, j >= low);
-    else add_split(value, rotation, z, low - j);
   }
 
   TK_INLINE RoundedCoefficients finish() const {
@@ -127,8 +124,15 @@ TK_INLINE RoundedCoefficients round_with(const double* __restrict output, const 
   Rounder<V, I, U> rounder;
   constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
   std::size_t j = 0;
+  // Whole vectors below `low`, the one across it, the rest: no select in the loops.
+  for (; j + lanes <= count && j + lanes <= low; j += lanes)
+    rounder.add_low(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j);
+  if (j + lanes <= count && j < low) {
+    rounder.add_split(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j, low - j);
+    j += lanes;
+  }
   for (; j + lanes <= count; j += lanes)
-    rounder.add_at(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j, j, low);
+    rounder.add_high(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j);
   RoundedCoefficients result = rounder.finish();
   std::uint64_t total = result.sum, total_high = result.sum_high;
   for (; j < count; ++j) {  // the last few, one at a time
@@ -153,11 +157,21 @@ TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re
                                                      std::int64_t* __restrict z, std::size_t half,
                                                      std::size_t low) {
   Rounder<V, I, U> rounder;
-  for (std::size_t j = 0; j < half; j += Rounder<V, I, U>::kLanes) {
+  constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
+  // Below `low`, across it (one vector), past it: no select in the loops.
+  const std::size_t low_end = low / lanes * lanes;
+  auto both = [&](std::size_t j, auto&& first) __attribute__((always_inline)) {
     const V r = load<V>(re + j), m = load<V>(im + j);
-    rounder.add_at(r * load<V>(w.a + j) + m * load<V>(w.b + j), rotation + j, z + j, j, low);
-    rounder.add(m * load<V>(w.c + j) - r * load<V>(w.d + j), rotation + half + j, z + half + j, true);
+    first(r * load<V>(w.a + j) + m * load<V>(w.b + j), j);
+    rounder.add_high(m * load<V>(w.c + j) - r * load<V>(w.d + j), rotation + half + j, z + half + j);
+  };
+  std::size_t j = 0;
+  for (; j < low_end; j += lanes) both(j, [&](const V& v, std::size_t at) { rounder.add_low(v, rotation + at, z + at); });
+  if (j < half && j < low) {
+    both(j, [&](const V& v, std::size_t at) { rounder.add_split(v, rotation + at, z + at, low - at); });
+    j += lanes;
   }
+  for (; j < half; j += lanes) both(j, [&](const V& v, std::size_t at) { rounder.add_high(v, rotation + at, z + at); });
   RoundedCoefficients result = rounder.finish();
   result.sum = reduce61(result.sum);
   result.sum_high = reduce61(result.sum_high);
