@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "primes/fft_plans.hpp"
 #include "primes/right_angle_transform.hpp"
@@ -122,6 +123,68 @@ void WeightedSquaring::write_input(std::int64_t top) {
     std::fill(target.im + digits_, target.im + length_ / 2, 0.0);
   }
   tk::primes::write_input(coefficient_.data(), target, bits_.data(), low_digits_, digits_, top);
+}
+
+// k*2^n = -c (mod N), so 1/k = -c*2^n.
+mpz_class WeightedSquaring::held_form(const mpz_class& x) const {
+  const mpz_class N = modulus_of(form_);
+  mpz_class inverse_k = 1;
+  inverse_k <<= static_cast<mp_bitcnt_t>(form_.n);
+  if (form_.c > 0) inverse_k = N - inverse_k;
+  mpz_class t = x * inverse_k;
+  mpz_mod(t.get_mpz_t(), t.get_mpz_t(), N.get_mpz_t());
+  return t;
+}
+
+void WeightedSquaring::load(const mpz_class& x) {
+  const mpz_class t = held_form(x);
+  std::vector<mp_limb_t> limbs(form_.n / 64 + 4, 0);
+  mpz_export(limbs.data(), nullptr, -1, sizeof(mp_limb_t), 0, 0, t.get_mpz_t());
+  for (std::size_t j = 0; j < low_digits_; ++j)
+    coefficient_[j] = static_cast<std::int64_t>(bits_at(limbs.data(), exponent_[j], bits_[j]));
+  const std::int64_t carry = balance_digits(coefficient_.data(), bits_.data(), low_digits_, 1, wide_);
+  const mpz_class top = t >> static_cast<mp_bitcnt_t>(form_.n);  // below k
+  write_input(static_cast<std::int64_t>(top.get_ui()) + carry);
+  value_mod_p_ = mpz_fdiv_ui(t.get_mpz_t(), kP61);
+}
+
+// The digits are balanced (some negative): carried into non-negative
+// digits first, so the value packs into limbs; the last carry (negative
+// for a negative value) is added at the top. x = k*t.
+void WeightedSquaring::store(mpz_class& x) const {
+  std::vector<mp_limb_t> limbs(exponent_[digits_] / 64 + 3, 0);
+  std::int64_t carry = 0;
+  for (std::size_t j = 0; j < digits_; ++j) {
+    const std::int64_t digit = digit_[j] + carry;
+    const std::int64_t low = digit & ((std::int64_t{1} << bits_[j]) - 1);
+    carry = digit >> bits_[j];
+    const std::size_t at = exponent_[j] / 64;
+    const unsigned shift = exponent_[j] % 64;
+    limbs[at] |= static_cast<mp_limb_t>(low) << shift;
+    if (shift != 0) limbs[at + 1] |= static_cast<mp_limb_t>(low) >> (64 - shift);
+  }
+  mpz_import(x.get_mpz_t(), limbs.size(), -1, sizeof(mp_limb_t), 0, 0, limbs.data());
+  if (carry != 0) {
+    mpz_class top = carry;
+    top <<= static_cast<mp_bitcnt_t>(exponent_[digits_]);
+    x += top;
+  }
+  x *= form_.k;
+  const mpz_class N = modulus_of(form_);
+  mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
+}
+
+bool WeightedSquaring::holds_carried_residue() const {
+  std::uint64_t sum = 0;
+  for (std::size_t j = 0; j < digits_; ++j) sum = fold61(sum + times_power61(residue61(digit_[j]), rotation_[j]));
+  return reduce61(sum) == value_mod_p_;
+}
+
+void WeightedSquaring::square_by_gmp(unsigned long minus) {
+  mpz_class x;
+  store(x);
+  x = x * x - minus;
+  load(x);
 }
 
 }  // namespace tk::primes
