@@ -1,30 +1,45 @@
 /// @file weighted_passes.hpp
-/// @brief WeightedSquaring's two carry passes, as free functions compiled
-/// twice (BMI2/AVX2 where the CPU has them, chosen at run time: variable
-/// shifts without the CL register take a third of the instructions).
+/// @brief WeightedSquaring's passes over the digits: balancing (carrying),
+/// the multiplication by k that reduces the square, and the weighting into
+/// the next transform's input. Free functions compiled for AVX-512 and
+/// AVX2/BMI2 where the CPU has them (chosen at run time), else portable.
 #pragma once
-
-#include <gmp.h>
 
 #include <cstddef>
 #include <cstdint>
 
 namespace tk::primes {
 
-struct HighCarry {
-  std::int64_t low_carry = 0;  ///< floor(L / 2^n): the coefficients below 2^n carried into 2^n
-  std::int64_t top_carry = 0;  ///< what carried out of the last coefficient (0 for a square that fits)
-  std::size_t last_limb = 0;   ///< the last limb written
+/// Balances digit[0..count) (digit j has bits[j] bits): each digit's excess
+/// over [-2^(s-1), 2^(s-1)) moves up until no digit carries more than
+/// `enough` into the next (so |digit| <= 2^(s-1) + enough after), or fully
+/// in one pass on the scalar path. The value is unchanged; returns the carry
+/// out of the last digit. `wide`: AVX-512 lanes where the CPU has them.
+std::int64_t balance_digits(std::int64_t* digit, const std::uint8_t* bits, std::size_t count, std::int64_t enough,
+                            bool wide);
+
+/// k = high * 2^bits + low, bits >= every digit's size, so each half times
+/// a digit fits 64 bits.
+struct SplitK {
+  std::int64_t low = 0;
+  std::int64_t high = 0;
+  unsigned bits = 0;
 };
 
-/// Carries z[low_digits..coefficients) into normal digits packed into
-/// `high` from bit 0, and the low coefficients' carry alongside.
-HighCarry carry_into_limbs(const std::int64_t* z, const std::uint8_t* bits, std::size_t low_digits,
-                           std::size_t coefficients, std::uint64_t* high);
+/// In place, for j < m: d[j] := k*d[j] + sign*d[j+m], with k*d[j]'s high
+/// half moved into d[j+1] (times 2^(bits - s_j), exact): so
+/// d[j] = low*d[j] + sign*d[j+m] + high*d[j-1]*2^(bits - s_(j-1)), on the
+/// old values. sign is +1 with add_upper, else -1. d[m..2m) are read only.
+void multiply_low_by_k(std::int64_t* d, const std::uint8_t* bits, std::size_t m, const SplitK& k, bool add_upper,
+                       bool wide);
 
-/// Where the fold puts the next transform's input: the integer digits,
-/// and each digit times re_weight[j] into re[j] and, for the right-angle
-/// transform (im not null), times im_weight[j] into im[j].
+/// Adds `carry` to digit 0 and carries it on until it is absorbed or
+/// reaches `end`; returns what is left (0 but for a freak value).
+std::int64_t absorb_at_bottom(std::int64_t* digit, const std::uint8_t* bits, std::size_t end, std::int64_t carry);
+
+/// Where the next transform's input goes: the integer digits, and each
+/// digit times re_weight[j] into re[j] and, for the right-angle transform
+/// (im not null), times im_weight[j] into im[j].
 struct FoldTarget {
   std::int64_t* digits;
   double* re;
@@ -34,12 +49,10 @@ struct FoldTarget {
   bool wide = true;  ///< AVX-512 where the CPU has it
 };
 
-/// Digit j = the balanced digits of low[j] + sign * (bits e_j.. of q) for
-/// j < low_digits, plus `bottom` at digit 0 and `top` at digit low_digits;
-/// the last of the `digits` takes what is left.
-/// exponent[j] = e_j, the bit where digit j starts.
-void fold_digits(const std::int64_t* low, const mp_limb_t* q, const std::uint8_t* bits, const std::uint64_t* exponent,
-                 const FoldTarget& target, std::size_t low_digits, std::size_t digits, std::int64_t bottom,
-                 std::int64_t top, bool add_quotient);
+/// target.digits[j] = low[j] for j < low_digits; the digits from there up
+/// the balanced digits of `top` (the last takes what is left); all of them
+/// weighted into the input.
+void write_input(const std::int64_t* low, const FoldTarget& target, const std::uint8_t* bits, std::size_t low_digits,
+                 std::size_t digits, std::int64_t top);
 
 }  // namespace tk::primes

@@ -46,7 +46,7 @@ struct Rounder {
   static constexpr std::size_t kLanes = sizeof(V) / sizeof(double);
   V worst{}, biggest{}, probe{}, zero{}, shifter{}, limit{};
   I shifter_int{};
-  U sum{}, p{}, sixty_one{};
+  U sum{}, sum_high{}, p{}, sixty_one{};
 
   TK_INLINE Rounder() {
     std::int64_t shifter_bits;
@@ -60,7 +60,8 @@ struct Rounder {
     }
   }
 
-  TK_INLINE void add(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+  // Rounds `value` into z and returns the lanes' z_j * 2^(e_j) mod p.
+  TK_INLINE U term(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
     // Only max-like selects (GCC 12 scalarises other double compares at
     // AVX-512). Values are clamped to +-2^51 so every lane converts to a
     // sane integer; the largest magnitude and a NaN probe (a NaN or an
@@ -79,20 +80,39 @@ struct Rounder {
     const U residue = (U)zi + (p & (U)(zi >> 63));
     U e;
     for (std::size_t l = 0; l < kLanes; ++l) e[l] = rotation[l];
-    const U term = ((residue << e) & p) + (residue >> (sixty_one - e));
-    sum += term;
-    sum = (sum & p) + (sum >> 61);
+    return ((residue << e) & p) + (residue >> (sixty_one - e));
+  }
+  TK_INLINE void accumulate(U& into, const U& t) const {
+    into += t;
+    into = (into & p) + (into >> 61);
+  }
+  TK_INLINE void add_low(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+    accumulate(sum, term(value, rotation, z));
+  }
+  TK_INLINE void add_high(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+    accumulate(sum_high, term(value, rotation, z));
+  }
+  // The vector where the low coefficients end: its first `low_lanes` to sum.
+  TK_INLINE void add_split(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z,
+                           std::size_t low_lanes) {
+    const U t = term(value, rotation, z);
+    U low{}, high{};
+    for (std::size_t l = 0; l < kLanes; ++l) (l < low_lanes ? low : high)[l] = t[l];
+    accumulate(sum, low);
+    accumulate(sum_high, high);
   }
 
   TK_INLINE RoundedCoefficients finish() const {
     RoundedCoefficients result;
-    std::uint64_t total = 0;
+    std::uint64_t total = 0, total_high = 0;
     for (std::size_t lane = 0; lane < kLanes; ++lane) {
       result.worst = std::max(result.worst, worst[lane]);
       result.out_of_range |= !(biggest[lane] < 0x1p51) || probe[lane] != probe[lane];
       total = fold61(total + sum[lane]);
+      total_high = fold61(total_high + sum_high[lane]);
     }
     result.sum = total;
+    result.sum_high = total_high;
     return result;
   }
 };
@@ -100,13 +120,21 @@ struct Rounder {
 template <class V, class I, class U>
 TK_INLINE RoundedCoefficients round_with(const double* __restrict output, const double* __restrict weight,
                                          const std::uint8_t* __restrict rotation, std::int64_t* __restrict z,
-                                         std::size_t count) {
+                                         std::size_t count, std::size_t low) {
   Rounder<V, I, U> rounder;
   constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
   std::size_t j = 0;
-  for (; j + lanes <= count; j += lanes) rounder.add(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j);
+  // Whole vectors below `low`, the one across it, the rest: no select in the loops.
+  for (; j + lanes <= count && j + lanes <= low; j += lanes)
+    rounder.add_low(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j);
+  if (j + lanes <= count && j < low) {
+    rounder.add_split(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j, low - j);
+    j += lanes;
+  }
+  for (; j + lanes <= count; j += lanes)
+    rounder.add_high(load<V>(output + j) * load<V>(weight + j), rotation + j, z + j);
   RoundedCoefficients result = rounder.finish();
-  std::uint64_t total = result.sum;
+  std::uint64_t total = result.sum, total_high = result.sum_high;
   for (; j < count; ++j) {  // the last few, one at a time
     const double value = output[j] * weight[j];
     const double rounded = (value + kShifter) - kShifter;
@@ -114,9 +142,11 @@ TK_INLINE RoundedCoefficients round_with(const double* __restrict output, const 
     const bool fits = std::fabs(value) < 0x1p51;
     result.out_of_range |= !fits;
     z[j] = fits ? static_cast<std::int64_t>(rounded) : 0;
-    total = fold61(total + times_power61(residue61(z[j]), rotation[j]));
+    std::uint64_t& into = j < low ? total : total_high;
+    into = fold61(into + times_power61(residue61(z[j]), rotation[j]));
   }
   result.sum = reduce61(total);
+  result.sum_high = reduce61(total_high);
   return result;
 }
 
@@ -124,63 +154,76 @@ template <class V, class I, class U>
 TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re, const double* __restrict im,
                                                      const RightAngleWeights& w,
                                                      const std::uint8_t* __restrict rotation,
-                                                     std::int64_t* __restrict z, std::size_t half) {
+                                                     std::int64_t* __restrict z, std::size_t half,
+                                                     std::size_t low) {
   Rounder<V, I, U> rounder;
-  for (std::size_t j = 0; j < half; j += Rounder<V, I, U>::kLanes) {
+  constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
+  // Below `low`, across it (one vector), past it: no select in the loops.
+  const std::size_t low_end = low / lanes * lanes;
+  auto both = [&](std::size_t j, auto&& first) __attribute__((always_inline)) {
     const V r = load<V>(re + j), m = load<V>(im + j);
-    rounder.add(r * load<V>(w.a + j) + m * load<V>(w.b + j), rotation + j, z + j);
-    rounder.add(m * load<V>(w.c + j) - r * load<V>(w.d + j), rotation + half + j, z + half + j);
+    first(r * load<V>(w.a + j) + m * load<V>(w.b + j), j);
+    rounder.add_high(m * load<V>(w.c + j) - r * load<V>(w.d + j), rotation + half + j, z + half + j);
+  };
+  std::size_t j = 0;
+  for (; j < low_end; j += lanes) both(j, [&](const V& v, std::size_t at) { rounder.add_low(v, rotation + at, z + at); });
+  if (j < half && j < low) {
+    both(j, [&](const V& v, std::size_t at) { rounder.add_split(v, rotation + at, z + at, low - at); });
+    j += lanes;
   }
+  for (; j < half; j += lanes) both(j, [&](const V& v, std::size_t at) { rounder.add_high(v, rotation + at, z + at); });
   RoundedCoefficients result = rounder.finish();
   result.sum = reduce61(result.sum);
+  result.sum_high = reduce61(result.sum_high);
   return result;
 }
 
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients round_avx512(const double* output, const double* weight,
                                                                              const std::uint8_t* rotation,
-                                                                             std::int64_t* z, std::size_t count) {
-  return round_with<v8d, v8i, v8u>(output, weight, rotation, z, count);
+                                                                             std::int64_t* z, std::size_t count, std::size_t low) {
+  return round_with<v8d, v8i, v8u>(output, weight, rotation, z, count, low);
 }
 
 __attribute__((target("avx2"))) RoundedCoefficients round_avx2(const double* output, const double* weight,
                                                                const std::uint8_t* rotation, std::int64_t* z,
-                                                               std::size_t count) {
-  return round_with<v4d, v4i, v4u>(output, weight, rotation, z, count);
+                                                               std::size_t count, std::size_t low) {
+  return round_with<v4d, v4i, v4u>(output, weight, rotation, z, count, low);
 }
 
 RoundedCoefficients round_portable(const double* output, const double* weight, const std::uint8_t* rotation,
-                                   std::int64_t* z, std::size_t count) {
-  return round_with<v4d, v4i, v4u>(output, weight, rotation, z, count);
+                                   std::int64_t* z, std::size_t count, std::size_t low) {
+  return round_with<v4d, v4i, v4u>(output, weight, rotation, z, count, low);
 }
 
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients right_angle_avx512(const double* re, const double* im,
                                                                                    const RightAngleWeights& weights,
                                                                                    const std::uint8_t* rotation,
-                                                                                   std::int64_t* z, std::size_t half) {
-  return round_right_angle_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half);
+                                                                                   std::int64_t* z, std::size_t half, std::size_t low) {
+  return round_right_angle_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half, low);
 }
 
 __attribute__((target("avx2"))) RoundedCoefficients right_angle_avx2(const double* re, const double* im,
                                                                      const RightAngleWeights& weights,
                                                                      const std::uint8_t* rotation, std::int64_t* z,
-                                                                     std::size_t half) {
-  return round_right_angle_with<v4d, v4i, v4u>(re, im, weights, rotation, z, half);
+                                                                     std::size_t half, std::size_t low) {
+  return round_right_angle_with<v4d, v4i, v4u>(re, im, weights, rotation, z, half, low);
 }
 
 }  // namespace
 
 RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint8_t* rotation,
-                                       std::int64_t* z, std::size_t count) {
-  if (cpu::has_avx512()) return round_avx512(output, weight, rotation, z, count);
-  return cpu::has_avx2() ? round_avx2(output, weight, rotation, z, count)
-                         : round_portable(output, weight, rotation, z, count);
+                                       std::int64_t* z, std::size_t count, std::size_t low) {
+  if (cpu::has_avx512()) return round_avx512(output, weight, rotation, z, count, low);
+  return cpu::has_avx2() ? round_avx2(output, weight, rotation, z, count, low)
+                         : round_portable(output, weight, rotation, z, count, low);
 }
 
 // Only the right-angle transform's callers come here, and it needs AVX2.
 RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
-                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half, bool wide) {
-  return wide && cpu::has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half)
-                                   : right_angle_avx2(re, im, weights, rotation, z, half);
+                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half, std::size_t low,
+                                      bool wide) {
+  return wide && cpu::has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half, low)
+                                   : right_angle_avx2(re, im, weights, rotation, z, half, low);
 }
 
 }  // namespace tk::primes

@@ -13,20 +13,22 @@ namespace tk::primes {
 
 struct RoundedCoefficients {
   double worst = 0;           ///< largest |value - rounded|
-  std::uint64_t sum = 0;      ///< sum of z_j * 2^(e_j) mod 2^61 - 1, reduced
+  std::uint64_t sum = 0;       ///< sum of z_j * 2^(e_j) mod 2^61 - 1 over j < low, reduced
+  std::uint64_t sum_high = 0;  ///< the same over j >= low
   bool out_of_range = false;  ///< some |value| >= 2^51 (or NaN): not rounded
 };
 
 /// z[j] = round(output[j] * weight[j]) for j < count; rotation[j] = e_j mod 61.
+/// The sums are split at index `low` (the reduction needs both parts).
 RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint8_t* rotation,
-                                       std::int64_t* z, std::size_t count);
+                                       std::int64_t* z, std::size_t count, std::size_t low);
 
 /// The right-angle transform's output (RightAngleSquarer::square_in_place),
 /// unweighted and rounded: for j < half, z[j] = round(re*a + im*b) and
 /// z[j + half] = round(im*c - re*d), the weights at j (theta^-j, the
 /// digits' weights and the scale in one). half is a multiple of 8; z and
 /// rotation have 2 * half places (weights zero and rotations zero past the
-/// square's last coefficient).
+/// square's last coefficient). The sums are split at index `low` < half.
 struct RightAngleWeights {
   const double* a;
   const double* b;
@@ -35,6 +37,7 @@ struct RightAngleWeights {
 };
 /// `wide`: AVX-512 where the CPU has it, else AVX2.
 RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
-                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half, bool wide);
+                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half, std::size_t low,
+                                      bool wide);
 
 }  // namespace tk::primes

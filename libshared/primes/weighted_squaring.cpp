@@ -1,13 +1,14 @@
 /// @file weighted_squaring.cpp
-/// @brief WeightedSquaring's squaring: transform, one pass that rounds,
-/// checks and carries, the division by k, one pass that folds and
-/// balances the digits into the next transform's input.
+/// @brief WeightedSquaring's squaring of t = x/k: transform, one pass that
+/// rounds and checks, the carries, the multiplication by k that reduces
+/// the square, and the pass that weighs the digits into the next input.
 #include "primes/weighted_squaring.hpp"
 
 #include <fftw3.h>
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "primes/fft_plans.hpp"
 #include "primes/right_angle_transform.hpp"
@@ -21,95 +22,98 @@ namespace {
 
 using namespace weighted_detail;
 
+__extension__ typedef __int128 i128;
+
+// Y = a*k + b with 0 <= b < k (floor division); false when a does not fit 63 bits.
+bool divide_by_k(i128 y, std::uint64_t k, std::int64_t& a, std::int64_t& b) {
+  i128 quotient = y / static_cast<i128>(k), remainder = y % static_cast<i128>(k);
+  if (remainder < 0) {
+    remainder += k;
+    --quotient;
+  }
+  const i128 limit = i128{1} << 62;
+  if (quotient >= limit || quotient <= -limit) return false;
+  a = static_cast<std::int64_t>(quotient);
+  b = static_cast<std::int64_t>(remainder);
+  return true;
+}
+
 }  // namespace
 
 void WeightedSquaring::square_minus(unsigned long minus) {
-  if (!square_and_carry()) {
-    ++fallbacks_;
-    square_by_gmp(minus);
-    return;
-  }
-  divide_and_fold(minus);
+  if (square_and_reduce(minus)) return;
+  ++fallbacks_;
+  square_by_gmp(minus);
 }
 
-bool WeightedSquaring::square_and_carry() {
+// N = k*2^n + c. With P = t^2 = L + H*2^n (L = sum of the carried
+// coefficients below digit m, H those from m up, shifted down by n bits),
+// k*P = k*L - c*H + H*N, and since e_(j+m) = e_j + n, k*L - c*H is the
+// digits k*d_j - c*d_(j+m) below 2^n plus a few from there up: Y*2^n with
+// Y small. Y = a*k + b then folds as -c*a + b*2^n: the value held next is
+// k*P - (H + a)*N + c*minus*2^n, which is below about (k + 1)*2^n in size.
+bool WeightedSquaring::square_and_reduce(unsigned long minus) {
   RoundedCoefficients rounded;
+  std::int64_t* z = coefficient_.data();
+  const std::size_t m = low_digits_;
   if (right_angle_) {
     right_angle_->square_in_place();
     const RightAngleWeights weights{round_a_.data(), round_b_.data(), round_c_.data(), round_d_.data()};
-    rounded = round_right_angle(right_angle_->real(), right_angle_->imaginary(), weights, rotation_.data(),
-                                coefficient_.data(), length_ / 2, wide_);
+    rounded = round_right_angle(right_angle_->real(), right_angle_->imaginary(), weights, rotation_.data(), z,
+                                length_ / 2, m, wide_);
   } else {
     square_by_real_fft(*plans_, input_, static_cast<fftw_complex*>(spectrum_), output_, length_);
-    rounded = round_coefficients(output_, output_weight_.data(), rotation_.data(), coefficient_.data(), coefficients_);
+    rounded = round_coefficients(output_, output_weight_.data(), rotation_.data(), z, coefficients_, m);
   }
-  // Carry. Below 2^n the digits need not be normal: the fold's balanced
-  // carrying takes the coefficients as they are. Only their carry into
-  // 2^n (c_m = floor(L / 2^n)) is needed, for H + c_m, and an estimate
-  // from the top ones serves (weighted_passes.cpp); the carries from 2^n
-  // up turn those coefficients into normal digits packed into limbs for
-  // the division.
-  const HighCarry carried =
-      carry_into_limbs(coefficient_.data(), bits_.data(), low_digits_, coefficients_, high_.data());
-  std::fill(high_.begin() + static_cast<std::ptrdiff_t>(carried.last_limb) + 1, high_.end(), 0);
-  const std::int64_t low_carry = carried.low_carry, carry = carried.top_carry;
-  std::uint64_t* high = high_.data();
-  // H = packed + c_m. Only a tiny square (x below 2^(n/2)) can have
-  // packed < -c_m, leaving a carry of -1 at the top: GMP squares those.
-  low_carry_ = low_carry;
-  const auto limbs = static_cast<mp_size_t>(high_limbs_);
-  const mp_limb_t overflow = low_carry >= 0 ? mpn_add_1(high, high, limbs, static_cast<mp_limb_t>(low_carry))
-                                            : mpn_sub_1(high, high, limbs, static_cast<mp_limb_t>(-low_carry));
-  const double worst = rounded.worst;
-  const bool out_of_range = rounded.out_of_range;
-  square_mod_p_ = rounded.sum;
-  worst_roundoff_ = std::max(worst_roundoff_, worst);
-  // The square fits below the last coefficient, so nothing carries out of
-  // the top; and the coefficients must give x^2 mod p.
-  return !out_of_range && worst <= kMaxRoundoff && carry == 0 && overflow == 0 && high_[high_limbs_ - 1] == 0 &&
-         square_mod_p_ == multiply61(value_mod_p_, value_mod_p_);
+  worst_roundoff_ = std::max(worst_roundoff_, rounded.worst);
+  square_mod_p_ = reduce61(rounded.sum + rounded.sum_high);
+  // Every coefficient rounded safely and they give t^2 mod p.
+  if (rounded.out_of_range || rounded.worst > kMaxRoundoff || square_mod_p_ != multiply61(value_mod_p_, value_mod_p_) ||
+      !multiplies_in_64_bits_)
+    return false;
+  // Carried in two halves, each until its digits are small enough to
+  // multiply by k's halves: the low half's carry into 2^n moves to H (it
+  // comes back as -c times it at digit 0), nothing carries out of the top.
+  const std::int64_t enough = (std::int64_t{1} << digit_bound_bits_) - (std::int64_t{1} << (max_digit_bits_ - 1)) - 1;
+  const std::uint8_t* bits = bits_.data();
+  const std::int64_t low_carry = balance_digits(z, bits, m, enough, wide_);
+  if (balance_digits(z + m, bits + m, coefficients_ - m, enough, wide_) != 0) return false;
+  const std::int64_t c = form_.c;
+  // Y's digits from m up, before the low ones are overwritten: -c*d_(j+m)
+  // and, at m, the high half of k times d_(m-1); Horner's rule in 128 bits
+  // (Y < 2^118 for k < 2^56), wrapping rather than overflowing on a freak.
+  __extension__ typedef unsigned __int128 u128;
+  u128 upper = 0;
+  for (std::size_t j = coefficients_ - m; j-- > m;) {
+    i128 digit = -c * static_cast<i128>(z[j + m]);
+    if (j == m) digit += static_cast<i128>(k_high_ * z[m - 1]) * (i128{1} << (max_digit_bits_ - bits[m - 1]));
+    upper = upper * (u128{1} << bits[j]) + static_cast<u128>(digit);
+  }
+  const SplitK split{k_low_, k_high_, static_cast<unsigned>(max_digit_bits_)};
+  multiply_low_by_k(z, bits, m, split, c < 0, wide_);
+  z[0] -= c * low_carry;
+  const std::int64_t carry = balance_digits(z, bits, m, 1, wide_);
+  const i128 y = static_cast<i128>(upper) + carry + c * static_cast<i128>(minus);
+  std::int64_t a = 0, b = 0;
+  if (!divide_by_k(y, form_.k, a, b)) return false;  // cannot happen for t held here; never fold a wrong value
+  const std::int64_t left = absorb_at_bottom(z, bits, m, -c * a);
+  write_input(b + left);
+  // t' mod p, from the checked square's two sums: Y's low digits are
+  // k*(L - low_carry*2^n) - c*(H + low_carry) = k*L - c*H - low_carry*N.
+  auto signed61 = [](std::int64_t v) {
+    const std::uint64_t r = reduce61(v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v));
+    return v < 0 && r != 0 ? kP61 - r : r;
+  };
+  const std::uint64_t high = multiply61(rounded.sum_high, inverse_two_n_mod_p_);
+  const std::uint64_t kp = multiply61(k_mod_p_, rounded.sum);
+  const std::uint64_t ch = c < 0 ? high : kP61 - high;  // -c*H
+  const std::uint64_t multiple = reduce61(signed61(low_carry) + signed61(a));
+  const std::uint64_t plus = multiply61(signed61(c * static_cast<std::int64_t>(minus)), two_n_mod_p_);
+  value_mod_p_ = reduce61(kp + ch + plus + kP61 - multiply61(multiple, modulus_mod_p_));
+  return true;
 }
 
-// N = k*2^n + c, so k*2^n = -c (mod N). The square P = H*2^n + L with
-// H = q*k + r is -c*q + r*2^n + L; q itself reaches past 2^n by under
-// 2^(kbits+5): q = q_lo + q_hi*2^n with q_hi = a*k + b folds once more to
-// -c*q_lo + a + (r - c*b)*2^n, below about 2*N in size whatever x was.
-void WeightedSquaring::divide_and_fold(unsigned long minus) {
-  const std::uint64_t k = form_.k, n = form_.n;
-  // r = H mod k first (GMP's mpn_mod_1, about 1.5 cycles a limb here),
-  // then (H - r)/k by Hensel's exact division, a short multiply chain:
-  // together well under half the time of mpn_divrem_1's dependent divisions.
-  const auto limbs = static_cast<mp_size_t>(high_limbs_);
-  const std::uint64_t r = mpn_mod_1(high_.data(), limbs, k);
-  mpn_sub_1(high_.data(), high_.data(), limbs, r);
-  mpn_divexact_1(quotient_.data(), high_.data(), limbs, k);
-  const std::size_t at = n / 64;
-  const unsigned shift = n % 64;
-  const std::uint64_t q_high = (quotient_[at] >> shift) | ((quotient_[at + 1] << 1) << (63 - shift));
-  bool beyond = (quotient_[at + 1] >> shift) != 0 && shift != 0;
-  if (shift == 0) beyond = quotient_[at + 1] != 0;
-  for (std::size_t i = at + 2; i < high_limbs_; ++i) beyond |= quotient_[i] != 0;
-  if (beyond || q_high >= (std::uint64_t{1} << 62)) {  // cannot happen for x held here; never fold a wrong value
-    ++fallbacks_;
-    std::fill(quotient_.begin(), quotient_.end(), 0);
-    square_by_gmp(minus);
-    return;
-  }
-  const std::uint64_t a = q_high / k, b = q_high % k;
-  const std::int64_t top =
-      form_.c < 0 ? static_cast<std::int64_t>(r + b) : static_cast<std::int64_t>(r) - static_cast<std::int64_t>(b);
-  fold_into_input(top - low_carry_, static_cast<std::int64_t>(a) - static_cast<std::int64_t>(minus));
-  // The folded value is P - (q - c*a)*N - minus: its residue mod p, for the
-  // next square's check, follows from the square's (checked) and q's. A
-  // fold that went wrong then fails that check (a fallback is counted; the
-  // wrong value is what GMP squares), and the proof's Gerbicz or Jacobi
-  // check sends the proof back to its last verified value.
-  const std::uint64_t q_mod_p = mpn_mod_1(quotient_.data(), static_cast<mp_size_t>(high_limbs_), kP61);
-  const std::uint64_t multiple = form_.c < 0 ? reduce61(q_mod_p + a) : reduce61(q_mod_p + kP61 - a % kP61);
-  value_mod_p_ = reduce61(square_mod_p_ + 2 * kP61 - multiply61(multiple, modulus_mod_p_) - minus);
-}
-
-void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
+void WeightedSquaring::write_input(std::int64_t top) {
   FoldTarget target{digit_.data(), input_, input_weight_.data(), nullptr, nullptr, wide_};
   if (right_angle_) {
     target = {digit_.data(), right_angle_->real(), re_weight_.data(), right_angle_->imaginary(), im_weight_.data(),
@@ -118,9 +122,69 @@ void WeightedSquaring::fold_into_input(std::int64_t top, std::int64_t bottom) {
     std::fill(target.re + digits_, target.re + length_ / 2, 0.0);
     std::fill(target.im + digits_, target.im + length_ / 2, 0.0);
   }
-  // c = -1 adds the quotient, c = +1 subtracts it.
-  fold_digits(coefficient_.data(), quotient_.data(), bits_.data(), exponent_.data(), target, low_digits_, digits_,
-              bottom, top, form_.c < 0);
+  tk::primes::write_input(coefficient_.data(), target, bits_.data(), low_digits_, digits_, top);
+}
+
+// k*2^n = -c (mod N), so 1/k = -c*2^n.
+mpz_class WeightedSquaring::held_form(const mpz_class& x) const {
+  const mpz_class N = modulus_of(form_);
+  mpz_class inverse_k = 1;
+  inverse_k <<= static_cast<mp_bitcnt_t>(form_.n);
+  if (form_.c > 0) inverse_k = N - inverse_k;
+  mpz_class t = x * inverse_k;
+  mpz_mod(t.get_mpz_t(), t.get_mpz_t(), N.get_mpz_t());
+  return t;
+}
+
+void WeightedSquaring::load(const mpz_class& x) {
+  const mpz_class t = held_form(x);
+  std::vector<mp_limb_t> limbs(form_.n / 64 + 4, 0);
+  mpz_export(limbs.data(), nullptr, -1, sizeof(mp_limb_t), 0, 0, t.get_mpz_t());
+  for (std::size_t j = 0; j < low_digits_; ++j)
+    coefficient_[j] = static_cast<std::int64_t>(bits_at(limbs.data(), exponent_[j], bits_[j]));
+  const std::int64_t carry = balance_digits(coefficient_.data(), bits_.data(), low_digits_, 1, wide_);
+  const mpz_class top = t >> static_cast<mp_bitcnt_t>(form_.n);  // below k
+  write_input(static_cast<std::int64_t>(top.get_ui()) + carry);
+  value_mod_p_ = mpz_fdiv_ui(t.get_mpz_t(), kP61);
+}
+
+// The digits are balanced (some negative): carried into non-negative
+// digits first, so the value packs into limbs; the last carry (negative
+// for a negative value) is added at the top. x = k*t.
+void WeightedSquaring::store(mpz_class& x) const {
+  std::vector<mp_limb_t> limbs(exponent_[digits_] / 64 + 3, 0);
+  std::int64_t carry = 0;
+  for (std::size_t j = 0; j < digits_; ++j) {
+    const std::int64_t digit = digit_[j] + carry;
+    const std::int64_t low = digit & ((std::int64_t{1} << bits_[j]) - 1);
+    carry = digit >> bits_[j];
+    const std::size_t at = exponent_[j] / 64;
+    const unsigned shift = exponent_[j] % 64;
+    limbs[at] |= static_cast<mp_limb_t>(low) << shift;
+    if (shift != 0) limbs[at + 1] |= static_cast<mp_limb_t>(low) >> (64 - shift);
+  }
+  mpz_import(x.get_mpz_t(), limbs.size(), -1, sizeof(mp_limb_t), 0, 0, limbs.data());
+  if (carry != 0) {
+    mpz_class top = carry;
+    top <<= static_cast<mp_bitcnt_t>(exponent_[digits_]);
+    x += top;
+  }
+  x *= form_.k;
+  const mpz_class N = modulus_of(form_);
+  mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
+}
+
+bool WeightedSquaring::holds_carried_residue() const {
+  std::uint64_t sum = 0;
+  for (std::size_t j = 0; j < digits_; ++j) sum = fold61(sum + times_power61(residue61(digit_[j]), rotation_[j]));
+  return reduce61(sum) == value_mod_p_;
+}
+
+void WeightedSquaring::square_by_gmp(unsigned long minus) {
+  mpz_class x;
+  store(x);
+  x = x * x - minus;
+  load(x);
 }
 
 }  // namespace tk::primes

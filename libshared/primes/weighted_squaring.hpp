@@ -3,24 +3,24 @@
 /// (Crandall-Fagin's variable digits), the reduction and the carries done
 /// on the digits: the state between squarings is the transform's input.
 ///
-/// x is held as m + t balanced digits: digit j has s_j = e_(j+1) - e_j bits,
-/// e_j = ceil(n*j/m), so 2^n falls exactly on digit m and digits m.. hold
-/// the part above 2^n (k's bits). The transform's input is digit j times
-/// the weight 2^(e_j - n*j/m), in [1, 2); the acyclic square (a real FFT
-/// of length L >= 2(m+t) - 1, zero-padded: k of up to 56 bits leaves no
-/// room for the cyclic form's precision) then gives, after dividing by the
-/// same weights, the integers z_j = sum of x_i*x_l*2^(e_i+e_l-e_j), the
-/// square's coefficients at 2^(e_j). One pass rounds, checks and carries
-/// them; the part above 2^n goes to limbs for one division by k (GMP's
-/// mpn_mod_1 for the remainder, then mpn_divexact_1); one pass folds
-/// the quotient back (k*2^n = -c mod N) while carrying
-/// into balanced digits and weighting them for the next transform.
+/// What is held is not x but t = x/k (mod N): since k*2^n = -c (mod N),
+/// k's inverse is -c*2^n and the next value, t' = x'/k = k*t^2 - minus/k,
+/// needs no division. t is held as m + t balanced digits: digit j has
+/// s_j = e_(j+1) - e_j bits, e_j = ceil(n*j/m), so 2^n falls exactly on
+/// digit m and digits m.. hold the part above 2^n (k's bits). The
+/// transform's input is digit j times the weight 2^(e_j - n*j/m), in
+/// [1, 2); the acyclic square (a real FFT of length L >= 2(m+t) - 1,
+/// zero-padded: k of up to 56 bits leaves no room for the cyclic form's
+/// precision) then gives, after dividing by the same weights, the integers
+/// z_j, the square's coefficients at 2^(e_j). Since e_(j+m) = e_j + n,
+/// k*t^2 = sum over j < m of (k*z_j - c*z_(j+m))*2^(e_j) plus the few
+/// coefficients' part above 2^n, mod N: one pass rounds and checks, one
+/// carries the coefficients into digits small enough to multiply by k (in
+/// two halves of k), one multiplies, one carries the product, and the small
+/// part above 2^n (Y, below about 2^(2*kbits + 6)) folds by one word
+/// division, Y = a*k + b giving -c*a + b*2^n; the last pass weighs the
+/// digits into the next transform's input. load() and store() convert.
 ///
-/// Every square is checked, as FftSquaring's: worst rounding error below
-/// 0.4, nothing carried out of the top, and the coefficients must give the
-/// square modulo the prime 2^61 - 1 (a coefficient rounded the wrong way
-/// changes that sum by a power of two). A square failing a check is
-/// redone with GMP (fallbacks()).
 #pragma once
 
 #include <gmpxx.h>
@@ -58,13 +58,15 @@ class WeightedSquaring {
   WeightedSquaring& operator=(const WeightedSquaring&) = delete;
   ~WeightedSquaring();
 
-  void load(const mpz_class& x);   ///< any x >= 0; held modulo N
+  void load(const mpz_class& x);   ///< any x >= 0; held modulo N (as x/k)
   void store(mpz_class& x) const;  ///< 0 <= x < N
   /// x := x^2 - minus (mod N).
   void square_minus(unsigned long minus);
 
+  /// x/k mod N: what is held for x (plus a small multiple of N, |j| <= 2).
+  mpz_class held_form(const mpz_class& x) const;
   /// The held value's residue modulo 2^61 - 1, carried from square to
-  /// square (the held value is x plus a small multiple of N, |j| <= 4).
+  /// square: that of held_form(x) + j*N.
   std::uint64_t held_mod_p61() const { return value_mod_p_; }
   /// Whether the digits held give that residue: the last fold, which no
   /// square has checked yet, went right.
@@ -80,13 +82,14 @@ class WeightedSquaring {
  private:
   WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits, Transform transform);
 
-  bool square_and_carry();  ///< transforms; the square's digits into low_/high_; false when a check fails
-  void divide_and_fold(unsigned long minus);
-  /// Balanced, weighted digits of the low coefficients -/+ the quotient's low n bits, with
-  /// `top` times 2^n and `bottom` added, into the transform's input (and x mod 2^61-1).
-  void fold_into_input(std::int64_t top, std::int64_t bottom);
+  /// t := k*t^2 + c*minus*2^n on the transform; false (nothing held
+  /// changed) when a check fails.
+  bool square_and_reduce(unsigned long minus);
+  /// The digits from coefficient_[0..m) and `top` at 2^n, weighted into the transform's input.
+  void write_input(std::int64_t top);
   void square_by_gmp(unsigned long minus);
   void right_angle_weights();
+  void split_k();
 
   SpecialForm form_;
   std::size_t length_;
@@ -103,9 +106,11 @@ class WeightedSquaring {
   // and the rounding's weights (weighted_rounding.hpp).
   std::vector<double> re_weight_, im_weight_, round_a_, round_b_, round_c_, round_d_;
   std::vector<std::int64_t> digit_;  ///< the input's digits, for store()
-  std::vector<mp_limb_t> high_;      ///< the square's bits from 2^n up
-  std::vector<mp_limb_t> quotient_;  ///< high_ / k, zero-padded
-  std::size_t high_limbs_ = 0;
+  std::int64_t k_low_ = 0, k_high_ = 0;  ///< k = k_high_*2^max_digit_bits_ + k_low_
+  /// The coefficients are carried until every digit is below 2^digit_bound_bits_ (so
+  /// k_low_ and k_high_ times a digit fit 64 bits); false where no bound fits.
+  int digit_bound_bits_ = 0;
+  bool multiplies_in_64_bits_ = false;
   // FFTW's arrays, null where our transform squares in its own.
   double* input_ = nullptr;              ///< FFTW-aligned, length_, zero past digits_
   double* output_ = nullptr;             ///< FFTW-aligned, length_
@@ -113,12 +118,11 @@ class WeightedSquaring {
   const RealFftPlans* plans_ = nullptr;  ///< FFTW's, where right_angle_ is not used
   std::unique_ptr<RightAngleSquarer> right_angle_;
   bool wide_ = true;  ///< the passes may use AVX-512 (where the CPU has it)
-  std::vector<std::int64_t>
-      coefficient_;                  ///< the square's coefficients, rounded (below 2^n: the fold's input); L places
-  std::int64_t low_carry_ = 0;       ///< floor(L / 2^n) of those below 2^n, moved into H
-  std::uint64_t value_mod_p_ = 0;    ///< the input's value mod 2^61-1
+  std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded, then carried; L places
+  std::uint64_t value_mod_p_ = 0;          ///< the input's value (t) mod 2^61-1
   std::uint64_t square_mod_p_ = 0;   ///< its square's, from the coefficients
   std::uint64_t modulus_mod_p_ = 0;  ///< N's
+  std::uint64_t k_mod_p_ = 0, two_n_mod_p_ = 0, inverse_two_n_mod_p_ = 0;  ///< k's, 2^n's, 2^-n's
   double worst_roundoff_ = 0;
   std::uint64_t fallbacks_ = 0;
 };

@@ -2,9 +2,11 @@
 /// @brief Bit and modular helpers WeightedSquaring's two files share.
 #pragma once
 
-#include <gmp.h>
+#include <gmpxx.h>
 
 #include <cstdint>
+
+#include "primes/modulus.hpp"
 
 namespace tk::primes::weighted_detail {
 
@@ -37,6 +39,12 @@ inline std::uint64_t reduce61(std::uint64_t v) {
 inline std::uint64_t multiply61(std::uint64_t a, std::uint64_t b) {
   const u128 product = static_cast<u128>(a) * b;
   return reduce61((static_cast<std::uint64_t>(product) & kP61) + static_cast<std::uint64_t>(product >> 61));
+}
+
+inline mpz_class modulus_of(const SpecialForm& form) {
+  mpz_class N = form.k;
+  N <<= static_cast<mp_bitcnt_t>(form.n);
+  return N + form.c;
 }
 
 }  // namespace tk::primes::weighted_detail

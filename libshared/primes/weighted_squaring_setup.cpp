@@ -57,12 +57,6 @@ std::size_t low_digits_for(std::uint64_t n, double bits) {
   return static_cast<std::size_t>(std::ceil(static_cast<double>(n) / bits));
 }
 
-mpz_class modulus_of(const SpecialForm& form) {
-  mpz_class N = form.k;
-  N <<= static_cast<mp_bitcnt_t>(form.n);
-  return N + form.c;
-}
-
 bool fast_fft_lengths_contain(std::size_t length) {
   const auto& lengths = fast_fft_lengths();
   return std::binary_search(lengths.begin(), lengths.end(), length);
@@ -191,9 +185,10 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   rotation_.resize(length, 0);
   digit_.assign(digits_, 0);
   modulus_mod_p_ = mpz_fdiv_ui(modulus_of(form).get_mpz_t(), kP61);
-  high_limbs_ = (exponent_[coefficients_] - n) / 64 + 2;
-  high_.assign(high_limbs_ + 1, 0);
-  quotient_.assign(high_limbs_ + 3, 0);  // zeros past the end for reading two limbs at a time
+  k_mod_p_ = form.k % kP61;
+  two_n_mod_p_ = times_power61(1, static_cast<unsigned>(n % 61));
+  inverse_two_n_mod_p_ = times_power61(1, static_cast<unsigned>((61 - n % 61) % 61));
+  split_k();
   if (transform != Transform::fftw)
     right_angle_ = RightAngleSquarer::create(
         length_, transform == Transform::avx2 ? RightAngleSquarer::Simd::avx2 : RightAngleSquarer::Simd::best);
@@ -208,6 +203,22 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   spectrum_ = fftw_alloc_complex(length_ / 2 + 1);
   std::fill(input_, input_ + length_, 0.0);
   plans_ = real_fft_plans(length_);
+}
+
+// k = k_high_*2^S + k_low_ with S the largest digit size. A digit d below
+// 2^B multiplies into k_low_*d < 2^(S+B) and, moved one digit up,
+// k_high_*d*2^(S - s) < 2^(kbits - s_min + B): B = 60 - the larger exponent
+// keeps a product digit (two of those and a digit) below 2^62. Full
+// balancing leaves |d| <= 2^(S-1) + 1, so B must exceed S (it does for
+// every length create() picks: S <= 25).
+void WeightedSquaring::split_k() {
+  const int s_max = max_digit_bits_;
+  const int s_min = *std::min_element(bits_.begin(), bits_.end());
+  const int kbits = std::bit_width(form_.k);
+  k_low_ = static_cast<std::int64_t>(form_.k & ((std::uint64_t{1} << s_max) - 1));
+  k_high_ = static_cast<std::int64_t>(form_.k >> s_max);
+  digit_bound_bits_ = 60 - std::max(s_max, kbits - s_min);
+  multiplies_in_64_bits_ = digit_bound_bits_ > s_max;
 }
 
 // The right-angle transform gives N (not L) times the square, times
@@ -243,57 +254,6 @@ WeightedSquaring::~WeightedSquaring() {
   fftw_free(input_);
   fftw_free(output_);
   fftw_free(spectrum_);
-}
-
-void WeightedSquaring::load(const mpz_class& x) {
-  mpz_class value;
-  mpz_mod(value.get_mpz_t(), x.get_mpz_t(), modulus_of(form_).get_mpz_t());
-  std::vector<mp_limb_t> limbs(form_.n / 64 + 4, 0);
-  mpz_export(limbs.data(), nullptr, -1, sizeof(mp_limb_t), 0, 0, value.get_mpz_t());
-  for (std::size_t j = 0; j < low_digits_; ++j)
-    coefficient_[j] = static_cast<std::int64_t>(bits_at(limbs.data(), exponent_[j], bits_[j]));
-  std::fill(quotient_.begin(), quotient_.end(), 0);
-  const mpz_class top = value >> static_cast<mp_bitcnt_t>(form_.n);  // below k
-  fold_into_input(static_cast<std::int64_t>(top.get_ui()), 0);
-  value_mod_p_ = mpz_fdiv_ui(value.get_mpz_t(), kP61);
-}
-
-// The digits are balanced (some negative): carried into non-negative
-// digits first, so the value packs into limbs; the last carry (negative
-// for a negative value) is added at the top.
-void WeightedSquaring::store(mpz_class& x) const {
-  std::vector<mp_limb_t> limbs(exponent_[digits_] / 64 + 3, 0);
-  std::int64_t carry = 0;
-  for (std::size_t j = 0; j < digits_; ++j) {
-    const std::int64_t digit = digit_[j] + carry;
-    const std::int64_t low = digit & ((std::int64_t{1} << bits_[j]) - 1);
-    carry = digit >> bits_[j];
-    const std::size_t at = exponent_[j] / 64;
-    const unsigned shift = exponent_[j] % 64;
-    limbs[at] |= static_cast<mp_limb_t>(low) << shift;
-    if (shift != 0) limbs[at + 1] |= static_cast<mp_limb_t>(low) >> (64 - shift);
-  }
-  mpz_import(x.get_mpz_t(), limbs.size(), -1, sizeof(mp_limb_t), 0, 0, limbs.data());
-  if (carry != 0) {
-    mpz_class top = carry;
-    top <<= static_cast<mp_bitcnt_t>(exponent_[digits_]);
-    x += top;
-  }
-  const mpz_class N = modulus_of(form_);
-  mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
-}
-
-bool WeightedSquaring::holds_carried_residue() const {
-  std::uint64_t sum = 0;
-  for (std::size_t j = 0; j < digits_; ++j) sum = fold61(sum + times_power61(residue61(digit_[j]), rotation_[j]));
-  return reduce61(sum) == value_mod_p_;
-}
-
-void WeightedSquaring::square_by_gmp(unsigned long minus) {
-  mpz_class x;
-  store(x);
-  x = x * x - minus;
-  load(x);
 }
 
 }  // namespace tk::primes

@@ -24,14 +24,16 @@ mpz_class reduced(mpz_class value, const Modulus& N) {
 }
 
 // Watches a chain of squares for one residue v mod N without leaving the
-// transform: the value held is v + j*N with |j| <= 4 when it is v, so its
-// residue mod 2^61 - 1 (carried along) is one of those of v + j*N; only
-// then is it taken out and compared exactly.
+// transform: the value held is t + j*N with t = held_form(v), |j| <= 2,
+// when it is v, so its residue mod 2^61 - 1 (carried along) is one of
+// those of t + j*N (|j| <= 4 here, to spare); only then is it taken out
+// and compared exactly.
 class Watch {
  public:
-  Watch(const Modulus& N, const mpz_class& target) : target_(target) {
+  Watch(const Modulus& N, const WeightedSquaring& squarer, const mpz_class& target) : target_(target) {
+    const mpz_class held = squarer.held_form(target);
     for (long j = -4; j <= 4; ++j) {
-      const mpz_class shifted = target + j * N.value();
+      const mpz_class shifted = held + j * N.value();
       residues_.push_back(mpz_fdiv_ui(shifted.get_mpz_t(), weighted_detail::kP61));
     }
   }
@@ -95,7 +97,7 @@ std::optional<bool> weighted_strong_probable_prime(const Modulus& N, const mpz_c
     mpz_powm_ui(x.get_mpz_t(), b.get_mpz_t(), static_cast<unsigned long>(N.form()->k), N.value().get_mpz_t());
     if (x == 1 || x == minus_one) return true;
     squarer->load(x);
-    const Watch watch(N, minus_one);
+    const Watch watch(N, *squarer, minus_one);
     for (std::uint64_t i = 1; i < n; ++i) {
       if (cancelled(cancel, i)) return false;
       squarer->square_minus(0);
@@ -129,7 +131,7 @@ std::optional<LucasTail> weighted_lucas_tail(const Modulus& N, const mpz_class& 
   const mpz_class first = reduced(w, N);
   if (first == 0) return LucasTail{1};
   squarer->load(first);
-  const Watch watch(N, 0);
+  const Watch watch(N, *squarer, 0);
   for (std::uint64_t r = 2; r <= last; ++r) {
     if (cancelled(cancel, r)) return LucasTail{0};
     squarer->square_minus(2);
