@@ -25,7 +25,7 @@
 ///    the leaf: the query's inside flag is the reference point's, flipped
 ///    once per crossing of the short segment from there to the query point.
 /// The crossing tests share their conventions and their left_of() calls
-/// with the ray test, so the two agree exactly wherever the query point is
+/// with the ray test, so the two agree exactly wherever the query point is.
 #include "cad/region_distance.hpp"
 
 #include <algorithm>

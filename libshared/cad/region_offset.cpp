@@ -24,7 +24,7 @@ namespace {
 constexpr double kClipperUnitMm = 1e-6;  // 1 nm integers: ±4.6e12 mm fit Clipper's 62-bit range
 constexpr double kLargestCoordinateMm = 1e9;
 constexpr double kCoarseJoinSagitta = 1e-3;  // of the tool radius, on large parts (join_tolerance)
-constexpr double kLargestPartMm = 1e6;  // a kilometre: beyond it, the units are wrong, not the machine big
+constexpr double kLargestPartMm = 1e6;       // a kilometre: beyond it, the units are wrong, not the machine big
 
 Point operator+(Point a, Point b) { return {a.x + b.x, a.y + b.y}; }
 Point operator-(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }

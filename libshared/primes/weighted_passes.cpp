@@ -27,8 +27,8 @@ struct Balancer {
     const unsigned s = bits[j];
     const std::int64_t total = digit[j] + (std::int64_t{1} << (s - 1));
     const std::int64_t up = (total + carry) >> s;
-    digit[j] = total + carry - static_cast<std::int64_t>(static_cast<std::uint64_t>(up) << s) -
-               (std::int64_t{1} << (s - 1));
+    digit[j] =
+        total + carry - static_cast<std::int64_t>(static_cast<std::uint64_t>(up) << s) - (std::int64_t{1} << (s - 1));
     return up;
   }
   // Adds `carry` at digit `from` and carries it on until it is absorbed or
@@ -92,8 +92,8 @@ TK_WIDE std::int64_t balance_lanes(std::int64_t* __restrict digit, const std::ui
       const unsigned s = bits[j];
       const std::int64_t total = digit[j] + (std::int64_t{1} << (s - 1));
       const std::int64_t up = total >> s;
-      digit[j] = total - static_cast<std::int64_t>(static_cast<std::uint64_t>(up) << s) -
-                 (std::int64_t{1} << (s - 1)) + carry;
+      digit[j] =
+          total - static_cast<std::int64_t>(static_cast<std::uint64_t>(up) << s) - (std::int64_t{1} << (s - 1)) + carry;
       tail_largest = std::max(tail_largest, up < 0 ? -up : up);
       carry = up;
     }
@@ -132,11 +132,9 @@ TK_WIDE void multiply_lanes(std::int64_t* __restrict d, const std::uint8_t* __re
     const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits + j)));
     const __m512i previous = _mm512_alignr_epi64(old, before, 7);
     const __m512i previous_size = _mm512_alignr_epi64(size, sizes_before, 7);
-    const __m512i moved =
-        _mm512_sllv_epi64(_mm512_mullo_epi64(high, previous), _mm512_sub_epi64(split, previous_size));
+    const __m512i moved = _mm512_sllv_epi64(_mm512_mullo_epi64(high, previous), _mm512_sub_epi64(split, previous_size));
     const __m512i product = _mm512_add_epi64(_mm512_mullo_epi64(low, old), moved);
-    _mm512_storeu_si512(d + j,
-                        add_upper ? _mm512_add_epi64(product, upper) : _mm512_sub_epi64(product, upper));
+    _mm512_storeu_si512(d + j, add_upper ? _mm512_add_epi64(product, upper) : _mm512_sub_epi64(product, upper));
     before = old;
     sizes_before = size;
   }
@@ -145,8 +143,8 @@ TK_WIDE void multiply_lanes(std::int64_t* __restrict d, const std::uint8_t* __re
 
 // The top digits hold only what carries in (`up`); the last takes what is
 // left, unbalanced.
-TK_INLINE void balance_top(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits,
-                           std::size_t low_digits, std::size_t digits, std::int64_t up) {
+TK_INLINE void balance_top(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits, std::size_t low_digits,
+                           std::size_t digits, std::int64_t up) {
   const Balancer balancer{digit, bits};
   for (std::size_t j = low_digits; j + 1 < digits; ++j) {
     digit[j] = 0;
@@ -187,7 +185,7 @@ TK_INLINE void write_body(const std::int64_t* __restrict low, const FoldTarget& 
   for (std::size_t j = low_digits; j < digits; ++j) re[j] = static_cast<double>(digit[j]) * re_weight[j];
 }
 
-#define TK_WRITE_ARGS                                                                                      \
+#define TK_WRITE_ARGS                                                                                  \
   const std::int64_t *low, const FoldTarget &target, const std::uint8_t *bits, std::size_t low_digits, \
       std::size_t digits, std::int64_t top
 TK_WIDE void write_avx512(TK_WRITE_ARGS) { write_body(low, target, bits, low_digits, digits, top); }

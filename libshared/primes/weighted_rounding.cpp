@@ -154,8 +154,7 @@ template <class V, class I, class U>
 TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re, const double* __restrict im,
                                                      const RightAngleWeights& w,
                                                      const std::uint8_t* __restrict rotation,
-                                                     std::int64_t* __restrict z, std::size_t half,
-                                                     std::size_t low) {
+                                                     std::int64_t* __restrict z, std::size_t half, std::size_t low) {
   Rounder<V, I, U> rounder;
   constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
   // Below `low`, across it (one vector), past it: no select in the loops.
@@ -166,7 +165,8 @@ TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re
     rounder.add_high(m * load<V>(w.c + j) - r * load<V>(w.d + j), rotation + half + j, z + half + j);
   };
   std::size_t j = 0;
-  for (; j < low_end; j += lanes) both(j, [&](const V& v, std::size_t at) { rounder.add_low(v, rotation + at, z + at); });
+  for (; j < low_end; j += lanes)
+    both(j, [&](const V& v, std::size_t at) { rounder.add_low(v, rotation + at, z + at); });
   if (j < half && j < low) {
     both(j, [&](const V& v, std::size_t at) { rounder.add_split(v, rotation + at, z + at, low - at); });
     j += lanes;
@@ -180,7 +180,8 @@ TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re
 
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients round_avx512(const double* output, const double* weight,
                                                                              const std::uint8_t* rotation,
-                                                                             std::int64_t* z, std::size_t count, std::size_t low) {
+                                                                             std::int64_t* z, std::size_t count,
+                                                                             std::size_t low) {
   return round_with<v8d, v8i, v8u>(output, weight, rotation, z, count, low);
 }
 
@@ -198,7 +199,8 @@ RoundedCoefficients round_portable(const double* output, const double* weight, c
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients right_angle_avx512(const double* re, const double* im,
                                                                                    const RightAngleWeights& weights,
                                                                                    const std::uint8_t* rotation,
-                                                                                   std::int64_t* z, std::size_t half, std::size_t low) {
+                                                                                   std::int64_t* z, std::size_t half,
+                                                                                   std::size_t low) {
   return round_right_angle_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half, low);
 }
 

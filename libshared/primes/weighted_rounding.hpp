@@ -12,10 +12,10 @@
 namespace tk::primes {
 
 struct RoundedCoefficients {
-  double worst = 0;           ///< largest |value - rounded|
+  double worst = 0;            ///< largest |value - rounded|
   std::uint64_t sum = 0;       ///< sum of z_j * 2^(e_j) mod 2^61 - 1 over j < low, reduced
   std::uint64_t sum_high = 0;  ///< the same over j >= low
-  bool out_of_range = false;  ///< some |value| >= 2^51 (or NaN): not rounded
+  bool out_of_range = false;   ///< some |value| >= 2^51 (or NaN): not rounded
 };
 
 /// z[j] = round(output[j] * weight[j]) for j < count; rotation[j] = e_j mod 61.

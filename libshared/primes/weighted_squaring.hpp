@@ -105,7 +105,7 @@ class WeightedSquaring {
   // The right-angle transform's: input_weight_ times cos and sin(pi*j/L),
   // and the rounding's weights (weighted_rounding.hpp).
   std::vector<double> re_weight_, im_weight_, round_a_, round_b_, round_c_, round_d_;
-  std::vector<std::int64_t> digit_;  ///< the input's digits, for store()
+  std::vector<std::int64_t> digit_;      ///< the input's digits, for store()
   std::int64_t k_low_ = 0, k_high_ = 0;  ///< k = k_high_*2^max_digit_bits_ + k_low_
   /// The coefficients are carried until every digit is below 2^digit_bound_bits_ (so
   /// k_low_ and k_high_ times a digit fit 64 bits); false where no bound fits.
@@ -117,11 +117,11 @@ class WeightedSquaring {
   void* spectrum_ = nullptr;             ///< FFTW-aligned, length_/2 + 1 complex
   const RealFftPlans* plans_ = nullptr;  ///< FFTW's, where right_angle_ is not used
   std::unique_ptr<RightAngleSquarer> right_angle_;
-  bool wide_ = true;  ///< the passes may use AVX-512 (where the CPU has it)
+  bool wide_ = true;                       ///< the passes may use AVX-512 (where the CPU has it)
   std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded, then carried; L places
   std::uint64_t value_mod_p_ = 0;          ///< the input's value (t) mod 2^61-1
-  std::uint64_t square_mod_p_ = 0;   ///< its square's, from the coefficients
-  std::uint64_t modulus_mod_p_ = 0;  ///< N's
+  std::uint64_t square_mod_p_ = 0;         ///< its square's, from the coefficients
+  std::uint64_t modulus_mod_p_ = 0;        ///< N's
   std::uint64_t k_mod_p_ = 0, two_n_mod_p_ = 0, inverse_two_n_mod_p_ = 0;  ///< k's, 2^n's, 2^-n's
   double worst_roundoff_ = 0;
   std::uint64_t fallbacks_ = 0;

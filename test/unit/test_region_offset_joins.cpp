@@ -90,8 +90,9 @@ TEST(RegionOffsetJoins, CoarseJoinsRecoverTheSameGear) {
   for (const double radius : {0.5, 2.0})
     for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
       for (const double bulge : {0.0, 0.1}) {
-        const std::string what = "R " + std::to_string(radius) + (side == MachiningSide::inside ? " inside" : " outside") +
-                                  ", bulge " + std::to_string(bulge);
+        const std::string what = "R " + std::to_string(radius) +
+                                 (side == MachiningSide::inside ? " inside" : " outside") + ", bulge " +
+                                 std::to_string(bulge);
         expect_same_offset(gear(spikes, side == MachiningSide::inside ? 3 : 5, 1.5, bulge), radius, side, what);
       }
 }
