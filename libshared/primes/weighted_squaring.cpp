@@ -22,8 +22,6 @@ namespace {
 
 using namespace weighted_detail;
 
-__extension__ typedef __int128 i128;
-
 // Y = a*k + b with 0 <= b < k (floor division); false when a does not fit 63 bits.
 bool divide_by_k(i128 y, std::uint64_t k, std::int64_t& a, std::int64_t& b) {
   i128 quotient = y / static_cast<i128>(k), remainder = y % static_cast<i128>(k);
@@ -82,7 +80,6 @@ bool WeightedSquaring::square_and_reduce(unsigned long minus) {
   // Y's digits from m up, before the low ones are overwritten: -c*d_(j+m)
   // and, at m, the high half of k times d_(m-1); Horner's rule in 128 bits
   // (Y < 2^118 for k < 2^56), wrapping rather than overflowing on a freak.
-  __extension__ typedef unsigned __int128 u128;
   u128 upper = 0;
   for (std::size_t j = coefficients_ - m; j-- > m;) {
     i128 digit = -c * static_cast<i128>(z[j + m]);

@@ -11,6 +11,7 @@
 namespace tk::primes::weighted_detail {
 
 __extension__ typedef unsigned __int128 u128;
+__extension__ typedef __int128 i128;
 
 /// `count` (< 64) bits of the limbs from bit `position` on; reads the limb
 /// after, so the array must have one past the last bit asked for.
