@@ -113,7 +113,12 @@ bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long
     result.fft_fallbacks = squarer.fallbacks();
     return finished;
   };
-  if (auto weighted = WeightedSquaring::create(*N.form())) return run(*weighted);
+  if (auto weighted = WeightedSquaring::create(*N.form())) {
+    const std::size_t from =
+        options.split_from_length ? options.split_from_length : WeightedSquaring::split_from_length();
+    if (weighted->transform_length() >= from) weighted->use_threads(options.threads);
+    return run(*weighted);
+  }
   if (auto fft = FftSquaring::create(*N.form())) return run(*fft);
   return square_rounds_gmp(N, state, last, minus, options);
 }

@@ -52,6 +52,11 @@ struct ProofOptions {
   std::optional<ProofState> resume_from;
   std::function<void(const std::string& why)> resume_rejected;
   Arithmetic arithmetic = Arithmetic::automatic;
+  /// Threads each squaring of the weighted transform is split over, from
+  /// transform length `split_from_length` on (0: the measured crossover,
+  /// WeightedSquaring::split_from_length()); the result is the same.
+  unsigned threads = 1;
+  std::size_t split_from_length = 0;
   /// Tests only: called with the value at each end of a Gerbicz block (Proth)
   /// or before each Jacobi check (LLR) of a proof on the FFT; may alter it
   /// (an injected error) and says so.

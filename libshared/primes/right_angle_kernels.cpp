@@ -102,64 +102,83 @@ TK_INLINE Point<V> untwiddled(const Point<V>& a, const double* twr, const double
   return b;
 }
 
+// Which butterflies of each block a call does: columns j in [from, to)
+// (all by default; a thread of a split square takes a window of them).
+struct Columns {
+  std::size_t from = 0;
+  std::size_t to = ~std::size_t{0};
+};
+
 // Calls butterfly(re, im, j, q) for every group of lanes of every block:
 // the group's points are at j + s*q, s < radix, and its twiddles at
 // j + (t - 1)*q.
 template <class V, class Butterfly>
 TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begin, std::size_t end,
-                                  Butterfly&& butterfly) {
+                                  Butterfly&& butterfly, Columns columns = {}) {
   const std::size_t q = block / static_cast<std::size_t>(radix);
   for (std::size_t base = begin; base < end; base += block)
-    for (std::size_t j = 0; j < q; j += kLanes<V>) butterfly(base + j, j, q);
+    for (std::size_t j = columns.from; j < q && j < columns.to; j += kLanes<V>) butterfly(base + j, j, q);
 }
 
 template <class V>
 TK_INLINE void forward4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
-                        std::size_t begin, std::size_t end) {
-  for_each_butterfly<V>(4, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
-    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q),
-                   d = get<V>(re, im, at + 3 * q);
-    const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
-    put(re, im, at, t0 + t2);
-    put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
-    put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
-    put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
-  });
+                        std::size_t begin, std::size_t end, Columns columns = {}) {
+  for_each_butterfly<V>(
+      4, block, begin, end,
+      [&](std::size_t at, std::size_t j, std::size_t q) {
+        const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q),
+                       d = get<V>(re, im, at + 3 * q);
+        const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
+        put(re, im, at, t0 + t2);
+        put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
+        put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
+        put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
+      },
+      columns);
 }
 
 template <class V>
 TK_INLINE void inverse4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
-                        std::size_t begin, std::size_t end) {
-  for_each_butterfly<V>(4, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
-    const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
-                   y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j),
-                   y3 = untwiddled(get<V>(re, im, at + 3 * q), twr, twi, 2 * q + j);
-    const Point<V> u0 = y0 + y2, u1 = y0 - y2, u2 = y1 + y3, u3 = times_i(y1 - y3);
-    put(re, im, at, u0 + u2);
-    put(re, im, at + q, u1 + u3);
-    put(re, im, at + 2 * q, u0 - u2);
-    put(re, im, at + 3 * q, u1 - u3);
-  });
+                        std::size_t begin, std::size_t end, Columns columns = {}) {
+  for_each_butterfly<V>(
+      4, block, begin, end,
+      [&](std::size_t at, std::size_t j, std::size_t q) {
+        const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
+                       y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j),
+                       y3 = untwiddled(get<V>(re, im, at + 3 * q), twr, twi, 2 * q + j);
+        const Point<V> u0 = y0 + y2, u1 = y0 - y2, u2 = y1 + y3, u3 = times_i(y1 - y3);
+        put(re, im, at, u0 + u2);
+        put(re, im, at + q, u1 + u3);
+        put(re, im, at + 2 * q, u0 - u2);
+        put(re, im, at + 3 * q, u1 - u3);
+      },
+      columns);
 }
 
 template <class V>
 TK_INLINE void forward2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
-                        std::size_t begin, std::size_t end) {
-  for_each_butterfly<V>(2, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t h) {
-    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
-    put(re, im, at, a + b);
-    put(re, im, at + h, twiddled(a - b, twr, twi, j));
-  });
+                        std::size_t begin, std::size_t end, Columns columns = {}) {
+  for_each_butterfly<V>(
+      2, block, begin, end,
+      [&](std::size_t at, std::size_t j, std::size_t h) {
+        const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
+        put(re, im, at, a + b);
+        put(re, im, at + h, twiddled(a - b, twr, twi, j));
+      },
+      columns);
 }
 
 template <class V>
 TK_INLINE void inverse2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
-                        std::size_t begin, std::size_t end) {
-  for_each_butterfly<V>(2, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t h) {
-    const Point<V> a = get<V>(re, im, at), b = untwiddled(get<V>(re, im, at + h), twr, twi, j);
-    put(re, im, at, a + b);
-    put(re, im, at + h, a - b);
-  });
+                        std::size_t begin, std::size_t end, Columns columns = {}) {
+  for_each_butterfly<V>(
+      2, block, begin, end,
+      [&](std::size_t at, std::size_t j, std::size_t h) {
+        const Point<V> a = get<V>(re, im, at), b = untwiddled(get<V>(re, im, at + h), twr, twi, j);
+        put(re, im, at, a + b);
+        put(re, im, at + h, a - b);
+      },
+      columns);
 }
 
 constexpr double kHalfRoot3 = 0.86602540378443864676;  // sin(2*pi/3)
@@ -167,44 +186,50 @@ constexpr double kHalfRoot3 = 0.86602540378443864676;  // sin(2*pi/3)
 // y1, y2 = m -+ i*h*d (forward: e^(-2*pi*i/3) = -1/2 - i*h), or +- for the inverse.
 template <class V>
 TK_INLINE void forward3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
-                        std::size_t begin, std::size_t end) {
+                        std::size_t begin, std::size_t end, Columns columns = {}) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(3, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
-    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
-    const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
-    const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
-    put(re, im, at, a + sum);
-    put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
-    put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
-  });
+  for_each_butterfly<V>(
+      3, block, begin, end,
+      [&](std::size_t at, std::size_t j, std::size_t q) {
+        const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
+        const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
+        const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
+        put(re, im, at, a + sum);
+        put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
+        put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
+      },
+      columns);
 }
 
 template <class V>
 TK_INLINE void inverse3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
-                        std::size_t begin, std::size_t end) {
+                        std::size_t begin, std::size_t end, Columns columns = {}) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(3, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
-    const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
-                   y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j);
-    const Point<V> sum = y1 + y2, m = {y0.r - half * sum.r, y0.m - half * sum.m};
-    const Point<V> ihd = times_i(Point<V>{h * (y1.r - y2.r), h * (y1.m - y2.m)});
-    put(re, im, at, y0 + sum);
-    put(re, im, at + q, m + ihd);
-    put(re, im, at + 2 * q, m - ihd);
-  });
+  for_each_butterfly<V>(
+      3, block, begin, end,
+      [&](std::size_t at, std::size_t j, std::size_t q) {
+        const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
+                       y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j);
+        const Point<V> sum = y1 + y2, m = {y0.r - half * sum.r, y0.m - half * sum.m};
+        const Point<V> ihd = times_i(Point<V>{h * (y1.r - y2.r), h * (y1.m - y2.m)});
+        put(re, im, at, y0 + sum);
+        put(re, im, at + q, m + ihd);
+        put(re, im, at + 2 * q, m - ihd);
+      },
+      columns);
 }
 
 template <class V>
 TK_INLINE void run_stage(const Arrays& a, const RightAngleSquarer::Stage& stage, bool forward, std::size_t begin,
-                         std::size_t end) {
+                         std::size_t end, Columns columns = {}) {
   const double *twr = a.twiddle_re + stage.twiddles, *twi = a.twiddle_im + stage.twiddles;
   switch (stage.radix * (forward ? 1 : -1)) {
-    case 4: return forward4<V>(a.re, a.im, twr, twi, stage.block, begin, end);
-    case -4: return inverse4<V>(a.re, a.im, twr, twi, stage.block, begin, end);
-    case 3: return forward3<V>(a.re, a.im, twr, twi, stage.block, begin, end);
-    case -3: return inverse3<V>(a.re, a.im, twr, twi, stage.block, begin, end);
-    case 2: return forward2<V>(a.re, a.im, twr, twi, stage.block, begin, end);
-    default: return inverse2<V>(a.re, a.im, twr, twi, stage.block, begin, end);
+    case 4: return forward4<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
+    case -4: return inverse4<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
+    case 3: return forward3<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
+    case -3: return inverse3<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
+    case 2: return forward2<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
+    default: return inverse2<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
   }
 }
 
@@ -316,5 +341,57 @@ __attribute__((target("avx2,fma"))) void square_avx2(const Arrays& arrays, const
 __attribute__((target("avx512f,avx512dq,fma"))) void passes_avx512(const Arrays& arrays) { passes<v8d, v8i>(arrays); }
 
 __attribute__((target("avx2,fma"))) void passes_avx2(const Arrays& arrays) { passes<v4d, v4i>(arrays); }
+
+// ---- One square split over threads (RightAngleSquarer's split passes) ----
+
+namespace {
+
+// The outer passes (blocks larger than the inner block Q) on the columns
+// whose index modulo Q is in [from, to): every point such a pass reads or
+// writes has its index modulo Q in that window too, so a thread that owns
+// the window runs all outer passes with no barrier between them.
+template <class V>
+TK_INLINE void outer_columns(const Arrays& a, bool forward, std::size_t from, std::size_t to) {
+  const std::size_t period = a.inner_block;
+  auto one = [&](const RightAngleSquarer::Stage& stage) __attribute__((always_inline)) {
+    const std::size_t q = stage.block / static_cast<std::size_t>(stage.radix);
+    for (std::size_t u = 0; u < q; u += period) run_stage<V>(a, stage, forward, 0, a.half, Columns{u + from, u + to});
+  };
+  if (forward)
+    for (std::size_t s = 0; s < a.inner_from; ++s) one(a.stages[s]);
+  else
+    for (std::size_t s = a.inner_from; s-- > 0;) one(a.stages[s]);
+}
+
+// The inner passes, pointwise square and inverse inner passes of inner
+// blocks [first, last): independent of every other block.
+template <class V, class I>
+TK_INLINE void inner_blocks(const Arrays& a, std::size_t first, std::size_t last) {
+  const LanePasses<V, I> lanes;
+  for (std::size_t begin = first * a.inner_block; begin < last * a.inner_block; begin += a.inner_block) {
+    const std::size_t end = begin + a.inner_block;
+    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.square(a.re + j, a.im + j);
+    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
+  }
+}
+
+}  // namespace
+
+__attribute__((target("avx512f,avx512dq,fma"))) void outer_columns_avx512(const Arrays& arrays, bool forward,
+                                                                          std::size_t from, std::size_t to) {
+  outer_columns<v8d>(arrays, forward, from, to);
+}
+__attribute__((target("avx2,fma"))) void outer_columns_avx2(const Arrays& arrays, bool forward, std::size_t from,
+                                                            std::size_t to) {
+  outer_columns<v4d>(arrays, forward, from, to);
+}
+__attribute__((target("avx512f,avx512dq,fma"))) void inner_blocks_avx512(const Arrays& arrays, std::size_t first,
+                                                                         std::size_t last) {
+  inner_blocks<v8d, v8i>(arrays, first, last);
+}
+__attribute__((target("avx2,fma"))) void inner_blocks_avx2(const Arrays& arrays, std::size_t first, std::size_t last) {
+  inner_blocks<v4d, v4i>(arrays, first, last);
+}
 
 }  // namespace tk::primes::right_angle

@@ -29,4 +29,13 @@ void square_avx2(const Arrays& arrays, const double* input, double* output);
 void passes_avx512(const Arrays& arrays);
 void passes_avx2(const Arrays& arrays);
 
+/// One square split over threads: the outer passes on the columns whose
+/// index modulo arrays.inner_block is in [from, to), forward or inverse
+/// (all of them, in order); the inner passes and pointwise square of inner
+/// blocks [first, last).
+void outer_columns_avx512(const Arrays& arrays, bool forward, std::size_t from, std::size_t to);
+void outer_columns_avx2(const Arrays& arrays, bool forward, std::size_t from, std::size_t to);
+void inner_blocks_avx512(const Arrays& arrays, std::size_t first, std::size_t last);
+void inner_blocks_avx2(const Arrays& arrays, std::size_t first, std::size_t last);
+
 }  // namespace tk::primes::right_angle

@@ -133,4 +133,18 @@ right_angle::Arrays RightAngleSquarer::arrays() const {
           inner_block_};
 }
 
+// ---- One square split over threads ----
+
+void RightAngleSquarer::outer_passes(bool forward, std::size_t from, std::size_t to) {
+  const right_angle::Arrays arrays = this->arrays();
+  if (lanes_ == 8) right_angle::outer_columns_avx512(arrays, forward, from, to);
+  else right_angle::outer_columns_avx2(arrays, forward, from, to);
+}
+
+void RightAngleSquarer::inner_passes(std::size_t first_block, std::size_t last_block) {
+  const right_angle::Arrays arrays = this->arrays();
+  if (lanes_ == 8) right_angle::inner_blocks_avx512(arrays, first_block, last_block);
+  else right_angle::inner_blocks_avx2(arrays, first_block, last_block);
+}
+
 }  // namespace tk::primes

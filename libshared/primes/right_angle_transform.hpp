@@ -82,6 +82,19 @@ class RightAngleSquarer {
   double* twiddle_im_ = nullptr;
   double* theta_cos_ = nullptr;  ///< cos(pi*j/L), j < N
   double* theta_sin_ = nullptr;
+
+  // ---- One square split over threads (weighted_squaring_split.cpp) ----
+ public:
+  /// square_in_place() in parts: outer_passes(true, ...) on every part's
+  /// columns, then (after all) inner_passes on every part's blocks, then
+  /// (after all) outer_passes(false, ...). Points are split by their index
+  /// modulo split_period() (Q): the outer passes on columns [from, to) of
+  /// every Q touch only those points, so one thread runs them all with no
+  /// barrier between; the inner passes work on blocks of Q points.
+  std::size_t split_period() const { return inner_block_; }
+  std::size_t inner_blocks() const { return half_ / inner_block_; }
+  void outer_passes(bool forward, std::size_t from, std::size_t to);
+  void inner_passes(std::size_t first_block, std::size_t last_block);
 };
 
 }  // namespace tk::primes

@@ -228,4 +228,74 @@ void write_input(const std::int64_t* low, const FoldTarget& target, const std::u
   else write_portable(low, target, bits, low_digits, digits, top);
 }
 
+// ---- One square split over threads ----
+
+namespace {
+
+TK_INLINE void multiply_into_body(const std::int64_t* __restrict d, std::int64_t* __restrict out,
+                                  const std::uint8_t* __restrict bits, std::size_t m, std::size_t from, std::size_t to,
+                                  const SplitK& k, bool add_upper) {
+  if (from == 0 && to > 0) {
+    out[0] = k.low * d[0] + (add_upper ? d[m] : -d[m]);
+    from = 1;
+  }
+  if (add_upper)
+    for (std::size_t j = from; j < to; ++j) out[j] = k.low * d[j] + d[j + m] + scaled_high(k, d[j - 1], bits[j - 1]);
+  else
+    for (std::size_t j = from; j < to; ++j) out[j] = k.low * d[j] - d[j + m] + scaled_high(k, d[j - 1], bits[j - 1]);
+}
+
+TK_INLINE void weigh_columns_body(const FoldTarget& target, std::size_t digits, std::size_t half, std::size_t period,
+                                  std::size_t from, std::size_t to) {
+  const std::int64_t* __restrict digit = target.digits;
+  double* __restrict re = target.re;
+  double* __restrict im = target.im;
+  const double* __restrict re_weight = target.re_weight;
+  const double* __restrict im_weight = target.im_weight;
+  for (std::size_t base = 0; base < half; base += period) {
+    const std::size_t end = std::min(base + to, digits);
+    std::size_t j = base + from;
+    for (; j < end; ++j) {
+      re[j] = static_cast<double>(digit[j]) * re_weight[j];
+      im[j] = static_cast<double>(digit[j]) * im_weight[j];
+    }
+    for (; j < base + to; ++j) re[j] = im[j] = 0.0;
+  }
+}
+
+#define TK_MULTIPLY_ARGS                                                                                               \
+  const std::int64_t *d, std::int64_t *out, const std::uint8_t *bits, std::size_t m, std::size_t from, std::size_t to, \
+      const SplitK &k, bool add_upper
+TK_WIDE void multiply_into_avx512(TK_MULTIPLY_ARGS) { multiply_into_body(d, out, bits, m, from, to, k, add_upper); }
+void multiply_into_portable(TK_MULTIPLY_ARGS) { multiply_into_body(d, out, bits, m, from, to, k, add_upper); }
+#undef TK_MULTIPLY_ARGS
+
+#define TK_WEIGH_ARGS \
+  const FoldTarget &target, std::size_t digits, std::size_t half, std::size_t period, std::size_t from, std::size_t to
+TK_WIDE void weigh_avx512(TK_WEIGH_ARGS) { weigh_columns_body(target, digits, half, period, from, to); }
+__attribute__((target("avx2,bmi,bmi2"))) void weigh_fast(TK_WEIGH_ARGS) {
+  weigh_columns_body(target, digits, half, period, from, to);
+}
+#undef TK_WEIGH_ARGS
+
+}  // namespace
+
+void multiply_low_by_k_into(const std::int64_t* d, std::int64_t* out, const std::uint8_t* bits, std::size_t m,
+                            std::size_t from, std::size_t to, const SplitK& k, bool add_upper, bool wide) {
+  if (wide && cpu::has_avx512()) multiply_into_avx512(d, out, bits, m, from, to, k, add_upper);
+  else multiply_into_portable(d, out, bits, m, from, to, k, add_upper);
+}
+
+void write_top_digits(std::int64_t* digit, const std::uint8_t* bits, std::size_t low_digits, std::size_t digits,
+                      std::int64_t top) {
+  balance_top(digit, bits, low_digits, digits, top);
+}
+
+// Only the right-angle transform is split, and it needs AVX2.
+void weigh_columns(const FoldTarget& target, std::size_t digits, std::size_t half, std::size_t period, std::size_t from,
+                   std::size_t to) {
+  if (cpu::has_avx512() && target.wide) weigh_avx512(target, digits, half, period, from, to);
+  else weigh_fast(target, digits, half, period, from, to);
+}
+
 }  // namespace tk::primes

@@ -55,4 +55,21 @@ struct FoldTarget {
 void write_input(const std::int64_t* low, const FoldTarget& target, const std::uint8_t* bits, std::size_t low_digits,
                  std::size_t digits, std::int64_t top);
 
+// ---- One square split over threads ----
+
+/// multiply_low_by_k's values for j in [from, to), written to out[j]
+/// (d is only read, so parts of the digits can run at once).
+void multiply_low_by_k_into(const std::int64_t* d, std::int64_t* out, const std::uint8_t* bits, std::size_t m,
+                            std::size_t from, std::size_t to, const SplitK& k, bool add_upper, bool wide);
+
+/// write_input's digits from `low_digits` up (the balanced digits of
+/// `top`), without the weighting.
+void write_top_digits(std::int64_t* digit, const std::uint8_t* bits, std::size_t low_digits, std::size_t digits,
+                      std::int64_t top);
+
+/// write_input's weighting of the digits (zero from `digits` on) for the
+/// points j < half whose index modulo `period` is in [from, to).
+void weigh_columns(const FoldTarget& target, std::size_t digits, std::size_t half, std::size_t period, std::size_t from,
+                   std::size_t to);
+
 }  // namespace tk::primes

@@ -228,4 +228,60 @@ RoundedCoefficients round_right_angle(const double* re, const double* im, const 
                                    : right_angle_avx2(re, im, weights, rotation, z, half, low);
 }
 
+// ---- One square split over threads ----
+
+namespace {
+
+template <class V, class I, class U>
+TK_INLINE RoundedCoefficients round_columns_with(const double* __restrict re, const double* __restrict im,
+                                                 const RightAngleWeights& w, const std::uint8_t* __restrict rotation,
+                                                 std::int64_t* __restrict z, std::size_t half, std::size_t low,
+                                                 std::size_t period, std::size_t from, std::size_t to) {
+  Rounder<V, I, U> rounder;
+  constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
+  for (std::size_t base = 0; base < half; base += period)
+    for (std::size_t j = base + from; j < base + to; j += lanes) {
+      const V r = load<V>(re + j), m = load<V>(im + j);
+      const V value = r * load<V>(w.a + j) + m * load<V>(w.b + j);
+      if (j + lanes <= low) rounder.add_low(value, rotation + j, z + j);
+      else if (j < low) rounder.add_split(value, rotation + j, z + j, low - j);
+      else rounder.add_high(value, rotation + j, z + j);
+      rounder.add_high(m * load<V>(w.c + j) - r * load<V>(w.d + j), rotation + half + j, z + half + j);
+    }
+  RoundedCoefficients result = rounder.finish();
+  result.sum = reduce61(result.sum);
+  result.sum_high = reduce61(result.sum_high);
+  return result;
+}
+
+#define TK_COLUMNS_ARGS                                                                                                \
+  const double *re, const double *im, const RightAngleWeights &weights, const std::uint8_t *rotation, std::int64_t *z, \
+      std::size_t half, std::size_t low, std::size_t period, std::size_t from, std::size_t to
+__attribute__((target("avx512f,avx512dq"))) RoundedCoefficients columns_avx512(TK_COLUMNS_ARGS) {
+  return round_columns_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half, low, period, from, to);
+}
+__attribute__((target("avx2"))) RoundedCoefficients columns_avx2(TK_COLUMNS_ARGS) {
+  return round_columns_with<v4d, v4i, v4u>(re, im, weights, rotation, z, half, low, period, from, to);
+}
+#undef TK_COLUMNS_ARGS
+
+}  // namespace
+
+RoundedCoefficients round_right_angle_columns(const double* re, const double* im, const RightAngleWeights& weights,
+                                              const std::uint8_t* rotation, std::int64_t* z, std::size_t half,
+                                              std::size_t low, std::size_t period, std::size_t from, std::size_t to,
+                                              bool wide) {
+  return wide && cpu::has_avx512() ? columns_avx512(re, im, weights, rotation, z, half, low, period, from, to)
+                                   : columns_avx2(re, im, weights, rotation, z, half, low, period, from, to);
+}
+
+RoundedCoefficients combine(const RoundedCoefficients& a, const RoundedCoefficients& b) {
+  RoundedCoefficients sum;
+  sum.worst = std::max(a.worst, b.worst);
+  sum.sum = reduce61(a.sum + b.sum);
+  sum.sum_high = reduce61(a.sum_high + b.sum_high);
+  sum.out_of_range = a.out_of_range || b.out_of_range;
+  return sum;
+}
+
 }  // namespace tk::primes

@@ -40,4 +40,14 @@ RoundedCoefficients round_right_angle(const double* re, const double* im, const 
                                       const std::uint8_t* rotation, std::int64_t* z, std::size_t half, std::size_t low,
                                       bool wide);
 
+/// round_right_angle on the points j < half whose index modulo `period`
+/// is in [from, to) (multiples of the lanes, 8), and their partners at
+/// j + half: one thread's part of a split square. The sums are reduced;
+/// combine() adds two parts' (the same as one pass over both).
+RoundedCoefficients round_right_angle_columns(const double* re, const double* im, const RightAngleWeights& weights,
+                                              const std::uint8_t* rotation, std::int64_t* z, std::size_t half,
+                                              std::size_t low, std::size_t period, std::size_t from, std::size_t to,
+                                              bool wide);
+RoundedCoefficients combine(const RoundedCoefficients& a, const RoundedCoefficients& b);
+
 }  // namespace tk::primes

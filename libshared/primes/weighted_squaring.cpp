@@ -18,25 +18,7 @@
 
 namespace tk::primes {
 
-namespace {
-
 using namespace weighted_detail;
-
-// Y = a*k + b with 0 <= b < k (floor division); false when a does not fit 63 bits.
-bool divide_by_k(i128 y, std::uint64_t k, std::int64_t& a, std::int64_t& b) {
-  i128 quotient = y / static_cast<i128>(k), remainder = y % static_cast<i128>(k);
-  if (remainder < 0) {
-    remainder += k;
-    --quotient;
-  }
-  const i128 limit = i128{1} << 62;
-  if (quotient >= limit || quotient <= -limit) return false;
-  a = static_cast<std::int64_t>(quotient);
-  b = static_cast<std::int64_t>(remainder);
-  return true;
-}
-
-}  // namespace
 
 void WeightedSquaring::square_minus(unsigned long minus) {
   if (square_and_reduce(minus)) return;
@@ -51,6 +33,7 @@ void WeightedSquaring::square_minus(unsigned long minus) {
 // Y small. Y = a*k + b then folds as -c*a + b*2^n: the value held next is
 // k*P - (H + a)*N + c*minus*2^n, which is below about (k + 1)*2^n in size.
 bool WeightedSquaring::square_and_reduce(unsigned long minus) {
+  if (threads_) return square_and_reduce_split(minus);
   RoundedCoefficients rounded;
   std::int64_t* z = coefficient_.data();
   const std::size_t m = low_digits_;
@@ -63,29 +46,15 @@ bool WeightedSquaring::square_and_reduce(unsigned long minus) {
     square_by_real_fft(*plans_, input_, static_cast<fftw_complex*>(spectrum_), output_, length_);
     rounded = round_coefficients(output_, output_weight_.data(), rotation_.data(), z, coefficients_, m);
   }
-  worst_roundoff_ = std::max(worst_roundoff_, rounded.worst);
-  square_mod_p_ = reduce61(rounded.sum + rounded.sum_high);
-  // Every coefficient rounded safely and they give t^2 mod p.
-  if (rounded.out_of_range || rounded.worst > kMaxRoundoff || square_mod_p_ != multiply61(value_mod_p_, value_mod_p_) ||
-      !multiplies_in_64_bits_)
-    return false;
+  if (!rounding_checks_out(rounded)) return false;
   // Carried in two halves, each until its digits are small enough to
   // multiply by k's halves: the low half's carry into 2^n moves to H (it
   // comes back as -c times it at digit 0), nothing carries out of the top.
-  const std::int64_t enough = (std::int64_t{1} << digit_bound_bits_) - (std::int64_t{1} << (max_digit_bits_ - 1)) - 1;
   const std::uint8_t* bits = bits_.data();
-  const std::int64_t low_carry = balance_digits(z, bits, m, enough, wide_);
-  if (balance_digits(z + m, bits + m, coefficients_ - m, enough, wide_) != 0) return false;
+  const std::int64_t low_carry = balance_digits(z, bits, m, carry_enough(), wide_);
+  if (balance_digits(z + m, bits + m, coefficients_ - m, carry_enough(), wide_) != 0) return false;
   const std::int64_t c = form_.c;
-  // Y's digits from m up, before the low ones are overwritten: -c*d_(j+m)
-  // and, at m, the high half of k times d_(m-1); Horner's rule in 128 bits
-  // (Y < 2^118 for k < 2^56), wrapping rather than overflowing on a freak.
-  u128 upper = 0;
-  for (std::size_t j = coefficients_ - m; j-- > m;) {
-    i128 digit = -c * static_cast<i128>(z[j + m]);
-    if (j == m) digit += static_cast<i128>(k_high_ * z[m - 1]) * (i128{1} << (max_digit_bits_ - bits[m - 1]));
-    upper = upper * (u128{1} << bits[j]) + static_cast<u128>(digit);
-  }
+  const Upper upper = upper_part(z);  // before the low digits are overwritten
   const SplitK split{k_low_, k_high_, static_cast<unsigned>(max_digit_bits_)};
   multiply_low_by_k(z, bits, m, split, c < 0, wide_);
   z[0] -= c * low_carry;
@@ -95,8 +64,38 @@ bool WeightedSquaring::square_and_reduce(unsigned long minus) {
   if (!divide_by_k(y, form_.k, a, b)) return false;  // cannot happen for t held here; never fold a wrong value
   const std::int64_t left = absorb_at_bottom(z, bits, m, -c * a);
   write_input(b + left);
-  // t' mod p, from the checked square's two sums: Y's low digits are
-  // k*(L - low_carry*2^n) - c*(H + low_carry) = k*L - c*H - low_carry*N.
+  update_residue(rounded, low_carry, a, minus);
+  return true;
+}
+
+bool WeightedSquaring::rounding_checks_out(const RoundedCoefficients& rounded) {
+  worst_roundoff_ = std::max(worst_roundoff_, rounded.worst);
+  square_mod_p_ = reduce61(rounded.sum + rounded.sum_high);
+  // Every coefficient rounded safely and they give t^2 mod p.
+  return !rounded.out_of_range && rounded.worst <= kMaxRoundoff &&
+         square_mod_p_ == multiply61(value_mod_p_, value_mod_p_) && multiplies_in_64_bits_;
+}
+
+// Y's digits from m up: -c*d_(j+m) and, at m, the high half of k times
+// d_(m-1); Horner's rule in 128 bits (Y < 2^118 for k < 2^56), wrapping
+// rather than overflowing on a freak.
+WeightedSquaring::Upper WeightedSquaring::upper_part(const std::int64_t* z) const {
+  const std::size_t m = low_digits_;
+  const std::int64_t c = form_.c;
+  u128 upper = 0;
+  for (std::size_t j = coefficients_ - m; j-- > m;) {
+    i128 digit = -c * static_cast<i128>(z[j + m]);
+    if (j == m) digit += static_cast<i128>(k_high_ * z[m - 1]) * (i128{1} << (max_digit_bits_ - bits_[m - 1]));
+    upper = upper * (u128{1} << bits_[j]) + static_cast<u128>(digit);
+  }
+  return upper;
+}
+
+// t' mod p, from the checked square's two sums: Y's low digits are
+// k*(L - low_carry*2^n) - c*(H + low_carry) = k*L - c*H - low_carry*N.
+void WeightedSquaring::update_residue(const RoundedCoefficients& rounded, std::int64_t low_carry, std::int64_t a,
+                                      unsigned long minus) {
+  const std::int64_t c = form_.c;
   auto signed61 = [](std::int64_t v) {
     const std::uint64_t r = reduce61(v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v));
     return v < 0 && r != 0 ? kP61 - r : r;
@@ -107,10 +106,10 @@ bool WeightedSquaring::square_and_reduce(unsigned long minus) {
   const std::uint64_t multiple = reduce61(signed61(low_carry) + signed61(a));
   const std::uint64_t plus = multiply61(signed61(c * static_cast<std::int64_t>(minus)), two_n_mod_p_);
   value_mod_p_ = reduce61(kp + ch + plus + kP61 - multiply61(multiple, modulus_mod_p_));
-  return true;
 }
 
 void WeightedSquaring::write_input(std::int64_t top) {
+  weights_pending_ = false;  // every digit weighted here
   FoldTarget target{digit_.data(), input_, input_weight_.data(), nullptr, nullptr, wide_};
   if (right_angle_) {
     target = {digit_.data(), right_angle_->real(), re_weight_.data(), right_angle_->imaginary(), im_weight_.data(),

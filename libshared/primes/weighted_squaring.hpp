@@ -31,11 +31,13 @@
 #include <vector>
 
 #include "primes/modulus.hpp"
+#include "primes/weighted_rounding.hpp"
 
 namespace tk::primes {
 
 struct RealFftPlans;
 class RightAngleSquarer;
+class ProofThreads;
 
 class WeightedSquaring {
  public:
@@ -72,6 +74,10 @@ class WeightedSquaring {
   /// square has checked yet, went right.
   bool holds_carried_residue() const;
 
+  /// The digits held (balanced, digit j at 2^(e_j)): a split squaring
+  /// (use_threads) must leave exactly the one-thread squaring's.
+  const std::vector<std::int64_t>& held_digits() const { return digit_; }
+
   std::size_t transform_length() const { return length_; }
   /// "right-angle, 8 lanes" or "FFTW": which transform squares.
   std::string transform_name() const;
@@ -79,12 +85,40 @@ class WeightedSquaring {
   double worst_roundoff() const { return worst_roundoff_; }
   std::uint64_t fallbacks() const { return fallbacks_; }
 
+  /// Splits each squaring over `count` threads (created here, kept until
+  /// this object goes or the count changes; 1 ends the split). The digits
+  /// after every squaring are the same as on one thread. False (one
+  /// thread) where FFTW squares: only our transform splits.
+  bool use_threads(unsigned count);
+  unsigned threads() const;
+  /// `wanted` where the transform length pays for a split (at least
+  /// split_from_length()), else 1.
+  static unsigned threads_that_pay(std::size_t length, unsigned wanted);
+  /// The shortest transform length split: measured (bench_riesel's
+  /// split table, riesel(1)), or TOOLKIT_PROOF_THREADS_FROM's.
+  static std::size_t split_from_length();
+
  private:
   WeightedSquaring(const SpecialForm& form, std::size_t length, std::size_t low_digits, Transform transform);
 
   /// t := k*t^2 + c*minus*2^n on the transform; false (nothing held
   /// changed) when a check fails.
   bool square_and_reduce(unsigned long minus);
+  /// The same, split over threads_ (weighted_squaring_split.cpp).
+  bool square_and_reduce_split(unsigned long minus);
+  /// The carries before the multiplication by k stop at this (the digits then multiply in 64 bits).
+  std::int64_t carry_enough() const {
+    return (std::int64_t{1} << digit_bound_bits_) - (std::int64_t{1} << (max_digit_bits_ - 1)) - 1;
+  }
+  /// Notes the rounding; whether the square is safe to reduce.
+  bool rounding_checks_out(const RoundedCoefficients& rounded);
+  /// Y's digits from m up (weighted_squaring.cpp), from the carried coefficients.
+  __extension__ typedef unsigned __int128 Upper;
+  Upper upper_part(const std::int64_t* z) const;
+  /// t' mod 2^61-1 from the checked square, after the fold by a.
+  void update_residue(const RoundedCoefficients& rounded, std::int64_t low_carry, std::int64_t a, unsigned long minus);
+  /// The digits weighted into the transform's input (after a split square).
+  void weigh_pending();
   /// The digits from coefficient_[0..m) and `top` at 2^n, weighted into the transform's input.
   void write_input(std::int64_t top);
   void square_by_gmp(unsigned long minus);
@@ -125,6 +159,12 @@ class WeightedSquaring {
   std::uint64_t k_mod_p_ = 0, two_n_mod_p_ = 0, inverse_two_n_mod_p_ = 0;  ///< k's, 2^n's, 2^-n's
   double worst_roundoff_ = 0;
   std::uint64_t fallbacks_ = 0;
+  // The split squaring's: the threads, the product's digits (swapped with
+  // digit_), each thread's rounding, and whether digit_ is yet to be weighted.
+  std::unique_ptr<ProofThreads> threads_;
+  std::vector<std::int64_t> product_;
+  std::vector<RoundedCoefficients> rounded_parts_;
+  bool weights_pending_ = false;
 };
 
 }  // namespace tk::primes

@@ -42,6 +42,20 @@ inline std::uint64_t multiply61(std::uint64_t a, std::uint64_t b) {
   return reduce61((static_cast<std::uint64_t>(product) & kP61) + static_cast<std::uint64_t>(product >> 61));
 }
 
+// Y = a*k + b with 0 <= b < k (floor division); false when a does not fit 63 bits.
+inline bool divide_by_k(i128 y, std::uint64_t k, std::int64_t& a, std::int64_t& b) {
+  i128 quotient = y / static_cast<i128>(k), remainder = y % static_cast<i128>(k);
+  if (remainder < 0) {
+    remainder += k;
+    --quotient;
+  }
+  const i128 limit = i128{1} << 62;
+  if (quotient >= limit || quotient <= -limit) return false;
+  a = static_cast<std::int64_t>(quotient);
+  b = static_cast<std::int64_t>(remainder);
+  return true;
+}
+
 inline mpz_class modulus_of(const SpecialForm& form) {
   mpz_class N = form.k;
   N <<= static_cast<mp_bitcnt_t>(form.n);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "primes/fft_plans.hpp"
+#include "primes/proof_threads.hpp"
 #include "primes/right_angle_transform.hpp"
 #include "primes/weighted_squaring.hpp"
 #include "primes/weighted_squaring_detail.hpp"

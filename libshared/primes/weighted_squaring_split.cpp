@@ -1,0 +1,128 @@
+/// @file weighted_squaring_split.cpp
+/// @brief WeightedSquaring's squaring split over threads (ProofThreads),
+/// digit for digit the one-thread squaring's. Points split by their index
+/// modulo the transform's inner block Q (RightAngleSquarer::split_period):
+/// a thread weighs its points into the input and runs the outer forward
+/// passes on them with no barrier; after a barrier the inner blocks are
+/// shared out; after another the thread runs the outer inverse passes on
+/// its points and rounds them, its sums mod 2^61-1 added up afterwards. The
+/// two halves of the coefficients carry at once on two threads; the
+/// multiplication by k is split in ranges into a second array (so no
+/// thread reads a digit another has overwritten); the last carry, the fold
+/// and the top digits stay on one thread.
+#include <algorithm>
+#include <cstdlib>
+
+#include "primes/proof_threads.hpp"
+#include "primes/right_angle_transform.hpp"
+#include "primes/weighted_passes.hpp"
+#include "primes/weighted_squaring.hpp"
+#include "primes/weighted_squaring_detail.hpp"
+
+namespace tk::primes {
+
+using namespace weighted_detail;
+
+namespace {
+
+// Below this transform length a second thread did not pay (bench_riesel's
+// split table, riesel(1)).
+constexpr std::size_t kSplitFromLength = 147456;
+
+// Part `part` of `parts` of [0, units): the first units go to the first parts.
+std::size_t share(std::size_t units, unsigned part, unsigned parts) { return units * part / parts; }
+
+}  // namespace
+
+std::size_t WeightedSquaring::split_from_length() {
+  static const std::size_t from = [] {
+    const char* set = std::getenv("TOOLKIT_PROOF_THREADS_FROM");
+    return set && *set ? static_cast<std::size_t>(std::strtoull(set, nullptr, 10)) : kSplitFromLength;
+  }();
+  return from;
+}
+
+unsigned WeightedSquaring::threads_that_pay(std::size_t length, unsigned wanted) {
+  return length >= split_from_length() ? std::max(wanted, 1u) : 1u;
+}
+
+unsigned WeightedSquaring::threads() const { return threads_ ? threads_->count() : 1; }
+
+bool WeightedSquaring::use_threads(unsigned count) {
+  weigh_pending();
+  if (count <= 1 || !right_angle_) {
+    threads_.reset();
+    return false;
+  }
+  if (!threads_ || threads_->count() != count) threads_ = std::make_unique<ProofThreads>(count);
+  product_.assign(digit_.size(), 0);
+  rounded_parts_.assign(count, RoundedCoefficients{});
+  return true;
+}
+
+void WeightedSquaring::weigh_pending() {
+  if (!weights_pending_) return;
+  const FoldTarget target{
+      digit_.data(), right_angle_->real(), re_weight_.data(), right_angle_->imaginary(), im_weight_.data(), wide_};
+  weigh_columns(target, digits_, length_ / 2, length_ / 2, 0, length_ / 2);
+  weights_pending_ = false;
+}
+
+bool WeightedSquaring::square_and_reduce_split(unsigned long minus) {
+  ProofThreads& threads = *threads_;
+  RightAngleSquarer& transform = *right_angle_;
+  const unsigned parts = threads.count();
+  const std::size_t half = length_ / 2, m = low_digits_, period = transform.split_period();
+  const std::size_t lanes = static_cast<std::size_t>(transform.lanes()), blocks = transform.inner_blocks();
+  std::int64_t* z = coefficient_.data();
+  const std::uint8_t* bits = bits_.data();
+  const RightAngleWeights weights{round_a_.data(), round_b_.data(), round_c_.data(), round_d_.data()};
+  const FoldTarget target{digit_.data(),         transform.real(),  re_weight_.data(),
+                          transform.imaginary(), im_weight_.data(), wide_};
+  const bool weigh = weights_pending_;
+  threads.run([&](unsigned part) {
+    const std::size_t from = share(period / lanes, part, parts) * lanes;
+    const std::size_t to = share(period / lanes, part + 1, parts) * lanes;
+    if (weigh) weigh_columns(target, digits_, half, period, from, to);
+    transform.outer_passes(true, from, to);
+    threads.barrier();
+    transform.inner_passes(share(blocks, part, parts), share(blocks, part + 1, parts));
+    threads.barrier();
+    transform.outer_passes(false, from, to);
+    rounded_parts_[part] = round_right_angle_columns(transform.real(), transform.imaginary(), weights, rotation_.data(),
+                                                     z, half, m, period, from, to, wide_);
+  });
+  weights_pending_ = false;
+  RoundedCoefficients rounded = rounded_parts_[0];
+  for (unsigned part = 1; part < parts; ++part) rounded = combine(rounded, rounded_parts_[part]);
+  if (!rounding_checks_out(rounded)) return false;
+
+  // The two halves carry at once, each by the one-thread pass.
+  std::int64_t low_carry = 0, high_carry = 0;
+  threads.run([&](unsigned part) {
+    if (part == 0) low_carry = balance_digits(z, bits, m, carry_enough(), wide_);
+    if (part == std::min(1u, parts - 1))
+      high_carry = balance_digits(z + m, bits + m, coefficients_ - m, carry_enough(), wide_);
+  });
+  if (high_carry != 0) return false;
+  const std::int64_t c = form_.c;
+  std::int64_t* product = product_.data();
+  const SplitK split{k_low_, k_high_, static_cast<unsigned>(max_digit_bits_)};
+  threads.run([&](unsigned part) {
+    multiply_low_by_k_into(z, product, bits, m, share(m / 8, part, parts) * 8,
+                           part + 1 == parts ? m : share(m / 8, part + 1, parts) * 8, split, c < 0, wide_);
+  });
+  product[0] -= c * low_carry;
+  const std::int64_t carry = balance_digits(product, bits, m, 1, wide_);
+  const i128 y = static_cast<i128>(upper_part(z)) + carry + c * static_cast<i128>(minus);
+  std::int64_t a = 0, b = 0;
+  if (!divide_by_k(y, form_.k, a, b)) return false;  // cannot happen for t held here; never fold a wrong value
+  const std::int64_t left = absorb_at_bottom(product, bits, m, -c * a);
+  write_top_digits(product, bits, m, digits_, b + left);
+  digit_.swap(product_);
+  weights_pending_ = true;  // at the next square's start, by every thread
+  update_residue(rounded, low_carry, a, minus);
+  return true;
+}
+
+}  // namespace tk::primes
