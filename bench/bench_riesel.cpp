@@ -7,9 +7,16 @@
 /// both sizes: ms per squaring and their ratio. With BENCH_RIESEL_BIG=1
 /// also times the whole proof of the Jarai twin member
 /// 16869987339975*2^171960-1 (goal: at most 15 s) and GMP's on it.
+/// BENCH_RIESEL_SPLIT=1 prints instead the table of one squaring split
+/// over BENCH_RIESEL_THREADS threads (default 2) against one thread
+/// (WeightedSquaring::use_threads), wall time, at several n
+/// (BENCH_RIESEL_SPLIT_NS="36627 171960 ..." to choose).
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -94,6 +101,49 @@ void compare_transforms(std::size_t length, int rounds, int repeats, RightAngleS
   fftw_free(spectrum);
 }
 
+double wall_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Wall milliseconds per squaring of 16869987339975*2^n-1 on one thread
+// and split over `threads`, turns in the order one, split, split, one;
+// medians of `repeats`. The split must leave the same digits.
+void compare_split(std::uint64_t n, unsigned threads, int repeats) {
+  const SpecialForm form{16869987339975, n, -1};
+  auto one = WeightedSquaring::create(form);
+  auto split = WeightedSquaring::create(form);
+  if (!one || !split || !split->use_threads(threads)) {
+    std::printf("  n = %llu: no split squaring at this size\n", static_cast<unsigned long long>(n));
+    return;
+  }
+  mpz_class N = form.k;
+  N <<= static_cast<mp_bitcnt_t>(n);
+  N -= 1;
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(23);
+  const mpz_class x = random.get_z_range(N);
+  one->load(x);
+  split->load(x);
+  const int rounds = static_cast<int>(std::max<std::uint64_t>(20, 200000000 / n));
+  auto time_rounds = [&](WeightedSquaring& squarer) {
+    const double start = wall_seconds();
+    for (int i = 0; i < rounds; ++i) squarer.square_minus(2);
+    return (wall_seconds() - start) / rounds * 1e3;
+  };
+  std::vector<double> single, many, ratio;
+  for (int r = 0; r < repeats; ++r) {
+    const double a = time_rounds(*one), b = time_rounds(*split), c = time_rounds(*split), d = time_rounds(*one);
+    single.push_back((a + d) / 2);
+    many.push_back((b + c) / 2);
+    ratio.push_back(single.back() / many.back());
+  }
+  if (one->held_digits() != split->held_digits()) bench::fail("the split squaring left other digits");
+  std::printf("| %8llu | %7zu | %8.4f | %8.4f | %5.2f (%.2f-%.2f) |\n", static_cast<unsigned long long>(n),
+              one->transform_length(), bench::median(single), bench::median(many), bench::median(ratio),
+              *std::min_element(ratio.begin(), ratio.end()), *std::max_element(ratio.begin(), ratio.end()));
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main() {
@@ -102,6 +152,18 @@ int main() {
     const auto simd = std::string(widths) == "avx2" ? RightAngleSquarer::Simd::avx2 : RightAngleSquarer::Simd::best;
     for (std::size_t length : {4096, 6144, 9216, 16384, 18432, 36864})
       compare_transforms(length, 20000000 / length, 5, simd);
+    return 0;
+  }
+  if (const char* split = std::getenv("BENCH_RIESEL_SPLIT"); split && std::string(split) == "1") {
+    const char* chosen = std::getenv("BENCH_RIESEL_SPLIT_NS");
+    std::istringstream ns(chosen ? chosen : "36627 171960 600011 1200007 3000017");
+    const char* wanted = std::getenv("BENCH_RIESEL_THREADS");
+    const unsigned threads = wanted ? static_cast<unsigned>(std::atoi(wanted)) : 2;
+    std::printf(
+        "bench_riesel: one squaring on 1 and %u threads, wall ms per squaring, medians of %d (order 1, %u, "
+        "%u, 1)\n| n | length | 1 thread | %u threads | speed-up (min-max) |\n",
+        threads, repeats, threads, threads, threads);
+    for (std::uint64_t n = 0; ns >> n;) compare_split(n, threads, repeats);
     return 0;
   }
   const std::uint64_t k = 778965587811, n = 36627;

@@ -68,6 +68,9 @@ void WeightedSquaring::weigh_pending() {
   weights_pending_ = false;
 }
 
+// One parallel step a square: the threads meet at barriers only where a
+// stage needs what others wrote, and the workers never wait between two
+// steps for longer than the caller's few checks.
 bool WeightedSquaring::square_and_reduce_split(unsigned long minus) {
   ProofThreads& threads = *threads_;
   RightAngleSquarer& transform = *right_angle_;
@@ -75,11 +78,18 @@ bool WeightedSquaring::square_and_reduce_split(unsigned long minus) {
   const std::size_t half = length_ / 2, m = low_digits_, period = transform.split_period();
   const std::size_t lanes = static_cast<std::size_t>(transform.lanes()), blocks = transform.inner_blocks();
   std::int64_t* z = coefficient_.data();
+  std::int64_t* product = product_.data();
   const std::uint8_t* bits = bits_.data();
+  const std::int64_t c = form_.c;
   const RightAngleWeights weights{round_a_.data(), round_b_.data(), round_c_.data(), round_d_.data()};
   const FoldTarget target{digit_.data(),         transform.real(),  re_weight_.data(),
                           transform.imaginary(), im_weight_.data(), wide_};
+  const SplitK split{k_low_, k_high_, static_cast<unsigned>(max_digit_bits_)};
   const bool weigh = weights_pending_;
+  const unsigned high_part = std::min(1u, parts - 1);  // carries the upper half while part 0 carries the lower
+  RoundedCoefficients rounded;
+  bool checked = false;
+  std::int64_t low_carry = 0, high_carry = 0;
   threads.run([&](unsigned part) {
     const std::size_t from = share(period / lanes, part, parts) * lanes;
     const std::size_t to = share(period / lanes, part + 1, parts) * lanes;
@@ -91,27 +101,24 @@ bool WeightedSquaring::square_and_reduce_split(unsigned long minus) {
     transform.outer_passes(false, from, to);
     rounded_parts_[part] = round_right_angle_columns(transform.real(), transform.imaginary(), weights, rotation_.data(),
                                                      z, half, m, period, from, to, wide_);
-  });
-  weights_pending_ = false;
-  RoundedCoefficients rounded = rounded_parts_[0];
-  for (unsigned part = 1; part < parts; ++part) rounded = combine(rounded, rounded_parts_[part]);
-  if (!rounding_checks_out(rounded)) return false;
-
-  // The two halves carry at once, each by the one-thread pass.
-  std::int64_t low_carry = 0, high_carry = 0;
-  threads.run([&](unsigned part) {
-    if (part == 0) low_carry = balance_digits(z, bits, m, carry_enough(), wide_);
-    if (part == std::min(1u, parts - 1))
-      high_carry = balance_digits(z + m, bits + m, coefficients_ - m, carry_enough(), wide_);
-  });
-  if (high_carry != 0) return false;
-  const std::int64_t c = form_.c;
-  std::int64_t* product = product_.data();
-  const SplitK split{k_low_, k_high_, static_cast<unsigned>(max_digit_bits_)};
-  threads.run([&](unsigned part) {
+    threads.barrier();
+    // The two halves carry at once, each by the one-thread pass (their
+    // digits are scratch until the checks pass).
+    if (part == 0) {
+      rounded = rounded_parts_[0];
+      for (unsigned other = 1; other < parts; ++other) rounded = combine(rounded, rounded_parts_[other]);
+      checked = rounding_checks_out(rounded);
+      if (checked) low_carry = balance_digits(z, bits, m, carry_enough(), wide_);
+    }
+    if (part == high_part) high_carry = balance_digits(z + m, bits + m, coefficients_ - m, carry_enough(), wide_);
+    threads.barrier();
+    if (!checked || high_carry != 0) return;
+    // By ranges into the second array: no part reads a digit another wrote.
     multiply_low_by_k_into(z, product, bits, m, share(m / 8, part, parts) * 8,
                            part + 1 == parts ? m : share(m / 8, part + 1, parts) * 8, split, c < 0, wide_);
   });
+  weights_pending_ = false;
+  if (!checked || high_carry != 0) return false;
   product[0] -= c * low_carry;
   const std::int64_t carry = balance_digits(product, bits, m, 1, wide_);
   const i128 y = static_cast<i128>(upper_part(z)) + carry + c * static_cast<i128>(minus);
