@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "primes/cpu_features.hpp"
+#include "primes/proof_threads.hpp"
 
 namespace tk::primes {
 
@@ -68,37 +69,62 @@ TK_INLINE std::int64_t balance_chains(std::int64_t* __restrict digit, const std:
 // carry exceeds `enough` (2^51 to 1 in three passes at s = 20), while the
 // scalar chain is bound by its add-and-shift latency. The value is the
 // same; returns the carry out of the last digit.
+// One such pass over the whole vectors of digits [begin, end): the first
+// takes no carry in (the caller adds it); `last_up` gets the carry out of
+// digit end - 1. Returns the largest carry moved.
+TK_WIDE TK_INLINE std::int64_t lanes_pass(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits,
+                                          std::size_t begin, std::size_t end, std::int64_t& last_up) {
+  const __m512i one = _mm512_set1_epi64(1);
+  __m512i before = _mm512_setzero_si512(), largest = _mm512_setzero_si512();
+  for (std::size_t j = begin; j < end; j += 8) {
+    const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits + j)));
+    const __m512i half = _mm512_sllv_epi64(one, _mm512_sub_epi64(size, one));
+    const __m512i total = _mm512_add_epi64(_mm512_loadu_si512(digit + j), half);
+    const __m512i up = _mm512_srav_epi64(total, size);
+    const __m512i kept = _mm512_sub_epi64(_mm512_sub_epi64(total, _mm512_sllv_epi64(up, size)), half);
+    // lane i takes lane i-1's carry; lane 0 the previous vector's last
+    _mm512_storeu_si512(digit + j, _mm512_add_epi64(kept, _mm512_alignr_epi64(up, before, 7)));
+    largest = _mm512_max_epi64(largest, _mm512_abs_epi64(up));
+    before = up;
+  }
+  last_up = end > begin ? static_cast<std::int64_t>(_mm512_mask_reduce_max_epi64(0x80, before)) : 0;
+  return static_cast<std::int64_t>(_mm512_reduce_max_epi64(largest));
+}
+
+// The same pass on the digits past the whole vectors, one at a time;
+// `carry` comes in and goes out. Returns the largest carry moved.
+TK_INLINE std::int64_t tail_pass(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits, std::size_t begin,
+                                 std::size_t end, std::int64_t& carry) {
+  std::int64_t tail_largest = 0;
+  for (std::size_t j = begin; j < end; ++j) {
+    const unsigned s = bits[j];
+    const std::int64_t total = digit[j] + (std::int64_t{1} << (s - 1));
+    const std::int64_t up = total >> s;
+    digit[j] =
+        total - static_cast<std::int64_t>(static_cast<std::uint64_t>(up) << s) - (std::int64_t{1} << (s - 1)) + carry;
+    tail_largest = std::max(tail_largest, up < 0 ? -up : up);
+    carry = up;
+  }
+  return tail_largest;
+}
+
+// The digits balanced in lanes, eight at a time, by passes that each move
+// every digit's excess over [-2^(s-1), 2^(s-1)) one digit up at once (the
+// carry a digit takes in is what its neighbour gave off before this
+// pass). Each pass divides the excess by about 2^s; passes run until no
+// carry exceeds `enough` (2^51 to 1 in three passes at s = 20), while the
+// scalar chain is bound by its add-and-shift latency. The value is the
+// same; returns the carry out of the last digit.
 TK_WIDE std::int64_t balance_lanes(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits,
                                    std::size_t count, std::int64_t enough) {
-  const __m512i one = _mm512_set1_epi64(1);
   const std::size_t whole = count / 8 * 8;
   std::int64_t carried_out = 0;
   for (int pass = 0; pass < 64; ++pass) {
-    __m512i before = _mm512_setzero_si512(), largest = _mm512_setzero_si512();
-    for (std::size_t j = 0; j < whole; j += 8) {
-      const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits + j)));
-      const __m512i half = _mm512_sllv_epi64(one, _mm512_sub_epi64(size, one));
-      const __m512i total = _mm512_add_epi64(_mm512_loadu_si512(digit + j), half);
-      const __m512i up = _mm512_srav_epi64(total, size);
-      const __m512i kept = _mm512_sub_epi64(_mm512_sub_epi64(total, _mm512_sllv_epi64(up, size)), half);
-      // lane i takes lane i-1's carry; lane 0 the previous vector's last
-      _mm512_storeu_si512(digit + j, _mm512_add_epi64(kept, _mm512_alignr_epi64(up, before, 7)));
-      largest = _mm512_max_epi64(largest, _mm512_abs_epi64(up));
-      before = up;
-    }
-    std::int64_t carry = whole > 0 ? static_cast<std::int64_t>(_mm512_mask_reduce_max_epi64(0x80, before)) : 0;
-    std::int64_t tail_largest = 0;
-    for (std::size_t j = whole; j < count; ++j) {
-      const unsigned s = bits[j];
-      const std::int64_t total = digit[j] + (std::int64_t{1} << (s - 1));
-      const std::int64_t up = total >> s;
-      digit[j] =
-          total - static_cast<std::int64_t>(static_cast<std::uint64_t>(up) << s) - (std::int64_t{1} << (s - 1)) + carry;
-      tail_largest = std::max(tail_largest, up < 0 ? -up : up);
-      carry = up;
-    }
+    std::int64_t carry = 0;
+    const std::int64_t largest = lanes_pass(digit, bits, 0, whole, carry);
+    const std::int64_t tail_largest = tail_pass(digit, bits, whole, count, carry);
     carried_out += carry;
-    if (std::max(static_cast<std::int64_t>(_mm512_reduce_max_epi64(largest)), tail_largest) <= enough) break;
+    if (std::max(largest, tail_largest) <= enough) break;
   }
   return carried_out;
 }
@@ -296,6 +322,81 @@ void weigh_columns(const FoldTarget& target, std::size_t digits, std::size_t hal
                    std::size_t to) {
   if (cpu::has_avx512() && target.wide) weigh_avx512(target, digits, half, period, from, to);
   else weigh_fast(target, digits, half, period, from, to);
+}
+
+namespace {
+
+std::size_t share(std::size_t units, unsigned part, unsigned parts) { return units * part / parts; }
+
+// The lanes' passes split: part p carries whole vectors [share(p), share(p + 1)),
+// the last part also the digits past them.
+TK_WIDE std::int64_t lanes_split(std::int64_t* digit, const std::uint8_t* bits, std::size_t count, std::int64_t enough,
+                                 ProofThreads& threads, unsigned part, CarryExchange& exchange) {
+  const unsigned parts = threads.count();
+  const std::size_t vectors = count / 8, begin = share(vectors, part, parts) * 8;
+  const std::size_t end = share(vectors, part + 1, parts) * 8;
+  std::int64_t carried_out = 0;
+  for (int pass = 0; pass < 64; ++pass) {
+    std::int64_t up = 0;
+    std::int64_t largest = lanes_pass(digit, bits, begin, end, up);
+    if (part + 1 == parts) {
+      largest = std::max(largest, tail_pass(digit, bits, vectors * 8, count, up));
+      carried_out += up;
+    }
+    exchange.up[pass % 2][part] = up;
+    exchange.largest[pass % 2][part] = largest;
+    threads.barrier();
+    // The carry the first digit missed: out of the range before, before this pass.
+    if (part > 0) digit[begin] += exchange.up[pass % 2][part - 1];
+    std::int64_t most = 0;
+    for (unsigned other = 0; other < parts; ++other) most = std::max(most, exchange.largest[pass % 2][other]);
+    if (most <= enough) break;
+  }
+  if (part + 1 == parts) exchange.chain_carry[0] = carried_out;
+  threads.barrier();
+  return exchange.chain_carry[0];
+}
+
+__attribute__((target("avx2,bmi,bmi2"))) void chain_fast(std::int64_t* digit, const std::uint8_t* bits,
+                                                         std::size_t from, std::size_t to, std::int64_t& carry) {
+  const Balancer balancer{digit, bits};
+  for (std::size_t j = from; j < to; ++j) carry = balancer.step(j, carry);
+}
+
+// balance_chains's chains shared out (chain c to part c * parts / kChains),
+// each the same as there; part 0 then absorbs them in order.
+std::int64_t chains_split(std::int64_t* digit, const std::uint8_t* bits, std::size_t count, ProofThreads& threads,
+                          unsigned part, CarryExchange& exchange) {
+  const unsigned parts = threads.count();
+  const std::size_t stretch = count / kChains;
+  for (std::size_t c = 0; c < kChains; ++c) {
+    if (c * parts / kChains != part) continue;
+    exchange.chain_carry[c] = 0;
+    chain_fast(digit, bits, c * stretch, c + 1 < kChains ? (c + 1) * stretch : count, exchange.chain_carry[c]);
+  }
+  threads.barrier();
+  if (part != 0) return 0;
+  const Balancer balancer{digit, bits};
+  std::int64_t* carry = exchange.chain_carry;
+  for (std::size_t c = 1; c < kChains; ++c) {
+    const std::size_t end = c + 1 < kChains ? (c + 1) * stretch : count;
+    carry[c] += balancer.absorb(c * stretch, end, carry[c - 1]);
+  }
+  return carry[kChains - 1];
+}
+
+}  // namespace
+
+std::int64_t balance_digits_split(std::int64_t* digit, const std::uint8_t* bits, std::size_t count, std::int64_t enough,
+                                  bool wide, ProofThreads& threads, unsigned part, CarryExchange& exchange) {
+  if (count / 8 < threads.count()) {  // too few digits for a range each: part 0 carries them all
+    const std::int64_t carry = part == 0 ? balance_digits(digit, bits, count, enough, wide) : 0;
+    threads.barrier();
+    return carry;
+  }
+  if (wide && cpu::has_avx512())
+    return lanes_split(digit, bits, count, std::max<std::int64_t>(enough, 1), threads, part, exchange);
+  return chains_split(digit, bits, count, threads, part, exchange);
 }
 
 }  // namespace tk::primes

@@ -7,8 +7,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace tk::primes {
+
+class ProofThreads;
 
 /// Balances digit[0..count) (digit j has bits[j] bits): each digit's excess
 /// over [-2^(s-1), 2^(s-1)) moves up until no digit carries more than
@@ -71,5 +74,25 @@ void write_top_digits(std::int64_t* digit, const std::uint8_t* bits, std::size_t
 /// points j < half whose index modulo `period` is in [from, to).
 void weigh_columns(const FoldTarget& target, std::size_t digits, std::size_t half, std::size_t period, std::size_t from,
                    std::size_t to);
+
+/// What the parts of a split balance_digits hand each other.
+struct CarryExchange {
+  explicit CarryExchange(unsigned parts = 1)
+      : up{std::vector<std::int64_t>(parts), std::vector<std::int64_t>(parts)},
+        largest{std::vector<std::int64_t>(parts), std::vector<std::int64_t>(parts)} {}
+  std::vector<std::int64_t> up[2];       ///< each part's carry out, by pass parity
+  std::vector<std::int64_t> largest[2];  ///< each part's largest carry moved
+  std::int64_t chain_carry[4] = {};
+};
+
+/// balance_digits(digit, bits, count, enough, wide), digit for digit,
+/// called by every part of threads.run() at once: the classic parallel
+/// carry. Each part carries its range of digits; after a barrier the carry
+/// out of each range is added to the next range's first digit; passes go on
+/// until no carry exceeds `enough` (AVX-512 lanes), or the scalar chains
+/// run on the parts and part 0 absorbs each chain's carry into the next.
+/// Part 0 gets the carry out of the last digit.
+std::int64_t balance_digits_split(std::int64_t* digit, const std::uint8_t* bits, std::size_t count, std::int64_t enough,
+                                  bool wide, ProofThreads& threads, unsigned part, CarryExchange& exchange);
 
 }  // namespace tk::primes

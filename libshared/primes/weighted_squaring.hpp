@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "primes/modulus.hpp"
+#include "primes/weighted_passes.hpp"
 #include "primes/weighted_rounding.hpp"
 
 namespace tk::primes {
@@ -164,6 +165,7 @@ class WeightedSquaring {
   std::unique_ptr<ProofThreads> threads_;
   std::vector<std::int64_t> product_;
   std::vector<RoundedCoefficients> rounded_parts_;
+  CarryExchange carry_exchange_;
   bool weights_pending_ = false;
 };
 

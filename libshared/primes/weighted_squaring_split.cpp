@@ -8,8 +8,9 @@
 /// its points and rounds them, its sums mod 2^61-1 added up afterwards. The
 /// two halves of the coefficients carry at once on two threads; the
 /// multiplication by k is split in ranges into a second array (so no
-/// thread reads a digit another has overwritten); the last carry, the fold
-/// and the top digits stay on one thread.
+/// thread reads a digit another has overwritten), and its carry by the
+/// parallel carry (balance_digits_split); the fold and the top digits stay
+/// on one thread.
 #include <algorithm>
 #include <cstdlib>
 
@@ -57,6 +58,7 @@ bool WeightedSquaring::use_threads(unsigned count) {
   if (!threads_ || threads_->count() != count) threads_ = std::make_unique<ProofThreads>(count);
   product_.assign(digit_.size(), 0);
   rounded_parts_.assign(count, RoundedCoefficients{});
+  carry_exchange_ = CarryExchange(count);
   return true;
 }
 
@@ -89,7 +91,7 @@ bool WeightedSquaring::square_and_reduce_split(unsigned long minus) {
   const unsigned high_part = std::min(1u, parts - 1);  // carries the upper half while part 0 carries the lower
   RoundedCoefficients rounded;
   bool checked = false;
-  std::int64_t low_carry = 0, high_carry = 0;
+  std::int64_t low_carry = 0, high_carry = 0, carry = 0;
   threads.run([&](unsigned part) {
     const std::size_t from = share(period / lanes, part, parts) * lanes;
     const std::size_t to = share(period / lanes, part + 1, parts) * lanes;
@@ -116,11 +118,13 @@ bool WeightedSquaring::square_and_reduce_split(unsigned long minus) {
     // By ranges into the second array: no part reads a digit another wrote.
     multiply_low_by_k_into(z, product, bits, m, share(m / 8, part, parts) * 8,
                            part + 1 == parts ? m : share(m / 8, part + 1, parts) * 8, split, c < 0, wide_);
+    threads.barrier();                           // the carries' ranges are not the multiplication's
+    if (part == 0) product[0] -= c * low_carry;  // digit 0 is part 0's in the carries
+    const std::int64_t out = balance_digits_split(product, bits, m, 1, wide_, threads, part, carry_exchange_);
+    if (part == 0) carry = out;
   });
   weights_pending_ = false;
   if (!checked || high_carry != 0) return false;
-  product[0] -= c * low_carry;
-  const std::int64_t carry = balance_digits(product, bits, m, 1, wide_);
   const i128 y = static_cast<i128>(upper_part(z)) + carry + c * static_cast<i128>(minus);
   std::int64_t a = 0, b = 0;
   if (!divide_by_k(y, form_.k, a, b)) return false;  // cannot happen for t held here; never fold a wrong value

@@ -90,7 +90,7 @@ oracle_gp() {
   run --separate-stderr riesel --help
   assert_success
   assert_output --partial "Usage: riesel"
-  for option in --start --arithmetic --require-proof --state --checkpoint-every --shard --skip-bad --max-bits --csv --threads; do
+  for option in --start --arithmetic --require-proof --state --checkpoint-every --shard --skip-bad --max-bits --csv --threads --proof-threads; do
     assert_output --partial -- "$option"
   done
   [ -z "$stderr" ]
@@ -457,6 +457,28 @@ mixed_input() {
   [ "$(wc -l < one.txt)" -eq $(( $(wc -l < mixed.abc) - 1 )) ]
   grep -q '"verdict":"prime"' one.txt
   grep -q '"res64"' one.txt
+}
+
+# Known primes (3*2^n-1 at n = 4204, 3*2^n+1 at n = 3912) and composites
+# that pass trial division, proved with every squaring split over two
+# threads (the crossover lowered to any length): the records -t 1 writes.
+@test "-t 2 splits each proof's squarings and writes what -t 1 writes" {
+  printf '%s\n' '3*2^4204-1' '3*2^3912+1' '3*2^4206-1' '3*2^3914+1' '16869987339975*2^3001-1' > split.txt
+  riesel --arithmetic fft split.txt | no_seconds > one.txt
+  TOOLKIT_PROOF_THREADS_FROM=1 riesel -t 2 --arithmetic fft split.txt | no_seconds > two.txt
+  run cmp one.txt two.txt
+  assert_success
+  [ "$(grep -c '"verdict":"prime"' two.txt)" -eq 2 ]
+  sed -n 1p two.txt | grep -q '"n":4204.*"verdict":"prime"'
+  sed -n 2p two.txt | grep -q '"n":3912.*"verdict":"prime"'
+  TOOLKIT_PROOF_THREADS_FROM=1 riesel -j 2 -t 2 --arithmetic fft split.txt | no_seconds > both.txt
+  run cmp one.txt both.txt
+  assert_success
+}
+
+@test "-t 0 is a usage error" {
+  run riesel -t 0 <<< '3*2^4204-1'
+  assert_failure 2
 }
 
 @test "--shard K/3 proves records K, K+3, ...: the three shards make up one run" {

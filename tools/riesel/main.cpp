@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   double checkpoint_seconds = 300;
   bool skip_bad = false, require_proof = false;
   std::size_t max_bits = tk::primes::kDefaultMaxBits;
+  unsigned proof_threads = 1;
   CLI::App& app = tool.app();
   app.add_option("--start", start, "llr (LLR's choice of P) or d13 (the seed's D = 13, P = 11)")
       ->check(CLI::IsMember({"llr", "d13"}))
@@ -75,6 +76,12 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::size_t{2}, std::size_t{1} << 32))
       ->type_name("BITS");
   tool.add_threads_option();
+  app.add_option("-t,--proof-threads", proof_threads,
+                 "split each proof's squarings over N threads where the transform is long enough to gain (as "
+                 "LLR's -t; -j J -t N uses J*N threads)")
+      ->check(CLI::Range(1u, 64u))
+      ->capture_default_str()
+      ->type_name("N");
   tool.add_input_files();
 
   return tool.run(argc, argv, [&] {
@@ -100,6 +107,7 @@ int main(int argc, char** argv) {
       options.arithmetic = arithmetic == "gmp"   ? tk::primes::Arithmetic::gmp
                            : arithmetic == "fft" ? tk::primes::Arithmetic::fft
                                                  : tk::primes::Arithmetic::automatic;
+      options.threads = proof_threads;
       if (!journal) return options;
       const std::string name = member + " start=" + start;
       options.resume_from = journal->load_checkpoint(
