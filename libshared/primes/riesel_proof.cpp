@@ -116,7 +116,7 @@ bool square_rounds(const Modulus& N, ProofState& state, std::uint64_t last, long
   if (auto weighted = WeightedSquaring::create(*N.form())) {
     const std::size_t from =
         options.split_from_length ? options.split_from_length : WeightedSquaring::split_from_length();
-    if (weighted->transform_length() >= from) weighted->use_threads(options.threads);
+    if (weighted->transform_length() >= from) weighted->use_threads(options.threads, options.paced_split);
     return run(*weighted);
   }
   if (auto fft = FftSquaring::create(*N.form())) return run(*fft);

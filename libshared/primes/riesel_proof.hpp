@@ -55,8 +55,11 @@ struct ProofOptions {
   /// Threads each squaring of the weighted transform is split over, from
   /// transform length `split_from_length` on (0: the measured crossover,
   /// WeightedSquaring::split_from_length()); the result is the same.
+  /// Paced (WeightedSquaring::use_threads): the split stops while one
+  /// thread is faster; off in tests that must exercise the split.
   unsigned threads = 1;
   std::size_t split_from_length = 0;
+  bool paced_split = true;
   /// Tests only: called with the value at each end of a Gerbicz block (Proth)
   /// or before each Jacobi check (LLR) of a proof on the FFT; may alter it
   /// (an injected error) and says so.

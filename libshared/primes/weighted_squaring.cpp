@@ -33,7 +33,11 @@ void WeightedSquaring::square_minus(unsigned long minus) {
 // Y small. Y = a*k + b then folds as -c*a + b*2^n: the value held next is
 // k*P - (H + a)*N + c*minus*2^n, which is below about (k + 1)*2^n in size.
 bool WeightedSquaring::square_and_reduce(unsigned long minus) {
-  if (threads_) return square_and_reduce_split(minus);
+  if (threads_) {
+    pace();
+    if (split_active_) return square_and_reduce_split(minus);
+    weigh_pending();  // the split left the digits unweighted
+  }
   RoundedCoefficients rounded;
   std::int64_t* z = coefficient_.data();
   const std::size_t m = low_digits_;

@@ -89,9 +89,15 @@ class WeightedSquaring {
   /// Splits each squaring over `count` threads (created here, kept until
   /// this object goes or the count changes; 1 ends the split). The digits
   /// after every squaring are the same as on one thread. False (one
-  /// thread) where FFTW squares: only our transform splits.
-  bool use_threads(unsigned count);
+  /// thread) where FFTW squares: only our transform splits. `paced`:
+  /// every few thousand squarings, 32 split and 32 on one thread are timed
+  /// (wall clock) and the faster way squares until the next trial, so a
+  /// split that other work on the cores makes slower stops costing.
+  bool use_threads(unsigned count, bool paced = false);
   unsigned threads() const;
+  /// Whether the next squaring is split (false between paced trials that
+  /// found one thread faster).
+  bool splitting() const { return threads_ && split_active_; }
   /// `wanted` where the transform length pays for a split (at least
   /// split_from_length()), else 1.
   static unsigned threads_that_pay(std::size_t length, unsigned wanted);
@@ -167,6 +173,14 @@ class WeightedSquaring {
   std::vector<RoundedCoefficients> rounded_parts_;
   CarryExchange carry_exchange_;
   bool weights_pending_ = false;
+  // Pacing (use_threads): where in the cycle of trials and stretches, and the split trial's time.
+  bool split_active_ = true;
+  bool paced_ = false;
+  std::int64_t pace_left_ = 0;  ///< squarings left in this trial or stretch
+  int pace_phase_ = 2;          ///< 0 split trial, 1 one-thread trial, 2 stretch
+  std::int64_t stretch_ = 0;
+  double pace_mark_ = 0, split_seconds_ = 0;
+  void pace();
 };
 
 }  // namespace tk::primes

@@ -12,6 +12,7 @@
 /// parallel carry (balance_digits_split); the fold and the top digits stay
 /// on one thread.
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 
 #include "primes/proof_threads.hpp"
@@ -28,7 +29,11 @@ namespace {
 
 // Below this transform length a second thread did not pay (bench_riesel's
 // split table, riesel(1)).
-constexpr std::size_t kSplitFromLength = 147456;
+constexpr std::size_t kSplitFromLength = 18432;
+
+// Paced splits: a trial of this many squarings each way, then this many
+// squarings the faster way (the trials cost a few percent at worst).
+constexpr std::int64_t kTrialSquares = 32, kStretchSquares = 2048, kLongestStretch = 65536;
 
 // Part `part` of `parts` of [0, units): the first units go to the first parts.
 std::size_t share(std::size_t units, unsigned part, unsigned parts) { return units * part / parts; }
@@ -49,8 +54,13 @@ unsigned WeightedSquaring::threads_that_pay(std::size_t length, unsigned wanted)
 
 unsigned WeightedSquaring::threads() const { return threads_ ? threads_->count() : 1; }
 
-bool WeightedSquaring::use_threads(unsigned count) {
+bool WeightedSquaring::use_threads(unsigned count, bool paced) {
   weigh_pending();
+  paced_ = paced;
+  split_active_ = true;
+  pace_left_ = 0;
+  pace_phase_ = 2;  // the first squaring starts a split trial
+  stretch_ = kStretchSquares;
   if (count <= 1 || !right_angle_) {
     threads_.reset();
     return false;
@@ -60,6 +70,29 @@ bool WeightedSquaring::use_threads(unsigned count) {
   rounded_parts_.assign(count, RoundedCoefficients{});
   carry_exchange_ = CarryExchange(count);
   return true;
+}
+
+// Trial on `split`, trial on one thread, stretch the faster way, again;
+// each lost trial doubles the stretch (the trials cost most where the
+// split loses, on a busy machine), each won one resets it.
+void WeightedSquaring::pace() {
+  if (!paced_ || pace_left_-- > 0) return;
+  const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  pace_phase_ = (pace_phase_ + 1) % 3;
+  if (pace_phase_ == 0) {  // a split trial
+    split_active_ = true;
+    pace_left_ = kTrialSquares;
+  } else if (pace_phase_ == 1) {  // a one-thread trial
+    split_seconds_ = now - pace_mark_;
+    split_active_ = false;
+    pace_left_ = kTrialSquares;
+  } else {  // a gain worth a second core, or one thread for longer
+    split_active_ = split_seconds_ < 0.95 * (now - pace_mark_);
+    stretch_ = split_active_ ? kStretchSquares : std::min(2 * stretch_, kLongestStretch);
+    pace_left_ = stretch_;
+  }
+  --pace_left_;
+  pace_mark_ = now;
 }
 
 void WeightedSquaring::weigh_pending() {

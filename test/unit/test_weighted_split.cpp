@@ -105,6 +105,35 @@ TEST(WeightedSplit, ThreadsChangeMidChain) {
   EXPECT_EQ(squarer->fallbacks(), 0u);
 }
 
+// Paced: trials and stretches switch between split and one-thread
+// squaring (whichever wins here); the digits stay the one-thread ones
+// through every switch, over two trials at least (the second stretch is
+// 2048 or, after a lost trial, 4096 squarings).
+TEST(WeightedSplit, PacedSwitchesKeepTheDigits) {
+  const SpecialForm form{16869987339975ull, 4503, -1};
+  auto one = WeightedSquaring::create(form);
+  auto paced = WeightedSquaring::create(form);
+  ASSERT_TRUE(paced->use_threads(2, true));
+  const mpz_class N = value_of(form);
+  mpz_class x = 987654321;
+  one->load(x);
+  paced->load(x);
+  int split = 0;
+  for (int round = 0; round < 5300; ++round) {
+    split += paced->splitting();
+    one->square_minus(2);
+    paced->square_minus(2);
+    x = x * x - 2;
+    mpz_mod(x.get_mpz_t(), x.get_mpz_t(), N.get_mpz_t());
+    ASSERT_EQ(paced->held_digits(), one->held_digits()) << "round " << round;
+  }
+  mpz_class got;
+  paced->store(got);
+  EXPECT_EQ(got, x);
+  EXPECT_GE(split, 2 * 32);  // at least the two split trials
+  EXPECT_EQ(paced->fallbacks(), 0u);
+}
+
 // A whole proof with its squarings split from any length, against GMP's.
 TEST(WeightedSplit, ProofsOnTwoThreadsMatchGmp) {
   ProofOptions gmp, split;
@@ -112,6 +141,7 @@ TEST(WeightedSplit, ProofsOnTwoThreadsMatchGmp) {
   split.arithmetic = Arithmetic::fft;
   split.threads = 2;
   split.split_from_length = 1;
+  split.paced_split = false;  // every square split
   for (const auto& [k, n] : {std::pair{3ull, 4423ull}, std::pair{5ull, 4001ull}, std::pair{1095ull, 2992ull}}) {
     const ProofResult a = llr_prove(k, n, LlrStart::llr, gmp), b = llr_prove(k, n, LlrStart::llr, split);
     EXPECT_EQ(b.verdict, a.verdict) << k << "*2^" << n << "-1";
