@@ -31,6 +31,16 @@ namespace {
 
 using namespace tk::primes;
 
+// The same random residue below N = k*2^n + c for every run.
+mpz_class random_residue(const SpecialForm& form) {
+  mpz_class N = form.k;
+  N <<= static_cast<mp_bitcnt_t>(form.n);
+  N += form.c;
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(23);
+  return random.get_z_range(N);
+}
+
 // Milliseconds per squaring of each squarer on the same random residue,
 // `rounds` squarings a turn, turns interleaved; medians.
 void compare_squarers(std::uint64_t k, std::uint64_t n, int rounds, int repeats) {
@@ -38,12 +48,7 @@ void compare_squarers(std::uint64_t k, std::uint64_t n, int rounds, int repeats)
   auto weighted = WeightedSquaring::create(form);
   auto padded = FftSquaring::create(form);
   if (!weighted || !padded) bench::fail("no squarer for the benchmark number");
-  mpz_class N = k;
-  N <<= static_cast<mp_bitcnt_t>(n);
-  N -= 1;
-  gmp_randclass random(gmp_randinit_default);
-  random.seed(23);
-  const mpz_class x = random.get_z_range(N);
+  const mpz_class x = random_residue(form);
   weighted->load(x);
   padded->load(x);
   bench::Results results("bench_riesel_square_" + std::to_string(n));
@@ -116,12 +121,7 @@ void compare_split(std::uint64_t n, unsigned threads, int repeats) {
     std::printf("  n = %llu: no split squaring at this size\n", static_cast<unsigned long long>(n));
     return;
   }
-  mpz_class N = form.k;
-  N <<= static_cast<mp_bitcnt_t>(n);
-  N -= 1;
-  gmp_randclass random(gmp_randinit_default);
-  random.seed(23);
-  const mpz_class x = random.get_z_range(N);
+  const mpz_class x = random_residue(form);
   one->load(x);
   split->load(x);
   const int rounds = static_cast<int>(std::max<std::uint64_t>(20, 200000000 / n));
