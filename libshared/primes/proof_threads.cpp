@@ -9,7 +9,7 @@ namespace tk::primes {
 
 namespace {
 
-// About 20-60 us of pause instructions: a partner a stage behind arrives
+// About 55 us of pause instructions here: a partner a stage behind arrives
 // within that on an idle core; one that does not is likely descheduled.
 constexpr int kSpins = 4096;
 

@@ -82,6 +82,20 @@ TEST(WeightedSplit, LargeLengthsAndThreeThreads) {
   }
 }
 
+// Digits far too large for the length: every split square fails its
+// checks (the held digits untouched) and GMP redoes it; the chain stays
+// GMP's and the split squaring goes on after each.
+TEST(WeightedSplit, FailedChecksFallBackToGmp) {
+  for (SplitTransform transform : {SplitTransform::widest, SplitTransform::avx2}) {
+    const SpecialForm form{16869987339975ull, 60000, -1};
+    auto squarer = WeightedSquaring::create_with(form, 6144, 28, transform);
+    ASSERT_NE(squarer, nullptr);
+    ASSERT_TRUE(squarer->use_threads(2));
+    squaring_test::expect_chain_matches(*squarer, form, value_of(form) / 3, 2, 5);
+    EXPECT_EQ(squarer->fallbacks(), 5u) << squarer->transform_name();
+  }
+}
+
 // Back to one thread mid-chain: the digits the split left unweighted are
 // weighted before the next square.
 TEST(WeightedSplit, ThreadsChangeMidChain) {
