@@ -109,76 +109,65 @@ struct Columns {
   std::size_t to = ~std::size_t{0};
 };
 
-// Calls butterfly(re, im, j, q) for every group of lanes of every block:
-// the group's points are at j + s*q, s < radix, and its twiddles at
-// j + (t - 1)*q.
+// Calls butterfly(re, im, j, q) for every group of lanes of every block
+// (the columns asked for): the group's points are at j + s*q, s < radix,
+// and its twiddles at j + (t - 1)*q.
 template <class V, class Butterfly>
-TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begin, std::size_t end,
-                                  Butterfly&& butterfly, Columns columns = {}) {
+TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begin, std::size_t end, Columns columns,
+                                  Butterfly&& butterfly) {
   const std::size_t q = block / static_cast<std::size_t>(radix);
+  const std::size_t to = columns.to < q ? columns.to : q;
   for (std::size_t base = begin; base < end; base += block)
-    for (std::size_t j = columns.from; j < q && j < columns.to; j += kLanes<V>) butterfly(base + j, j, q);
+    for (std::size_t j = columns.from; j < to; j += kLanes<V>) butterfly(base + j, j, q);
 }
 
 template <class V>
 TK_INLINE void forward4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(
-      4, block, begin, end,
-      [&](std::size_t at, std::size_t j, std::size_t q) {
-        const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q),
-                       d = get<V>(re, im, at + 3 * q);
-        const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
-        put(re, im, at, t0 + t2);
-        put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
-        put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
-        put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
-      },
-      columns);
+  for_each_butterfly<V>(4, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) {
+    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q),
+                   d = get<V>(re, im, at + 3 * q);
+    const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
+    put(re, im, at, t0 + t2);
+    put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
+    put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
+    put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
+  });
 }
 
 template <class V>
 TK_INLINE void inverse4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(
-      4, block, begin, end,
-      [&](std::size_t at, std::size_t j, std::size_t q) {
-        const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
-                       y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j),
-                       y3 = untwiddled(get<V>(re, im, at + 3 * q), twr, twi, 2 * q + j);
-        const Point<V> u0 = y0 + y2, u1 = y0 - y2, u2 = y1 + y3, u3 = times_i(y1 - y3);
-        put(re, im, at, u0 + u2);
-        put(re, im, at + q, u1 + u3);
-        put(re, im, at + 2 * q, u0 - u2);
-        put(re, im, at + 3 * q, u1 - u3);
-      },
-      columns);
+  for_each_butterfly<V>(4, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) {
+    const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
+                   y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j),
+                   y3 = untwiddled(get<V>(re, im, at + 3 * q), twr, twi, 2 * q + j);
+    const Point<V> u0 = y0 + y2, u1 = y0 - y2, u2 = y1 + y3, u3 = times_i(y1 - y3);
+    put(re, im, at, u0 + u2);
+    put(re, im, at + q, u1 + u3);
+    put(re, im, at + 2 * q, u0 - u2);
+    put(re, im, at + 3 * q, u1 - u3);
+  });
 }
 
 template <class V>
 TK_INLINE void forward2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(
-      2, block, begin, end,
-      [&](std::size_t at, std::size_t j, std::size_t h) {
-        const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
-        put(re, im, at, a + b);
-        put(re, im, at + h, twiddled(a - b, twr, twi, j));
-      },
-      columns);
+  for_each_butterfly<V>(2, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t h) {
+    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
+    put(re, im, at, a + b);
+    put(re, im, at + h, twiddled(a - b, twr, twi, j));
+  });
 }
 
 template <class V>
 TK_INLINE void inverse2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(
-      2, block, begin, end,
-      [&](std::size_t at, std::size_t j, std::size_t h) {
-        const Point<V> a = get<V>(re, im, at), b = untwiddled(get<V>(re, im, at + h), twr, twi, j);
-        put(re, im, at, a + b);
-        put(re, im, at + h, a - b);
-      },
-      columns);
+  for_each_butterfly<V>(2, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t h) {
+    const Point<V> a = get<V>(re, im, at), b = untwiddled(get<V>(re, im, at + h), twr, twi, j);
+    put(re, im, at, a + b);
+    put(re, im, at + h, a - b);
+  });
 }
 
 constexpr double kHalfRoot3 = 0.86602540378443864676;  // sin(2*pi/3)
@@ -188,35 +177,29 @@ template <class V>
 TK_INLINE void forward3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(
-      3, block, begin, end,
-      [&](std::size_t at, std::size_t j, std::size_t q) {
-        const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
-        const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
-        const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
-        put(re, im, at, a + sum);
-        put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
-        put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
-      },
-      columns);
+  for_each_butterfly<V>(3, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) {
+    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
+    const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
+    const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
+    put(re, im, at, a + sum);
+    put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
+    put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
+  });
 }
 
 template <class V>
 TK_INLINE void inverse3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(
-      3, block, begin, end,
-      [&](std::size_t at, std::size_t j, std::size_t q) {
-        const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
-                       y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j);
-        const Point<V> sum = y1 + y2, m = {y0.r - half * sum.r, y0.m - half * sum.m};
-        const Point<V> ihd = times_i(Point<V>{h * (y1.r - y2.r), h * (y1.m - y2.m)});
-        put(re, im, at, y0 + sum);
-        put(re, im, at + q, m + ihd);
-        put(re, im, at + 2 * q, m - ihd);
-      },
-      columns);
+  for_each_butterfly<V>(3, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) {
+    const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
+                   y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j);
+    const Point<V> sum = y1 + y2, m = {y0.r - half * sum.r, y0.m - half * sum.m};
+    const Point<V> ihd = times_i(Point<V>{h * (y1.r - y2.r), h * (y1.m - y2.m)});
+    put(re, im, at, y0 + sum);
+    put(re, im, at + q, m + ihd);
+    put(re, im, at + 2 * q, m - ihd);
+  });
 }
 
 template <class V>
