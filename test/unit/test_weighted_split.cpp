@@ -13,6 +13,7 @@
 
 #include "primes/proof_threads.hpp"
 #include "primes/riesel_proof.hpp"
+#include "primes/right_angle_transform.hpp"
 #include "primes/weighted_squaring.hpp"
 #include "squaring_chain.hpp"
 
@@ -29,7 +30,10 @@ void expect_split_matches(const SpecialForm& form, SplitTransform transform, uns
                           int rounds, gmp_randclass& random) {
   auto widest = WeightedSquaring::create(form);
   ASSERT_NE(widest, nullptr) << name_of(form);
-  const std::size_t length = widest->transform_length();
+  // create() times a few lengths and may keep one only FFTW plans (under
+  // the sanitizers FFTW, not instrumented, often wins): the next one ours plans.
+  std::size_t length = widest->transform_length();
+  while (!RightAngleSquarer::supports(length)) length += 16;
   const int bits = widest->digit_bits();
   auto one = WeightedSquaring::create_with(form, length, bits, transform);
   auto split = WeightedSquaring::create_with(form, length, bits, transform);
@@ -56,7 +60,11 @@ void expect_split_matches(const SpecialForm& form, SplitTransform transform, uns
       ASSERT_EQ(got, x) << what << " round " << round;
     }
   }
-  EXPECT_EQ(split->fallbacks(), 0u) << what;  // every square went the split way
+  // The same squares redone by GMP (none at create()'s own lengths; a
+  // rare one at the next plannable length), most went the split way.
+  EXPECT_EQ(split->fallbacks(), one->fallbacks()) << what;
+  EXPECT_LE(4 * split->fallbacks(), static_cast<std::uint64_t>(rounds)) << what;
+  if (length == widest->transform_length()) EXPECT_EQ(split->fallbacks(), 0u) << what;
   EXPECT_EQ(split->worst_roundoff(), one->worst_roundoff()) << what;
 }
 
