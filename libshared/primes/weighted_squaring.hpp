@@ -98,9 +98,6 @@ class WeightedSquaring {
   /// Whether the next squaring is split (false between paced trials that
   /// found one thread faster).
   bool splitting() const { return threads_ && split_active_; }
-  /// `wanted` where the transform length pays for a split (at least
-  /// split_from_length()), else 1.
-  static unsigned threads_that_pay(std::size_t length, unsigned wanted);
   /// The shortest transform length split: measured (bench_riesel's
   /// split table, riesel(1)), or TOOLKIT_PROOF_THREADS_FROM's.
   static std::size_t split_from_length();

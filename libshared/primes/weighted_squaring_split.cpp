@@ -48,10 +48,6 @@ std::size_t WeightedSquaring::split_from_length() {
   return from;
 }
 
-unsigned WeightedSquaring::threads_that_pay(std::size_t length, unsigned wanted) {
-  return length >= split_from_length() ? std::max(wanted, 1u) : 1u;
-}
-
 unsigned WeightedSquaring::threads() const { return threads_ ? threads_->count() : 1; }
 
 bool WeightedSquaring::use_threads(unsigned count, bool paced) {

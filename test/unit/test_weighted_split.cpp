@@ -175,14 +175,6 @@ TEST(WeightedSplit, ProofsOnTwoThreadsMatchGmp) {
   }
 }
 
-TEST(WeightedSplit, UsedOnlyFromTheCrossoverLength) {
-  const std::size_t from = WeightedSquaring::split_from_length();
-  EXPECT_GT(from, 0u);
-  EXPECT_EQ(WeightedSquaring::threads_that_pay(from - 1, 2), 1u);
-  EXPECT_EQ(WeightedSquaring::threads_that_pay(from, 2), 2u);
-  EXPECT_EQ(WeightedSquaring::threads_that_pay(from, 1), 1u);
-}
-
 // Each round, every thread writes its slot, passes the barrier, then reads
 // every other thread's: a barrier that let one through early fails this.
 TEST(ProofThreads, BarrierOrdersWritesAcrossRounds) {
