@@ -142,26 +142,34 @@ RegionIndex& RegionIndex::operator=(RegionIndex&&) noexcept = default;
 const std::vector<Segment>& RegionIndex::elements() const { return impl_->segments; }
 std::size_t RegionIndex::loop_of(std::size_t element) const { return impl_->loop_of.at(element); }
 
-RegionQuery RegionIndex::query(Point p) const {
-  const Impl& m = *impl_;
-  if (m.segments.empty()) return {kInf, p, 0};
-  const double fx = (p.x - m.ox) * m.inv_size, fy = (p.y - m.oy) * m.inv_size;
-  std::uint32_t best = 0;
-  if (!(fx >= 0 && fy >= 0 && fx < double(m.nx) && fy < double(m.ny))) {
-    double best2 = kInf;
-    m.tree_nearest(p, best2, best);
-    return m.answer(p, best2, best, m.tree_ray_parity(p));
-  }
+bool RegionIndex::Impl::locate(Point p, std::size_t& leaf, Point& leaf_centre) const {
+  const double fx = (p.x - ox) * inv_size, fy = (p.y - oy) * inv_size;
+  if (!(fx >= 0 && fy >= 0 && fx < double(nx) && fy < double(ny))) return false;
   const auto ix = static_cast<std::size_t>(fx), iy = static_cast<std::size_t>(fy);
-  const std::size_t cell = iy * m.nx + ix;
-  const std::uint32_t split = m.coarse[cell].split;
+  const std::size_t cell = iy * nx + ix;
+  const std::uint32_t split = coarse[cell].split;
   std::uint32_t sx = 0, sy = 0;
   if (split > 1) {
     sx = std::min(split - 1, static_cast<std::uint32_t>((fx - double(ix)) * split));
     sy = std::min(split - 1, static_cast<std::uint32_t>((fy - double(iy)) * split));
   }
-  const std::size_t leaf = m.coarse[cell].first_leaf + sy * split + sx;
-  const double best2 = m.leaf_nearest(leaf, m.centre(ix, iy, split, sx, sy), p, best);
+  leaf = coarse[cell].first_leaf + sy * split + sx;
+  leaf_centre = centre(ix, iy, split, sx, sy);
+  return true;
+}
+
+RegionQuery RegionIndex::query(Point p) const {
+  const Impl& m = *impl_;
+  if (m.segments.empty()) return {kInf, p, 0};
+  std::uint32_t best = 0;
+  std::size_t leaf = 0;
+  Point leaf_centre;
+  if (!m.locate(p, leaf, leaf_centre)) {
+    double best2 = kInf;
+    m.tree_nearest(p, best2, best);
+    return m.answer(p, best2, best, m.tree_ray_parity(p));
+  }
+  const double best2 = m.leaf_nearest(leaf, leaf_centre, p, best);
   const Impl::Leaf& l = m.leaves[leaf];
   bool inside = l.inside;
   for (std::uint32_t i = l.covers; i < m.leaves[leaf + 1].covers; ++i) {
@@ -170,6 +178,24 @@ RegionQuery RegionIndex::query(Point p) const {
                              c.packed & Impl::kCcw, l.ref, p, c.packed & Impl::kRefLeft, c.packed & Impl::kRefLens);
   }
   return m.answer(p, best2, best, inside);
+}
+
+RegionQuery RegionIndex::nearest(Point p, std::size_t hint) const {
+  const Impl& m = *impl_;
+  if (m.segments.empty()) return {kInf, p, 0};
+  std::uint32_t best = 0;
+  std::size_t leaf = 0;
+  Point leaf_centre;
+  if (m.locate(p, leaf, leaf_centre)) {
+    const double best2 = m.leaf_nearest(leaf, leaf_centre, p, best);  // sets best: not in answer()'s arguments
+    return m.answer(p, best2, best, false);
+  }
+  // The hint's own distance bounds the search from the start; the tie rule
+  // still names the lowest of equally near elements.
+  double best2 = kInf;
+  if (hint < m.segments.size()) best = static_cast<std::uint32_t>(hint), best2 = distance2(m.kernels[best], p);
+  m.tree_nearest(p, best2, best);
+  return m.answer(p, best2, best, false);
 }
 
 RegionQuery brute_force_query(const std::vector<Loop>& loops, Point p) {

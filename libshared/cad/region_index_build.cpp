@@ -245,7 +245,7 @@ void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint3
   }
 }
 
-RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_unique<Impl>()) {
+RegionIndex::RegionIndex(const std::vector<Loop>& loops, Layout layout) : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   for (std::size_t l = 0; l < loops.size(); ++l)
     for (const Segment& s : loops[l].segments) m.segments.push_back(s), m.loop_of.push_back(l);
@@ -268,6 +268,7 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_uniqu
   for (std::uint32_t i = 0; i < m.order.size(); ++i) m.order[i] = i;
   m.nodes.reserve(m.segments.size());
   m.build_node(0, static_cast<std::uint32_t>(m.order.size()));
+  if (layout == Layout::tree) return;  // no grid: every query uses the tree
   m.build_grid();
   if (m.nx == 0) return;
   m.stamp.assign(m.segments.size(), 0);

@@ -263,6 +263,8 @@ struct RegionIndex::Impl {
   std::vector<double> near, far2;
   std::vector<std::uint32_t> scratch;
   double leaf_nearest(std::size_t leaf, Point centre, Point p, std::uint32_t& best) const;
+  /// The leaf p falls in and its centre; false outside the grid (or without one).
+  bool locate(Point p, std::size_t& leaf, Point& leaf_centre) const;
   /// Centre of leaf (x, y) of cell (ix, iy), the same point for building and querying.
   Point centre(std::size_t ix, std::size_t iy, std::uint32_t split, std::uint32_t x, std::uint32_t y) const {
     return {ox + (double(ix) + (x + 0.5) / split) * size, oy + (double(iy) + (y + 0.5) / split) * size};
