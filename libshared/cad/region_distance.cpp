@@ -38,13 +38,14 @@
 namespace tk::cad {
 
 void RegionIndex::Impl::tree_nearest(Point p, double& best2, std::uint32_t& best) const {
-  std::uint32_t stack[128];
+  // Each node waits with its box's distance, computed once (when its parent ordered its children).
+  std::pair<std::uint32_t, double> stack[128];
   std::size_t top = 0;
-  stack[top++] = 0;
+  stack[top++] = {0, box_distance2(nodes[0].box, p)};
   while (top > 0) {
-    const std::uint32_t index = stack[--top];
+    const auto [index, box2] = stack[--top];
+    if (box2 > best2) continue;  // not >=: an equally near element may have a lower index
     const Node& node = nodes[index];
-    if (box_distance2(node.box, p) > best2) continue;  // not >=: an equally near element may have a lower index
     if (node.count > 0) {
       for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
         const double d2 = distance2(kernels[order[i]], p);
@@ -52,9 +53,14 @@ void RegionIndex::Impl::tree_nearest(Point p, double& best2, std::uint32_t& best
       }
       continue;
     }
-    const bool left_first = box_distance2(nodes[index + 1].box, p) <= box_distance2(nodes[node.right].box, p);
-    stack[top++] = left_first ? node.right : index + 1;  // the nearer child is popped first
-    stack[top++] = left_first ? index + 1 : node.right;
+    const double left2 = box_distance2(nodes[index + 1].box, p), right2 = box_distance2(nodes[node.right].box, p);
+    if (left2 <= right2) {  // the nearer child is popped first
+      if (right2 <= best2) stack[top++] = {node.right, right2};
+      stack[top++] = {index + 1, left2};
+    } else {
+      if (left2 <= best2) stack[top++] = {index + 1, left2};
+      stack[top++] = {node.right, right2};
+    }
   }
 }
 
