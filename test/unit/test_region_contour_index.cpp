@@ -18,6 +18,7 @@
 #include "cad/region_distance.hpp"
 #include "cad/region_offset.hpp"
 #include "cad/segment_geometry.hpp"
+#include "region_parts.hpp"
 #include "test_volume.hpp"
 
 namespace region_contour_index_test {  // named: the unity build joins the tests' anonymous namespaces
@@ -30,17 +31,7 @@ std::vector<Segment> closed(const std::vector<Point>& v, double bulge = 0) {
   return out;
 }
 
-/// Spikes `height` mm tall and `pitch` mm apart at the root (the tool fits between none).
-std::vector<Segment> gear(int spikes, double height, double pitch, double bulge) {
-  const double root = spikes * pitch / (2 * std::numbers::pi);
-  std::vector<Point> v;
-  for (int i = 0; i < spikes; ++i) {
-    const double a = 2 * std::numbers::pi * i / spikes, b = 2 * std::numbers::pi * (i + 0.5) / spikes;
-    v.push_back({root * std::cos(a), root * std::sin(a)});
-    v.push_back({(root + height) * std::cos(b), (root + height) * std::sin(b)});
-  }
-  return closed(v, bulge);
-}
+using parts::gear;
 
 /// Teeth 10 mm tall and 1 mm wide, `gap` mm apart, on a 5 mm bar.
 std::vector<Segment> comb(int teeth, double gap) {
@@ -94,49 +85,35 @@ void expect_same_uncut(const std::vector<Segment>& segments, double radius, Mach
             << what;
 }
 
+std::string label(double radius, MachiningSide side) {
+  return "R " + std::to_string(radius) + (side == MachiningSide::inside ? " inside" : " outside");
+}
+
 TEST(RegionContourIndex, TreeFindsTheSameUncutSpansOnGears) {
-  const int spikes = test_volume(60, 16);
-  for (const double radius : {0.5, 2.0})
-    for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
-      for (const double bulge : {0.0, 0.1}) {
-        const std::string what = "R " + std::to_string(radius) +
-                                 (side == MachiningSide::inside ? " inside" : " outside") + ", bulge " +
-                                 std::to_string(bulge);
-        const std::vector<Segment> part = gear(spikes, side == MachiningSide::inside ? 3 : 5, 1.5, bulge);
-        expect_same_uncut(part, radius, side, what);
+  for (const double bulge : {0.0, -0.15})
+    for (const double radius : {0.3, 1.0, 3.0})
+      for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside}) {
+        const double height = side == MachiningSide::inside ? 3 : 5;
+        expect_same_uncut(gear(test_volume(60, 16), height, 1.5, bulge), radius, side,
+                          label(radius, side) + ", bulge " + std::to_string(bulge));
       }
 }
 
 TEST(RegionContourIndex, TreeFindsTheSameUncutSpansOnCombs) {
-  const int teeth = test_volume(80, 20);
   for (const double gap : {0.5, 1.0, 3.0})
     for (const double radius : {0.4, 1.0})
       for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
-        expect_same_uncut(comb(teeth, gap), radius, side,
-                          "gap " + std::to_string(gap) + ", R " + std::to_string(radius) +
-                              (side == MachiningSide::inside ? " inside" : " outside"));
+        expect_same_uncut(comb(test_volume(80, 20), gap), radius, side,
+                          label(radius, side) + ", gap " + std::to_string(gap));
 }
 
 TEST(RegionContourIndex, TreeFindsTheSameUncutSpansOnRandomParts) {
   std::mt19937_64 random(2024);
-  std::uniform_real_distribution<double> unit(0, 1);
-  const int trials = test_volume(12, 4);
-  for (int trial = 0; trial < trials; ++trial) {
-    const int n = 5 + trial % 20;
-    std::vector<Point> points;
-    for (int i = 0; i < n; ++i) {
-      const double angle = 2 * std::numbers::pi * i / n, r = 20 + 15 * unit(random);
-      points.push_back({r * std::cos(angle), r * std::sin(angle)});
-    }
-    std::vector<Segment> part;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      part.push_back({points[i], points[(i + 1) % points.size()], unit(random) < 0.3 ? 0.4 * (unit(random) - 0.5) : 0});
-    const double hole = 2 + 8 * unit(random);
-    part.push_back({{hole, 0}, {-hole, 0}, 1});
-    part.push_back({{-hole, 0}, {hole, 0}, 1});
-    const double radius = 0.3 + 3 * unit(random);
-    for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
-      expect_same_uncut(part, radius, side, "trial " + std::to_string(trial));
+  for (int star = 0; star < test_volume(8, 3); ++star) {
+    const std::vector<Segment> part = parts::random_star_with_hole(random, 6 + 3 * star);
+    for (const double radius : {0.7, 2.5})
+      for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
+        expect_same_uncut(part, radius, side, "star " + std::to_string(star) + ", R " + std::to_string(radius));
   }
 }
 
