@@ -369,11 +369,12 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops, Layout layout) : impl_(
     work[part].candidates = {};
   }
   in_parts(parts, [&](std::size_t part) { m.build_refs(cell_bounds[part], cell_bounds[part + 1]); });
+  for (const Impl::Leaf& leaf : m.leaves) m.leaf_cover_first.push_back(leaf.covers);
   in_parts(parts, [&](std::size_t part) {
     const auto [begin, end] = halves(m.ny, part);
     m.build_inside(work[part], begin, end);
   });
-  m.windows = {}, m.window_elements = {}, m.cell_touches = {}, m.cell_touch_first = {};
+  m.windows = {}, m.window_elements = {}, m.cell_touches = {}, m.cell_touch_first = {}, m.leaf_cover_first = {};
 }
 
 }  // namespace tk::cad

@@ -129,7 +129,7 @@ void RegionIndex::Impl::build_inside(Workspace& w, std::size_t row_begin, std::s
                     cell_touches.begin() + cell_touch_first[cell + 1]);
   };
   const auto add_leaf = [&](std::size_t leaf) {
-    for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m)
+    for (std::uint32_t m = leaf_cover_first[leaf]; m < leaf_cover_first[leaf + 1]; ++m)
       elements.push_back(covers[m].packed & kElementBits);
   };
   // Two neighbouring squares of one size make a rectangle: the segment

@@ -224,6 +224,9 @@ struct RegionIndex::Impl {
   std::vector<CellWindow> windows;
   std::vector<std::uint32_t> window_elements;
   std::vector<std::uint32_t> cell_touches, cell_touch_first;  // while building: the elements that may touch each cell
+  // While building: each leaf's first cover, apart from its inside flag
+  // (the same word), which another thread may be setting.
+  std::vector<std::uint32_t> leaf_cover_first;
   /// One building thread's scratch and output: a mark per element,
   /// distances from a centre, refine()'s lists (each square's after its
   /// parent's), a cell's leaves' windows, and the windows' and leaves'
