@@ -38,13 +38,14 @@
 namespace tk::cad {
 
 void RegionIndex::Impl::tree_nearest(Point p, double& best2, std::uint32_t& best) const {
-  std::uint32_t stack[128];
+  // Each node waits with its box's distance, computed once (when its parent ordered its children).
+  std::pair<std::uint32_t, double> stack[128];
   std::size_t top = 0;
-  stack[top++] = 0;
+  stack[top++] = {0, box_distance2(nodes[0].box, p)};
   while (top > 0) {
-    const std::uint32_t index = stack[--top];
+    const auto [index, box2] = stack[--top];
+    if (box2 > best2) continue;  // not >=: an equally near element may have a lower index
     const Node& node = nodes[index];
-    if (box_distance2(node.box, p) > best2) continue;  // not >=: an equally near element may have a lower index
     if (node.count > 0) {
       for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
         const double d2 = distance2(kernels[order[i]], p);
@@ -52,9 +53,14 @@ void RegionIndex::Impl::tree_nearest(Point p, double& best2, std::uint32_t& best
       }
       continue;
     }
-    const bool left_first = box_distance2(nodes[index + 1].box, p) <= box_distance2(nodes[node.right].box, p);
-    stack[top++] = left_first ? node.right : index + 1;  // the nearer child is popped first
-    stack[top++] = left_first ? index + 1 : node.right;
+    const double left2 = box_distance2(nodes[index + 1].box, p), right2 = box_distance2(nodes[node.right].box, p);
+    if (left2 <= right2) {  // the nearer child is popped first
+      if (right2 <= best2) stack[top++] = {node.right, right2};
+      stack[top++] = {index + 1, left2};
+    } else {
+      if (left2 <= best2) stack[top++] = {index + 1, left2};
+      stack[top++] = {node.right, right2};
+    }
   }
 }
 
@@ -142,26 +148,34 @@ RegionIndex& RegionIndex::operator=(RegionIndex&&) noexcept = default;
 const std::vector<Segment>& RegionIndex::elements() const { return impl_->segments; }
 std::size_t RegionIndex::loop_of(std::size_t element) const { return impl_->loop_of.at(element); }
 
-RegionQuery RegionIndex::query(Point p) const {
-  const Impl& m = *impl_;
-  if (m.segments.empty()) return {kInf, p, 0};
-  const double fx = (p.x - m.ox) * m.inv_size, fy = (p.y - m.oy) * m.inv_size;
-  std::uint32_t best = 0;
-  if (!(fx >= 0 && fy >= 0 && fx < double(m.nx) && fy < double(m.ny))) {
-    double best2 = kInf;
-    m.tree_nearest(p, best2, best);
-    return m.answer(p, best2, best, m.tree_ray_parity(p));
-  }
+bool RegionIndex::Impl::locate(Point p, std::size_t& leaf, Point& leaf_centre) const {
+  const double fx = (p.x - ox) * inv_size, fy = (p.y - oy) * inv_size;
+  if (!(fx >= 0 && fy >= 0 && fx < double(nx) && fy < double(ny))) return false;
   const auto ix = static_cast<std::size_t>(fx), iy = static_cast<std::size_t>(fy);
-  const std::size_t cell = iy * m.nx + ix;
-  const std::uint32_t split = m.coarse[cell].split;
+  const std::size_t cell = iy * nx + ix;
+  const std::uint32_t split = coarse[cell].split;
   std::uint32_t sx = 0, sy = 0;
   if (split > 1) {
     sx = std::min(split - 1, static_cast<std::uint32_t>((fx - double(ix)) * split));
     sy = std::min(split - 1, static_cast<std::uint32_t>((fy - double(iy)) * split));
   }
-  const std::size_t leaf = m.coarse[cell].first_leaf + sy * split + sx;
-  const double best2 = m.leaf_nearest(leaf, m.centre(ix, iy, split, sx, sy), p, best);
+  leaf = coarse[cell].first_leaf + sy * split + sx;
+  leaf_centre = centre(ix, iy, split, sx, sy);
+  return true;
+}
+
+RegionQuery RegionIndex::query(Point p) const {
+  const Impl& m = *impl_;
+  if (m.segments.empty()) return {kInf, p, 0};
+  std::uint32_t best = 0;
+  std::size_t leaf = 0;
+  Point leaf_centre;
+  if (!m.locate(p, leaf, leaf_centre)) {
+    double best2 = kInf;
+    m.tree_nearest(p, best2, best);
+    return m.answer(p, best2, best, m.tree_ray_parity(p));
+  }
+  const double best2 = m.leaf_nearest(leaf, leaf_centre, p, best);
   const Impl::Leaf& l = m.leaves[leaf];
   bool inside = l.inside;
   for (std::uint32_t i = l.covers; i < m.leaves[leaf + 1].covers; ++i) {
@@ -170,6 +184,24 @@ RegionQuery RegionIndex::query(Point p) const {
                              c.packed & Impl::kCcw, l.ref, p, c.packed & Impl::kRefLeft, c.packed & Impl::kRefLens);
   }
   return m.answer(p, best2, best, inside);
+}
+
+RegionQuery RegionIndex::nearest(Point p, std::size_t hint) const {
+  const Impl& m = *impl_;
+  if (m.segments.empty()) return {kInf, p, 0};
+  std::uint32_t best = 0;
+  std::size_t leaf = 0;
+  Point leaf_centre;
+  if (m.locate(p, leaf, leaf_centre)) {
+    const double best2 = m.leaf_nearest(leaf, leaf_centre, p, best);  // sets best: not in answer()'s arguments
+    return m.answer(p, best2, best, false);
+  }
+  // The hint's own distance bounds the search from the start; the tie rule
+  // still names the lowest of equally near elements.
+  double best2 = kInf;
+  if (hint < m.segments.size()) best = static_cast<std::uint32_t>(hint), best2 = distance2(m.kernels[best], p);
+  m.tree_nearest(p, best2, best);
+  return m.answer(p, best2, best, false);
 }
 
 RegionQuery brute_force_query(const std::vector<Loop>& loops, Point p) {

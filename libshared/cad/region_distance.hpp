@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -21,13 +22,22 @@ struct RegionQuery {
 
 class RegionIndex {
  public:
+  /// grid: the box tree and the grid of candidate lists (fast queries, a
+  /// build of some 20 us per element); tree: the box tree alone, built in
+  /// well under a microsecond per element, for query-light uses (its
+  /// queries are several times slower unless nearest() gets a hint).
+  enum class Layout { grid, tree };
   /// The region is the even-odd union of the loops' interiors.
-  explicit RegionIndex(const std::vector<Loop>& loops);
+  explicit RegionIndex(const std::vector<Loop>& loops, Layout layout = Layout::grid);
   ~RegionIndex();
   RegionIndex(RegionIndex&&) noexcept;
   RegionIndex& operator=(RegionIndex&&) noexcept;
 
   RegionQuery query(Point p) const;
+  /// query() without the inside test: the distance is never negative; the
+  /// nearest element and point are query()'s. `hint`, an element near p
+  /// (the last answer along a path), speeds up the tree's search.
+  RegionQuery nearest(Point p, std::size_t hint = SIZE_MAX) const;
   /// Every loop's segments, loop after loop.
   const std::vector<Segment>& elements() const;
   /// Which loop an element belongs to.

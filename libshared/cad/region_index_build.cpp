@@ -3,6 +3,8 @@
 /// leaf's candidate list (pruned by quartering) and reference point.
 #include <algorithm>
 #include <cmath>
+#include <future>
+#include <thread>
 
 #include "cad/region_index_impl.hpp"
 #include "cad/segment_geometry.hpp"
@@ -148,8 +150,10 @@ void RegionIndex::Impl::build_covers() {
 /// within the nearest distance from q plus a diagonal. A square with more
 /// than one is quartered, down to kRefineDepth, so the list comes close to
 /// the elements whose Voronoi regions meet the square.
-void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::size_t end, int depth,
-                               std::vector<std::uint32_t>& out, bool pruned) {
+void RegionIndex::Impl::refine(Workspace& w, Point q, double half, std::size_t begin, std::size_t end, int depth,
+                               std::vector<std::uint32_t>& out, bool pruned) const {
+  std::vector<std::uint32_t>& scratch = w.scratch;
+  std::vector<double>& far2 = w.far2;
   // A list pruned by this very test already (the leaf's, from its cell's
   // by quarters) is taken as it is: the test would keep all of it.
   std::size_t first = begin, last = end;
@@ -170,10 +174,11 @@ void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::siz
   const bool stuck = !pruned && depth > 0 && double(last - first) > kStuckShare * double(end - begin);
   if (last - first <= 1 || depth == kRefineDepth || stuck || last - first > kRefineLimit) {
     for (std::size_t i = first; i < last; ++i)
-      if (stamp[scratch[i]] != mark) stamp[scratch[i]] = mark, out.push_back(scratch[i]);
+      if (w.stamp[scratch[i]] != w.mark) w.stamp[scratch[i]] = w.mark, out.push_back(scratch[i]);
   } else {
     for (double dy : {-0.5, 0.5})
-      for (double dx : {-0.5, 0.5}) refine({q.x + dx * half, q.y + dy * half}, half / 2, first, last, depth + 1, out);
+      for (double dx : {-0.5, 0.5})
+        refine(w, {q.x + dx * half, q.y + dy * half}, half / 2, first, last, depth + 1, out);
   }
   if (!pruned) scratch.resize(first);
 }
@@ -183,10 +188,10 @@ void RegionIndex::Impl::refine(Point q, double half, std::size_t begin, std::siz
 /// comes later, from build_inside).
 /// The lists of the leaves of a cell's block [x0, x0 + span)^2 (in
 /// leaves) into leaf_lists, each quarter's pruned from the block's.
-void RegionIndex::Impl::build_leaves(std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
-                                     const std::vector<std::uint32_t>& list) {
+void RegionIndex::Impl::build_leaves(Workspace& w, std::size_t cell, std::uint32_t x0, std::uint32_t y0,
+                                     std::uint32_t span, const std::vector<std::uint32_t>& list) {
   if (span == 1) {
-    leaf_lists[y0 * coarse[cell].split + x0] = list;
+    w.leaf_lists[y0 * coarse[cell].split + x0] = list;
     return;
   }
   const std::uint32_t half_span = span / 2;
@@ -198,12 +203,12 @@ void RegionIndex::Impl::build_leaves(std::size_t cell, std::uint32_t x0, std::ui
       const Point c{ox + double(cell % nx) * size + (x + half_span / 2.0) * step,
                     oy + double(cell / nx) * size + (y + half_span / 2.0) * step};
       quarter.clear();
-      if (!windows[cell].wide) prune(c, half_span * step / 2 * (1 + 1e-9), list.data(), list.size(), quarter);
-      build_leaves(cell, x, y, half_span, quarter);
+      if (!windows[cell].wide) prune(w, c, half_span * step / 2 * (1 + 1e-9), list.data(), list.size(), quarter);
+      build_leaves(w, cell, x, y, half_span, quarter);
     }
 }
 
-void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y,
+void RegionIndex::Impl::build_leaf(Workspace& w, std::size_t cell, std::uint32_t x, std::uint32_t y,
                                    const std::vector<std::uint32_t>& list) {
   const std::size_t leaf = coarse[cell].first_leaf + y * coarse[cell].split + x;
   const double leaf_size = size / coarse[cell].split;
@@ -212,7 +217,8 @@ void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint3
   const Point middle = centre(cell % nx, cell / nx, 1, 0, 0);
   // A wide cell's leaves: no list, and a bound on the centre's distance for a start.
   const double from_middle = std::hypot(c.x - middle.x, c.y - middle.y);
-  const std::vector<std::uint32_t> listed = leaf_window(cell, c, leaf_size / 2, list.data(), list.size());
+  const std::vector<std::uint32_t> listed = leaf_window(w, cell, c, leaf_size / 2, list.data(), list.size());
+  const std::vector<double>& near = w.near;
   const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaves[leaf].nearest = float_above(nearest);
   leaves[leaf].complete = window.wide                      ? 0
@@ -221,31 +227,77 @@ void RegionIndex::Impl::build_leaf(std::size_t cell, std::uint32_t x, std::uint3
   for (std::size_t i = 0; i < std::min(listed.size(), kMaxCandidates); ++i) {
     const Candidate entry{float_below(near[listed[i]]), listed[i]};
     if (i < kHead) leaves[leaf].head[i] = entry;
-    else candidates.push_back(entry);
+    else w.candidates.push_back(entry);
   }
-  leaves[leaf + 1].candidates = static_cast<std::uint32_t>(candidates.size());
+  leaves[leaf + 1].candidates = static_cast<std::uint32_t>(w.candidates.size());  // relative: see build_lists
+}
 
-  double clearest = -1;
-  Point& ref = leaves[leaf].ref;
-  std::uint32_t ignored = 0;
-  for (int k = 0; k < 8 && clearest < 1e-4 * leaf_size; ++k) {
-    const double fx = 0.8 * std::fmod(0.5137 + 0.6180339887 * k, 1.0) - 0.4;
-    const double fy = 0.8 * std::fmod(0.5291 + 0.7548776662 * k, 1.0) - 0.4;
-    const Point q{c.x + fx * leaf_size, c.y + fy * leaf_size};
-    // Far from the boundary a lower bound settles it without a search.
-    const double at_least = (window.nearest - std::hypot(q.x - middle.x, q.y - middle.y)) * (1 - 1e-9);
-    const double clearance = at_least >= 1e-4 * leaf_size ? at_least : std::sqrt(leaf_nearest(leaf, c, q, ignored));
-    if (clearance > clearest) clearest = clearance, ref = q;
-  }
-  for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m) {
-    const std::uint32_t e = covers[m].packed;
-    const bool left = left_of(covers[m].start, covers[m].end, ref), arc = kernels[e].side != 0;
-    covers[m].packed |= (left ? kRefLeft : 0) | (arc && in_lens(kernels[e], left, ref) ? kRefLens : 0) |
-                        (arc ? kArc : 0) | (kernels[e].side > 0 ? kCcw : 0);
+void RegionIndex::Impl::build_lists(Workspace& w, std::size_t cell_begin, std::size_t cell_end) {
+  std::vector<std::uint32_t> list;
+  for (std::size_t cell = cell_begin; cell < cell_end; ++cell) {
+    const CellWindow& window = windows[cell];
+    list.assign(window_elements.begin() + window.first, window_elements.begin() + window.first + window.count);
+    const std::uint32_t split = coarse[cell].split;
+    w.leaf_lists.resize(std::size_t(split) * split);
+    build_leaves(w, cell, 0, 0, split, list);
+    for (std::uint32_t y = 0; y < split; ++y)  // in order: each leaf's lists end the last's
+      for (std::uint32_t x = 0; x < split; ++x) build_leaf(w, cell, x, y, w.leaf_lists[y * split + x]);
   }
 }
 
-RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_unique<Impl>()) {
+/// Each leaf's reference point: the first of a few scattered points that
+/// keeps clear of the boundary (its inside flag comes later, from
+/// build_inside), and its covers' sides of it.
+void RegionIndex::Impl::build_refs(std::size_t cell_begin, std::size_t cell_end) {
+  for (std::size_t cell = cell_begin; cell < cell_end; ++cell) {
+    const std::uint32_t split = coarse[cell].split;
+    const double leaf_size = size / split;
+    const CellWindow& window = windows[cell];
+    const Point middle = centre(cell % nx, cell / nx, 1, 0, 0);
+    for (std::uint32_t y = 0; y < split; ++y)
+      for (std::uint32_t x = 0; x < split; ++x) {
+        const std::size_t leaf = coarse[cell].first_leaf + y * split + x;
+        const Point c = centre(cell % nx, cell / nx, split, x, y);
+        double clearest = -1;
+        Point& ref = leaves[leaf].ref;
+        std::uint32_t ignored = 0;
+        for (int k = 0; k < 8 && clearest < 1e-4 * leaf_size; ++k) {
+          const double fx = 0.8 * std::fmod(0.5137 + 0.6180339887 * k, 1.0) - 0.4;
+          const double fy = 0.8 * std::fmod(0.5291 + 0.7548776662 * k, 1.0) - 0.4;
+          const Point q{c.x + fx * leaf_size, c.y + fy * leaf_size};
+          // Far from the boundary a lower bound settles it without a search.
+          const double at_least = (window.nearest - std::hypot(q.x - middle.x, q.y - middle.y)) * (1 - 1e-9);
+          const double clearance =
+              at_least >= 1e-4 * leaf_size ? at_least : std::sqrt(leaf_nearest(leaf, c, q, ignored));
+          if (clearance > clearest) clearest = clearance, ref = q;
+        }
+        for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m) {
+          const std::uint32_t e = covers[m].packed;
+          const bool left = left_of(covers[m].start, covers[m].end, ref), arc = kernels[e].side != 0;
+          covers[m].packed |= (left ? kRefLeft : 0) | (arc && in_lens(kernels[e], left, ref) ? kRefLens : 0) |
+                              (arc ? kArc : 0) | (kernels[e].side > 0 ? kCcw : 0);
+        }
+      }
+  }
+}
+
+namespace {
+
+constexpr std::size_t kThreadedFrom = 2000;  // elements: below, a second thread costs more than it saves
+
+/// work(0, ...) and, where worth it, work(1, ...) on a second thread: each
+/// part's bounds from `bounds` (parts + 1 of them).
+template <class Work>
+void in_parts(std::size_t parts, Work&& work) {
+  if (parts == 1) return work(0);
+  auto second = std::async(std::launch::async, [&] { work(1); });
+  work(0);
+  second.get();
+}
+
+}  // namespace
+
+RegionIndex::RegionIndex(const std::vector<Loop>& loops, Layout layout) : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   for (std::size_t l = 0; l < loops.size(); ++l)
     for (const Segment& s : loops[l].segments) m.segments.push_back(s), m.loop_of.push_back(l);
@@ -268,25 +320,61 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops) : impl_(std::make_uniqu
   for (std::uint32_t i = 0; i < m.order.size(); ++i) m.order[i] = i;
   m.nodes.reserve(m.segments.size());
   m.build_node(0, static_cast<std::uint32_t>(m.order.size()));
+  if (layout == Layout::tree) return;  // no grid: every query uses the tree
   m.build_grid();
   if (m.nx == 0) return;
-  m.stamp.assign(m.segments.size(), 0);
-  m.near.resize(m.segments.size());
-  m.build_windows();
-  m.build_covers();
-  std::vector<std::uint32_t> list;
-  for (std::size_t cell = 0; cell < m.coarse.size(); ++cell) {
-    const Impl::CellWindow& w = m.windows[cell];
-    list.assign(m.window_elements.begin() + w.first, m.window_elements.begin() + w.first + w.count);
-    const std::uint32_t split = m.coarse[cell].split;
-    m.leaf_lists.resize(std::size_t(split) * split);
-    m.build_leaves(cell, 0, 0, split, list);
-    for (std::uint32_t y = 0; y < split; ++y)  // in order: each leaf's lists end the last's
-      for (std::uint32_t x = 0; x < split; ++x) m.build_leaf(cell, x, y, m.leaf_lists[y * split + x]);
+  // Two threads where there is enough work (the machine has two cores):
+  // each part builds its windows and lists into its own workspace, joined
+  // in order, so the index is the same whatever the parts.
+  const std::size_t parts = m.segments.size() >= kThreadedFrom && std::thread::hardware_concurrency() > 1 ? 2 : 1;
+  std::vector<Impl::Workspace> work;
+  for (std::size_t i = 0; i < parts; ++i) work.emplace_back(m.segments.size());
+  const auto halves = [&](std::size_t count, std::size_t part) {
+    return std::pair{count * part / parts, count * (part + 1) / parts};
+  };
+  m.windows.assign(m.nx * m.ny, Impl::CellWindow{});
+  const std::size_t block_rows = (m.ny + kBlockCells - 1) / kBlockCells;
+  in_parts(parts, [&](std::size_t part) {
+    const auto [begin, end] = halves(block_rows, part);
+    m.build_windows(work[part], begin, end);
+  });
+  for (std::size_t part = 0; part < parts; ++part) {  // the windows' offsets made absolute
+    const auto base = static_cast<std::uint32_t>(m.window_elements.size());
+    const auto [begin, end] = halves(block_rows, part);
+    for (std::size_t cell = begin * kBlockCells * m.nx; cell < std::min(m.ny, end * kBlockCells) * m.nx; ++cell)
+      m.windows[cell].first += base;
+    m.window_elements.insert(m.window_elements.end(), work[part].window_elements.begin(),
+                             work[part].window_elements.end());
+    work[part].window_elements = {};
   }
-  m.build_inside();
-  m.stamp = {}, m.near = {}, m.far2 = {}, m.scratch = {}, m.windows = {}, m.window_elements = {}, m.cell_touches = {},
-  m.cell_touch_first = {}, m.leaf_lists = {};
+  m.build_covers();
+  // The lists, split where half the leaves are.
+  std::vector<std::size_t> cell_bounds{0};
+  if (parts == 2) {
+    const std::size_t leaf_count = m.leaves.size() - 1;
+    std::size_t cell = 0;
+    while (cell < m.coarse.size() && m.coarse[cell].first_leaf < leaf_count / 2) ++cell;
+    cell_bounds.push_back(cell);
+  }
+  cell_bounds.push_back(m.coarse.size());
+  in_parts(parts, [&](std::size_t part) { m.build_lists(work[part], cell_bounds[part], cell_bounds[part + 1]); });
+  for (std::size_t part = 0; part < parts; ++part) {  // each part's list ends made absolute
+    const auto base = static_cast<std::uint32_t>(m.candidates.size());
+    const auto first_leaf_of = [&](std::size_t cell) {
+      return cell < m.coarse.size() ? std::size_t(m.coarse[cell].first_leaf) : m.leaves.size() - 1;
+    };
+    const std::size_t first_leaf = first_leaf_of(cell_bounds[part]), end_leaf = first_leaf_of(cell_bounds[part + 1]);
+    for (std::size_t leaf = first_leaf; leaf < end_leaf; ++leaf) m.leaves[leaf + 1].candidates += base;
+    m.candidates.insert(m.candidates.end(), work[part].candidates.begin(), work[part].candidates.end());
+    work[part].candidates = {};
+  }
+  in_parts(parts, [&](std::size_t part) { m.build_refs(cell_bounds[part], cell_bounds[part + 1]); });
+  for (const Impl::Leaf& leaf : m.leaves) m.leaf_cover_first.push_back(leaf.covers);
+  in_parts(parts, [&](std::size_t part) {
+    const auto [begin, end] = halves(m.ny, part);
+    m.build_inside(work[part], begin, end);
+  });
+  m.windows = {}, m.window_elements = {}, m.cell_touches = {}, m.cell_touch_first = {}, m.leaf_cover_first = {};
 }
 
 }  // namespace tk::cad

@@ -19,12 +19,9 @@
 
 namespace tk::cad {
 
-namespace {
-constexpr std::size_t kBlockCells = 8;  // side of the blocks first asked of the tree, in cells
-}
-
-double RegionIndex::Impl::prune(Point c, double half, const std::uint32_t* in, std::size_t count,
-                                std::vector<std::uint32_t>& out) {
+double RegionIndex::Impl::prune(Workspace& w, Point c, double half, const std::uint32_t* in, std::size_t count,
+                                std::vector<std::uint32_t>& out) const {
+  std::vector<double>& far2 = w.far2;
   if (far2.size() < count) far2.resize(count);
   double nearest2 = kInf;
   for (std::size_t i = 0; i < count; ++i) nearest2 = std::min(nearest2, far2[i] = distance2(kernels[in[i]], c));
@@ -36,13 +33,14 @@ double RegionIndex::Impl::prune(Point c, double half, const std::uint32_t* in, s
 }
 
 /// Cells [x0, x0 + span) x [y0, y0 + span) from `list`, their block's window.
-void RegionIndex::Impl::split_block(std::size_t x0, std::size_t y0, std::size_t span, std::vector<std::uint32_t>& list,
-                                    double nearest) {
+void RegionIndex::Impl::split_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span,
+                                    std::vector<std::uint32_t>& list, double nearest) {
   if (span == 1) {
-    CellWindow& w = windows[y0 * nx + x0];
-    w.first = static_cast<std::uint32_t>(window_elements.size()), w.count = static_cast<std::uint32_t>(list.size());
-    w.nearest = nearest;
-    window_elements.insert(window_elements.end(), list.begin(), list.end());
+    CellWindow& window = windows[y0 * nx + x0];
+    window.first = static_cast<std::uint32_t>(w.window_elements.size());
+    window.count = static_cast<std::uint32_t>(list.size());
+    window.nearest = nearest;
+    w.window_elements.insert(w.window_elements.end(), list.begin(), list.end());
     return;
   }
   const std::size_t half_span = span / 2;
@@ -53,13 +51,13 @@ void RegionIndex::Impl::split_block(std::size_t x0, std::size_t y0, std::size_t 
       if (x >= nx || y >= ny) continue;
       quarter.clear();
       const Point c{ox + (double(x) + double(half_span) / 2) * size, oy + (double(y) + double(half_span) / 2) * size};
-      const double d = prune(c, double(half_span) * size / 2, list.data(), list.size(), quarter);
-      split_block(x, y, half_span, quarter, d);
+      const double d = prune(w, c, double(half_span) * size / 2, list.data(), list.size(), quarter);
+      split_block(w, x, y, half_span, quarter, d);
     }
 }
 
 /// The block's window from the tree; quartered when too wide.
-void RegionIndex::Impl::ask_block(std::size_t x0, std::size_t y0, std::size_t span) {
+void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span) {
   if (x0 >= nx || y0 >= ny) return;
   const Point c{ox + (double(x0) + double(span) / 2) * size, oy + (double(y0) + double(span) / 2) * size};
   double best2 = kInf;
@@ -72,34 +70,34 @@ void RegionIndex::Impl::ask_block(std::size_t x0, std::size_t y0, std::size_t sp
     std::vector<std::uint32_t> list;
     list.reserve(found.size());
     for (const auto& entry : found) list.push_back(entry.second);
-    split_block(x0, y0, span, list, nearest);
+    split_block(w, x0, y0, span, list, nearest);
   } else if (span > 1) {
     const std::size_t half_span = span / 2;
     for (std::size_t dy = 0; dy < 2; ++dy)
-      for (std::size_t dx = 0; dx < 2; ++dx) ask_block(x0 + dx * half_span, y0 + dy * half_span, half_span);
+      for (std::size_t dx = 0; dx < 2; ++dx) ask_block(w, x0 + dx * half_span, y0 + dy * half_span, half_span);
   } else {
-    CellWindow& w = windows[y0 * nx + x0];
-    w.wide = true, w.nearest = nearest;
+    CellWindow& window = windows[y0 * nx + x0];
+    window.wide = true, window.nearest = nearest;
   }
 }
 
-void RegionIndex::Impl::build_windows() {
-  windows.assign(nx * ny, CellWindow{});
-  for (std::size_t y = 0; y < ny; y += kBlockCells)
-    for (std::size_t x = 0; x < nx; x += kBlockCells) ask_block(x, y, kBlockCells);
+void RegionIndex::Impl::build_windows(Workspace& w, std::size_t row_begin, std::size_t row_end) {
+  for (std::size_t y = row_begin * kBlockCells; y < std::min(ny, row_end * kBlockCells); y += kBlockCells)
+    for (std::size_t x = 0; x < nx; x += kBlockCells) ask_block(w, x, y, kBlockCells);
 }
 
 /// The elements of `window` (the list of the square round c of half side
 /// `half` inside `cell`, pruned at that square) that may be nearest to a
 /// point of it, refined by quartering; sorted by distance from c (left in
 /// near[]). Empty for a wide cell.
-std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(std::size_t cell, Point c, double half,
-                                                          const std::uint32_t* window, std::size_t count) {
+std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(Workspace& w, std::size_t cell, Point c, double half,
+                                                          const std::uint32_t* window, std::size_t count) const {
   std::vector<std::uint32_t> listed;
   if (windows[cell].wide) return listed;
-  scratch.assign(window, window + count);
-  ++mark;
-  refine(c, half, 0, scratch.size(), 0, listed, true);
+  w.scratch.assign(window, window + count);
+  ++w.mark;
+  refine(w, c, half, 0, w.scratch.size(), 0, listed, true);
+  std::vector<double>& near = w.near;
   for (std::uint32_t e : listed) near[e] = std::sqrt(distance2(kernels[e], c));
   std::sort(listed.begin(), listed.end(), [&](std::uint32_t a, std::uint32_t b) {
     return std::pair{near[a], a} < std::pair{near[b], b};
@@ -109,12 +107,13 @@ std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(std::size_t cell, Poin
 
 /// Crossing parity of the segment from `from` to `to` with `elements`
 /// (each counted once): the query's test, with `from` as the reference point.
-bool RegionIndex::Impl::chain_parity(Point from, Point to, const std::vector<std::uint32_t>& elements) {
+bool RegionIndex::Impl::chain_parity(Workspace& w, Point from, Point to,
+                                     const std::vector<std::uint32_t>& elements) const {
   bool odd = false;
-  ++mark;
+  ++w.mark;
   for (const std::uint32_t e : elements) {
-    if (stamp[e] == mark) continue;
-    stamp[e] = mark;
+    if (w.stamp[e] == w.mark) continue;
+    w.stamp[e] = w.mark;
     const Kernel& k = kernels[e];
     const Point a = ends[2 * e], b = ends[2 * e + 1];
     const bool arc = k.side != 0, from_left = left_of(a, b, from);
@@ -123,22 +122,22 @@ bool RegionIndex::Impl::chain_parity(Point from, Point to, const std::vector<std
   return odd;
 }
 
-void RegionIndex::Impl::build_inside() {
+void RegionIndex::Impl::build_inside(Workspace& w, std::size_t row_begin, std::size_t row_end) {
   std::vector<std::uint32_t> elements;
   const auto add_cell = [&](std::size_t cell) {
     elements.insert(elements.end(), cell_touches.begin() + cell_touch_first[cell],
                     cell_touches.begin() + cell_touch_first[cell + 1]);
   };
   const auto add_leaf = [&](std::size_t leaf) {
-    for (std::uint32_t m = leaves[leaf].covers; m < leaves[leaf + 1].covers; ++m)
+    for (std::uint32_t m = leaf_cover_first[leaf]; m < leaf_cover_first[leaf + 1]; ++m)
       elements.push_back(covers[m].packed & kElementBits);
   };
   // Two neighbouring squares of one size make a rectangle: the segment
   // joining points of theirs stays in it, so only their elements can cross it.
   const auto follow = [&](std::size_t from, std::size_t to) {
-    leaves[to].inside = leaves[from].inside != chain_parity(leaves[from].ref, leaves[to].ref, elements);
+    leaves[to].inside = leaves[from].inside != chain_parity(w, leaves[from].ref, leaves[to].ref, elements);
   };
-  for (std::size_t y = 0; y < ny; ++y)
+  for (std::size_t y = row_begin; y < row_end; ++y)
     for (std::size_t x = 0; x < nx; ++x) {
       const std::size_t cell = y * nx + x, first = coarse[cell].first_leaf, split = coarse[cell].split;
       if (x == 0) {

@@ -26,6 +26,7 @@ constexpr std::size_t kMaxCandidates = 64;  // elements listed per leaf, at most
 constexpr int kRefineDepth = 2;             // quarterings of a leaf while pruning its list
 constexpr std::size_t kRefineLimit = 1024;  // longer lists are not pruned
 constexpr double kStuckShare = 0.75;        // a quarter keeping more of its parent's list is not quartered again
+constexpr std::size_t kBlockCells = 8;      // side of the blocks first asked of the tree, in cells
 constexpr std::size_t kWideWindow = 4 * kMaxCandidates;  // a cell with a longer window keeps no lists
 
 /// An element prepared for queries. Arcs live in their chord frame as in
@@ -222,13 +223,29 @@ struct RegionIndex::Impl {
   };
   std::vector<CellWindow> windows;
   std::vector<std::uint32_t> window_elements;
-  std::vector<std::vector<std::uint32_t>> leaf_lists;         // while building: a cell's leaves' windows
   std::vector<std::uint32_t> cell_touches, cell_touch_first;  // while building: the elements that may touch each cell
+  // While building: each leaf's first cover, apart from its inside flag
+  // (the same word), which another thread may be setting.
+  std::vector<std::uint32_t> leaf_cover_first;
+  /// One building thread's scratch and output: a mark per element,
+  /// distances from a centre, refine()'s lists (each square's after its
+  /// parent's), a cell's leaves' windows, and the windows' and leaves'
+  /// lists it built, offsets relative to its own (joined in order later).
+  struct Workspace {
+    std::vector<std::uint32_t> stamp;
+    std::uint32_t mark = 0;
+    std::vector<double> near, far2;
+    std::vector<std::uint32_t> scratch;
+    std::vector<std::vector<std::uint32_t>> leaf_lists;
+    std::vector<std::uint32_t> window_elements;
+    std::vector<Candidate> candidates;
+    explicit Workspace(std::size_t elements) : stamp(elements, 0), near(elements) {}
+  };
   /// Each leaf's inside flag: the ray test at the first leaf of each row of
   /// cells, then from leaf to leaf by the crossings of the segments joining
   /// their reference points (as a query does from the reference point).
-  void build_inside();
-  bool chain_parity(Point from, Point to, const std::vector<std::uint32_t>& elements);
+  void build_inside(Workspace& w, std::size_t row_begin, std::size_t row_end);
+  bool chain_parity(Workspace& w, Point from, Point to, const std::vector<std::uint32_t>& elements) const;
   double ox = 0, oy = 0, size = 1, inv_size = 1;
   double rounding = 0;  // beyond the rounding of any computed distance (as the boxes' padding)
   std::size_t nx = 0, ny = 0;
@@ -241,28 +258,32 @@ struct RegionIndex::Impl {
                    std::size_t cap = SIZE_MAX) const;
   bool tree_ray_parity(Point p) const;
   void build_grid();
-  void build_windows();
-  void ask_block(std::size_t x0, std::size_t y0, std::size_t span);
-  void split_block(std::size_t x0, std::size_t y0, std::size_t span, std::vector<std::uint32_t>& list, double nearest);
+  /// The windows of the blocks of cells in rows [row_begin, row_end) of blocks.
+  void build_windows(Workspace& w, std::size_t row_begin, std::size_t row_end);
+  void ask_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span);
+  void split_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span, std::vector<std::uint32_t>& list,
+                   double nearest);
   /// Appends to `out` the elements of `in` that may be nearest to a point of
   /// the square round c of half side `half`; returns c's distance to the nearest of them.
-  double prune(Point c, double half, const std::uint32_t* in, std::size_t count, std::vector<std::uint32_t>& out);
-  std::vector<std::uint32_t> leaf_window(std::size_t cell, Point c, double half, const std::uint32_t* window,
-                                         std::size_t count);
+  double prune(Workspace& w, Point c, double half, const std::uint32_t* in, std::size_t count,
+               std::vector<std::uint32_t>& out) const;
+  std::vector<std::uint32_t> leaf_window(Workspace& w, std::size_t cell, Point c, double half,
+                                         const std::uint32_t* window, std::size_t count) const;
   void build_covers();
-  void build_leaves(std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
+  /// The lists of cells [cell_begin, cell_end)'s leaves, into w.candidates.
+  void build_lists(Workspace& w, std::size_t cell_begin, std::size_t cell_end);
+  void build_leaves(Workspace& w, std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
                     const std::vector<std::uint32_t>& list);
-  void build_leaf(std::size_t cell, std::uint32_t x, std::uint32_t y, const std::vector<std::uint32_t>& list);
-  void refine(Point q, double half, std::size_t begin, std::size_t end, int depth, std::vector<std::uint32_t>& out,
-              bool pruned = false);
+  void build_leaf(Workspace& w, std::size_t cell, std::uint32_t x, std::uint32_t y,
+                  const std::vector<std::uint32_t>& list);
+  /// Reference points of cells [cell_begin, cell_end)'s leaves (their lists complete).
+  void build_refs(std::size_t cell_begin, std::size_t cell_end);
+  void refine(Workspace& w, Point q, double half, std::size_t begin, std::size_t end, int depth,
+              std::vector<std::uint32_t>& out, bool pruned = false) const;
 
-  // Scratch while building: a mark per element, distances from a centre,
-  // and refine()'s lists, each square's after its parent's.
-  std::vector<std::uint32_t> stamp;
-  std::uint32_t mark = 0;
-  std::vector<double> near, far2;
-  std::vector<std::uint32_t> scratch;
   double leaf_nearest(std::size_t leaf, Point centre, Point p, std::uint32_t& best) const;
+  /// The leaf p falls in and its centre; false outside the grid (or without one).
+  bool locate(Point p, std::size_t& leaf, Point& leaf_centre) const;
   /// Centre of leaf (x, y) of cell (ix, iy), the same point for building and querying.
   Point centre(std::size_t ix, std::size_t iy, std::uint32_t split, std::uint32_t x, std::uint32_t y) const {
     return {ox + (double(ix) + (x + 0.5) / split) * size, oy + (double(iy) + (y + 0.5) / split) * size};

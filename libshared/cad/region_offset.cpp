@@ -74,7 +74,7 @@ class DrawingFeatures {
 
   /// The feature nearest to p; the offset curve through p at distance R.
   Feature classify(Point p) const {
-    const RegionQuery q = index_.query(p);
+    const RegionQuery q = index_.nearest(p);
     const Segment& s = index_.elements()[q.element];
     double t = 0;
     nearest_point(s, p, &t);
@@ -262,7 +262,7 @@ std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const Drawi
     s.end = loop.segments[(i + 1) % loop.segments.size()].start;  // exactly closed
     exact_length += segment_length(s);
     for (double t : {0.25, 0.5, 0.75}) {
-      const double d = std::abs(index.query(point_at(s, t)).distance);
+      const double d = index.nearest(point_at(s, t)).distance;
       if (std::abs(d - radius) > std::max(10 * tolerance, 1e-9 * radius)) return std::nullopt;
     }
   }
@@ -284,8 +284,12 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
   std::vector<UncutSpan> spans;
   if (radius <= 0) return spans;
   const double step = std::max(radius / 8, 10 * options.tolerance);
+  std::size_t hint = SIZE_MAX;  // the last nearest element: each point asked is near the last
   auto gap_at = [&](const Segment& s, double t) {
-    return contour ? std::abs(contour->query(point_at(s, t)).distance) - radius : radius + 1;
+    if (!contour) return radius + 1;
+    const RegionQuery q = contour->nearest(point_at(s, t), hint);
+    hint = q.element;
+    return q.distance - radius;
   };
   for (const Loop& loop : drawn) {
     const std::size_t first_of_loop = spans.size();
@@ -458,7 +462,12 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     clock.add(&OffsetStageTimes::exact_recovery);
   }
   // One index over the contour serves the uncut search here and the barrier points of guard_query.
-  if (options.tool_radius > 0 && !result.loops.empty()) result.contour = std::make_unique<RegionIndex>(result.loops);
+  // The uncut search's queries follow the drawing, each hinted by the last
+  // answer: the tree alone serves them faster than a grid pays for itself
+  // (10,000-element gear: 1.5 + 251 ms against 234 + 172 ms).
+  if (options.tool_radius > 0 && !result.loops.empty())
+    result.contour = std::make_unique<RegionIndex>(
+        result.loops, options.contour_grid ? RegionIndex::Layout::grid : RegionIndex::Layout::tree);
   clock.add(&OffsetStageTimes::contour_index);
   result.uncut = find_uncut(drawn, result.contour.get(), options.tool_radius, options);
   clock.add(&OffsetStageTimes::uncut);

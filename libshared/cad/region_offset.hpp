@@ -47,6 +47,11 @@ struct OffsetOptions {
   /// it the polygons stay as they were (a loop may start at another
   /// element with coarse joins, never with other ones).
   std::size_t coarse_joins_from = 5000;
+  /// The contour's index with its grid (RegionIndex::Layout::grid: fast
+  /// queries, for guard_query's barrier points over many positions) or
+  /// the box tree alone (enough for the uncut search, whose queries follow
+  /// the drawing, each hinted by the last). Either answers the same.
+  bool contour_grid = false;
 };
 
 /// The vertices the offset's polygon stage implies: chords within
@@ -73,7 +78,8 @@ struct RegionOffset {
   std::vector<UncutSpan> uncut;
   std::size_t polygon_loops = 0;  ///< loops left as Clipper's polygon
   /// An index over `loops` (for guard_query's barrier points), built for
-  /// the uncut search; null when the tool radius is 0 or there is no loop.
+  /// the uncut search (with a grid or not: OffsetOptions::contour_grid);
+  /// null when the tool radius is 0 or there is no loop.
   std::unique_ptr<RegionIndex> contour;
 };
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -21,11 +22,36 @@ struct Comparison {
   std::size_t points = 0, sign_checked = 0;
 };
 
+/// The same answer without the sign (nearest()): the element and point
+/// exactly, the distance exactly query()'s magnitude.
+inline void expect_same_nearest(const RegionQuery& unsigned_answer, const RegionQuery& signed_answer, Point p,
+                                const char* what) {
+  EXPECT_EQ(unsigned_answer.element, signed_answer.element) << what << ' ' << p.x << ' ' << p.y;
+  EXPECT_EQ(unsigned_answer.distance, std::abs(signed_answer.distance)) << what << ' ' << p.x << ' ' << p.y;
+  EXPECT_EQ(unsigned_answer.nearest.x, signed_answer.nearest.x) << what << ' ' << p.x << ' ' << p.y;
+  EXPECT_EQ(unsigned_answer.nearest.y, signed_answer.nearest.y) << what << ' ' << p.x << ' ' << p.y;
+}
+
+/// Both layouts' query() against brute force; nearest() against query(),
+/// on the tree with hints: the last answer's element (as along a path)
+/// and, every third point, an unrelated one.
 inline Comparison compare(const std::vector<Loop>& loops, const std::vector<Point>& points) {
-  const RegionIndex index(loops);
+  const RegionIndex index(loops), tree(loops, RegionIndex::Layout::tree);
+  std::size_t elements = 0, hint = SIZE_MAX;
+  for (const Loop& l : loops) elements += l.segments.size();
   Comparison result;
   for (const Point& p : points) {
-    const RegionQuery fast = index.query(p), slow = brute_force_query(loops, p);
+    const RegionQuery slow = brute_force_query(loops, p), by_tree = tree.query(p);
+    EXPECT_EQ(by_tree.element, slow.element) << "tree " << p.x << ' ' << p.y;
+    EXPECT_EQ(by_tree.nearest.x, slow.nearest.x) << "tree " << p.x << ' ' << p.y;
+    EXPECT_EQ(by_tree.nearest.y, slow.nearest.y) << "tree " << p.x << ' ' << p.y;
+    if (std::abs(slow.distance) >= 1e-9) EXPECT_EQ(by_tree.inside(), slow.inside()) << "tree " << p.x << ' ' << p.y;
+    if (result.points % 3 == 2 && elements > 0) hint = (result.points * 7919) % elements;
+    const RegionQuery hinted = tree.nearest(p, hint);
+    expect_same_nearest(hinted, by_tree, p, "hinted");
+    hint = hinted.element;
+    const RegionQuery fast = index.query(p);
+    expect_same_nearest(index.nearest(p), fast, p, "grid nearest");
     const double tolerance = 1e-12 * std::max(1.0, std::abs(slow.distance));
     ++result.points;
     EXPECT_NEAR(std::abs(fast.distance), std::abs(slow.distance), tolerance) << p.x << ' ' << p.y;

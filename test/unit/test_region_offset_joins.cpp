@@ -17,6 +17,7 @@
 #include "cad/loops.hpp"
 #include "cad/region_distance.hpp"
 #include "cad/region_offset.hpp"
+#include "region_parts.hpp"
 #include "test_volume.hpp"
 
 namespace {
@@ -70,20 +71,7 @@ void expect_same_offset(const std::vector<Segment>& segments, double radius, Mac
   }
 }
 
-/// A closed polyline of `spikes` spikes `height` mm tall, `pitch` mm apart
-/// at the root, with each spike's flanks bulged by `bulge` (0: lines).
-std::vector<Segment> gear(int spikes, double height, double pitch, double bulge) {
-  const double root = spikes * pitch / (2 * std::numbers::pi);
-  std::vector<Point> v;
-  for (int i = 0; i < spikes; ++i) {
-    const double a = 2 * std::numbers::pi * i / spikes, b = 2 * std::numbers::pi * (i + 0.5) / spikes;
-    v.push_back({root * std::cos(a), root * std::sin(a)});
-    v.push_back({(root + height) * std::cos(b), (root + height) * std::sin(b)});
-  }
-  std::vector<Segment> out;
-  for (std::size_t i = 0; i < v.size(); ++i) out.push_back({v[i], v[(i + 1) % v.size()], bulge});
-  return out;
-}
+using parts::gear;
 
 TEST(RegionOffsetJoins, CoarseJoinsRecoverTheSameGear) {
   const int spikes = test_volume(48, 16);
@@ -103,18 +91,7 @@ TEST(RegionOffsetJoins, CoarseJoinsRecoverTheSameRandomParts) {
   const int trials = test_volume(12, 4);
   for (int trial = 0; trial < trials; ++trial) {
     // A random star with arcs, and a random circle inside it (a hole).
-    const int n = 5 + trial % 20;
-    std::vector<Point> points;
-    for (int i = 0; i < n; ++i) {
-      const double angle = 2 * std::numbers::pi * i / n, r = 20 + 15 * unit(random);
-      points.push_back({r * std::cos(angle), r * std::sin(angle)});
-    }
-    std::vector<Segment> part;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      part.push_back({points[i], points[(i + 1) % points.size()], unit(random) < 0.3 ? 0.4 * (unit(random) - 0.5) : 0});
-    const double hole = 2 + 8 * unit(random);
-    part.push_back({{hole, 0}, {-hole, 0}, 1});
-    part.push_back({{-hole, 0}, {hole, 0}, 1});
+    const std::vector<Segment> part = parts::random_star_with_hole(random, 5 + trial % 20);
     const double radius = 0.3 + 3 * unit(random);
     for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
       expect_same_offset(part, radius, side, "trial " + std::to_string(trial));

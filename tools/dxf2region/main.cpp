@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
       ->type_name("N");
 
   return tool.run(argc, argv, [&] {
-    const bool checking = check->count() > 0;
+    const bool checking = s.checking = check->count() > 0;
     if (checking + toolpath + simulate > 1)
       throw tk::UsageError("--check, --toolpath and --simulate exclude each other");
     if (s.summary && !checking) throw tk::UsageError("--summary goes with --check");

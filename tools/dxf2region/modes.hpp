@@ -28,6 +28,7 @@ struct Settings {
   std::uint32_t strokes = 1000;
   std::uint64_t seed = 1;
   bool summary = false;
+  bool checking = false;  ///< --check given: the contour's index gets its grid (many barrier points)
   std::vector<double> speeds, tolerances;
 
   tk::cad::MachiningSide machining() const {

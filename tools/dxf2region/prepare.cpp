@@ -70,6 +70,7 @@ Job prepare(const Settings& s, tk::io::RecordWriter& writer, bool region_mode, t
   offset_options.tool_radius = s.tool_radius;
   offset_options.side = s.machining();
   offset_options.tolerance = s.offset_tolerance;
+  offset_options.contour_grid = s.checking;
   try {
     job.region = tk::cad::offset_region(found.loops, *job.part.index, offset_options);
   } catch (const tk::UsageError&) {
