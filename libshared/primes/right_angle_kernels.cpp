@@ -266,6 +266,43 @@ struct LanePasses {
     store(re, r);
     store(im, m);
   }
+
+  // The same lane passes split up, for the forward, pointwise product and
+  // inverse the caller sequences itself.
+  TK_INLINE void forward(double* re, double* im) const {
+    V r = load<V>(re), m = load<V>(im);
+#pragma GCC unroll 4
+    for (std::size_t pass = 0; pass < kPasses; ++pass) {
+      r = permuted(r, partner[pass]) + sign[pass] * r;
+      m = permuted(m, partner[pass]) + sign[pass] * m;
+      if (pass + 1 < kPasses) times(r, m, twr[pass], twi[pass]);
+    }
+    store(re, r);
+    store(im, m);
+  }
+
+  TK_INLINE void inverse(double* re, double* im) const {
+    V r = load<V>(re), m = load<V>(im);
+#pragma GCC unroll 4
+    for (std::size_t undone = 0; undone < kPasses; ++undone) {
+      const std::size_t pass = kPasses - 1 - undone;
+      if (pass + 1 < kPasses) times_conjugate(r, m, twr[pass], twi[pass]);
+      r = permuted(r, partner[pass]) + sign[pass] * r;
+      m = permuted(m, partner[pass]) + sign[pass] * m;
+    }
+    store(re, r);
+    store(im, m);
+  }
+
+  // forward, times the stored spectrum (sre + i*sim) point by point, inverse
+  TK_INLINE void multiply(double* re, double* im, const double* sre, const double* sim) const {
+    forward(re, im);
+    V r = load<V>(re), m = load<V>(im);
+    times(r, m, load<V>(sre), load<V>(sim));
+    store(re, r);
+    store(im, m);
+    inverse(re, im);
+  }
 };
 
 // The passes forward, the pointwise square, the passes back, on a.re/a.im.
@@ -281,6 +318,57 @@ TK_INLINE void passes(const Arrays& a) {
     for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
   }
   for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
+}
+
+// The forward passes alone: a.re/a.im become the spectrum, in the order
+// the inverse passes take.
+template <class V, class I>
+TK_INLINE void forward_passes(const Arrays& a) {
+  const std::size_t n = a.half;
+  for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
+  const LanePasses<V, I> lanes;
+  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
+    const std::size_t end = begin + a.inner_block;
+    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.forward(a.re + j, a.im + j);
+  }
+}
+
+template <class V, class I>
+TK_INLINE void inverse_passes(const Arrays& a) {
+  const std::size_t n = a.half;
+  const LanePasses<V, I> lanes;
+  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
+    const std::size_t end = begin + a.inner_block;
+    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.inverse(a.re + j, a.im + j);
+    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
+  }
+  for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
+}
+
+// passes() with a product by a stored spectrum in place of the square.
+template <class V, class I>
+TK_INLINE void multiply_passes(const Arrays& a, const double* sre, const double* sim) {
+  const std::size_t n = a.half;
+  for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
+  const LanePasses<V, I> lanes;
+  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
+    const std::size_t end = begin + a.inner_block;
+    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.multiply(a.re + j, a.im + j, sre + j, sim + j);
+    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
+  }
+  for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
+}
+
+template <class V>
+TK_INLINE void pointwise(const Arrays& a, const double* sre, const double* sim) {
+  for (std::size_t j = 0; j < a.half; j += kLanes<V>) {
+    V r = load<V>(a.re + j), m = load<V>(a.im + j);
+    times(r, m, load<V>(sre + j), load<V>(sim + j));
+    store(a.re + j, r);
+    store(a.im + j, m);
+  }
 }
 
 template <class V, class I>
@@ -316,5 +404,25 @@ __attribute__((target("avx2,fma"))) void square_avx2(const Arrays& arrays, const
 __attribute__((target("avx512f,avx512dq,fma"))) void passes_avx512(const Arrays& arrays) { passes<v8d, v8i>(arrays); }
 
 __attribute__((target("avx2,fma"))) void passes_avx2(const Arrays& arrays) { passes<v4d, v4i>(arrays); }
+
+#define TK_AVX512 __attribute__((target("avx512f,avx512dq,fma")))
+#define TK_AVX2 __attribute__((target("avx2,fma")))
+
+TK_AVX512 void forward_avx512(const Arrays& arrays) { forward_passes<v8d, v8i>(arrays); }
+TK_AVX2 void forward_avx2(const Arrays& arrays) { forward_passes<v4d, v4i>(arrays); }
+TK_AVX512 void inverse_avx512(const Arrays& arrays) { inverse_passes<v8d, v8i>(arrays); }
+TK_AVX2 void inverse_avx2(const Arrays& arrays) { inverse_passes<v4d, v4i>(arrays); }
+TK_AVX512 void multiply_avx512(const Arrays& arrays, const double* re, const double* im) {
+  multiply_passes<v8d, v8i>(arrays, re, im);
+}
+TK_AVX2 void multiply_avx2(const Arrays& arrays, const double* re, const double* im) {
+  multiply_passes<v4d, v4i>(arrays, re, im);
+}
+TK_AVX512 void pointwise_avx512(const Arrays& arrays, const double* re, const double* im) {
+  pointwise<v8d>(arrays, re, im);
+}
+TK_AVX2 void pointwise_avx2(const Arrays& arrays, const double* re, const double* im) {
+  pointwise<v4d>(arrays, re, im);
+}
 
 }  // namespace tk::primes::right_angle

@@ -1,0 +1,38 @@
+/// @file transform_tests.hpp
+/// @brief The long loops of the base-2 strong test and of the strong Lucas
+/// test for a generic N, on TransformModulus (squares in the spectrum,
+/// Barrett's reduction by transforms). A step whose checks fail is done
+/// again by the caller's GMP step, so the results are GMP's.
+#pragma once
+
+#include <gmpxx.h>
+
+#include <atomic>
+#include <functional>
+#include <optional>
+
+namespace tk::primes {
+
+/// Below this many bits GMP's own powering and division are as fast
+/// (bench: bench_generic and the crossover measured in bench/bench_transform_reduction.cpp).
+constexpr std::size_t kTransformFromBits = 2000;
+
+/// Whether the transform loops take N (generic, size in range).
+bool transform_loops_take(const mpz_class& N);
+
+/// 2^exponent mod N (exponent >= 1), or nothing where N has no transform
+/// or `cancel` was set.
+std::optional<mpz_class> transform_power_of_two(const mpz_class& N, const mpz_class& exponent,
+                                                const std::atomic<bool>* cancel = nullptr);
+
+/// U_k and U_(k+1) mod N for P = 1 and Q = q, k >= 1, by the doubling
+/// steps below from U_1 = U_2 = 1, or nothing where N has no transform for
+/// this q or `cancel` was set. `gmp_step(u, u_next, odd)` takes (U_j,
+/// U_(j+1)) to (U_2j, U_(2j+1)), or to (U_(2j+1), U_(2j+2)) when odd, with
+/// GMP: it redoes a step whose checks failed.
+using LucasStep = std::function<void(mpz_class& u, mpz_class& u_next, bool odd)>;
+std::optional<std::pair<mpz_class, mpz_class>> transform_lucas_u(const mpz_class& N, long q, const mpz_class& k,
+                                                                 const LucasStep& gmp_step,
+                                                                 const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace tk::primes
