@@ -17,10 +17,10 @@ bool cancelled(const std::atomic<bool>* cancel) { return cancel && cancel->load(
 void power_mod(mpz_class& result, const mpz_class& base, const mpz_class& exponent, const Modulus& N,
                const std::atomic<bool>* cancel = nullptr) {
   if (!N.form()) {
-    // No special form: base 2 on our transforms from kTransformFromBits
+    // No special form: base 2 on our transforms from kTransformPowerFromBits
     // on; else GMP's own Montgomery powering, which beats squaring plus
     // GMP's division (measured 345 vs 390 ms at 10,000 bits).
-    if (base == 2 && mpz_sgn(exponent.get_mpz_t()) > 0)
+    if (base == 2 && mpz_sgn(exponent.get_mpz_t()) > 0 && transform_power_pays(N.value()))
       if (auto power = transform_power_of_two(N.value(), exponent, cancel)) {
         result = *power;
         return;
@@ -59,41 +59,33 @@ void power_mod(mpz_class& result, const mpz_class& base, const mpz_class& expone
   }
 }
 
-// One doubling step of the Lucas U chain (P = 1, Q = q): (U_j, U_(j+1))
-// to (U_2j, U_2j+1), or to (U_2j+1, U_2j+2) when `odd`; the residues stay
-// in (-N, N), squares do not care about the sign.
-class LucasDoubler {
- public:
-  LucasDoubler(const Modulus& N, long q, std::size_t room) : n_(N), q_(q) {
-    for (mpz_class* z : {&high_, &low_, &square_, &diff_}) mpz_realloc2(z->get_mpz_t(), room);
-  }
-  void operator()(mpz_class& u, mpz_class& u_next, bool odd) {
-    mpz_mul(high_.get_mpz_t(), u_next.get_mpz_t(), u_next.get_mpz_t());  // U_k+1^2
-    mpz_sub(diff_.get_mpz_t(), u_next.get_mpz_t(), u.get_mpz_t());
-    mpz_mul(low_.get_mpz_t(), diff_.get_mpz_t(), diff_.get_mpz_t());  // (U_k+1 - U_k)^2
-    mpz_mul(square_.get_mpz_t(), u.get_mpz_t(), u.get_mpz_t());       // U_k^2
-    mpz_sub(low_.get_mpz_t(), high_.get_mpz_t(), low_.get_mpz_t());   // U_2k
-    if (q_ >= 0) mpz_submul_ui(high_.get_mpz_t(), square_.get_mpz_t(), static_cast<unsigned long>(q_));
-    else mpz_addmul_ui(high_.get_mpz_t(), square_.get_mpz_t(), static_cast<unsigned long>(-q_));  // U_2k+1
-    if (odd) {
-      // k -> 2k+1: (U_2k+1, U_2k+2 = U_2k+1 - Q U_2k)
-      mpz_mul_si(square_.get_mpz_t(), low_.get_mpz_t(), q_);
-      mpz_sub(low_.get_mpz_t(), high_.get_mpz_t(), square_.get_mpz_t());
-      n_.remainder(u.get_mpz_t(), high_.get_mpz_t());
-      n_.remainder(u_next.get_mpz_t(), low_.get_mpz_t());
-    } else {
-      n_.remainder(u.get_mpz_t(), low_.get_mpz_t());
-      n_.remainder(u_next.get_mpz_t(), high_.get_mpz_t());
-    }
-  }
-
- private:
-  const Modulus& n_;
-  long q_;
-  mpz_class high_, low_, square_, diff_;
-};
-
 }  // namespace
+
+LucasDoubler::LucasDoubler(const Modulus& N, long q) : n_(N), q_(q) {
+  const std::size_t room = 2 * N.bits() + 128;
+  for (mpz_class* z : {&high_, &low_, &square_, &diff_}) mpz_realloc2(z->get_mpz_t(), room);
+}
+
+// Residues stay in (-N, N): squares do not care about the sign.
+void LucasDoubler::operator()(mpz_class& u, mpz_class& u_next, bool odd) {
+  mpz_mul(high_.get_mpz_t(), u_next.get_mpz_t(), u_next.get_mpz_t());  // U_k+1^2
+  mpz_sub(diff_.get_mpz_t(), u_next.get_mpz_t(), u.get_mpz_t());
+  mpz_mul(low_.get_mpz_t(), diff_.get_mpz_t(), diff_.get_mpz_t());  // (U_k+1 - U_k)^2
+  mpz_mul(square_.get_mpz_t(), u.get_mpz_t(), u.get_mpz_t());       // U_k^2
+  mpz_sub(low_.get_mpz_t(), high_.get_mpz_t(), low_.get_mpz_t());   // U_2k
+  if (q_ >= 0) mpz_submul_ui(high_.get_mpz_t(), square_.get_mpz_t(), static_cast<unsigned long>(q_));
+  else mpz_addmul_ui(high_.get_mpz_t(), square_.get_mpz_t(), static_cast<unsigned long>(-q_));  // U_2k+1
+  if (odd) {
+    // k -> 2k+1: (U_2k+1, U_2k+2 = U_2k+1 - Q U_2k)
+    mpz_mul_si(square_.get_mpz_t(), low_.get_mpz_t(), q_);
+    mpz_sub(low_.get_mpz_t(), high_.get_mpz_t(), square_.get_mpz_t());
+    n_.remainder(u.get_mpz_t(), high_.get_mpz_t());
+    n_.remainder(u_next.get_mpz_t(), low_.get_mpz_t());
+  } else {
+    n_.remainder(u.get_mpz_t(), low_.get_mpz_t());
+    n_.remainder(u_next.get_mpz_t(), high_.get_mpz_t());
+  }
+}
 
 bool fermat_probable_prime(const Modulus& N, const mpz_class& base) {
   mpz_class b = base % N.value();
@@ -165,13 +157,14 @@ bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d_param, mpz_cla
 
   const std::size_t room = 2 * N.bits() + 128;
   const long q = static_cast<long>((1 - d_param) / 4);
-  LucasDoubler doubler(N, q, room);
+  LucasDoubler doubler(N, q);
   mpz_class u = 1, u_next = 1;  // U_1 = U_2 = 1 for P = 1
   for (mpz_class* z : {&u, &u_next}) mpz_realloc2(z->get_mpz_t(), room);
   const auto on_transform =
-      N.form() ? std::nullopt
-               : transform_lucas_u(
-                     n, q, k, [&](mpz_class& a, mpz_class& b, bool odd) { doubler(a, b, odd); }, cancel);
+      N.form() || !transform_lucas_pays(n)
+          ? std::nullopt
+          : transform_lucas_u(
+                n, q, k, [&](mpz_class& a, mpz_class& b, bool odd) { doubler(a, b, odd); }, cancel);
   if (on_transform) {
     u = on_transform->first;
     u_next = on_transform->second;

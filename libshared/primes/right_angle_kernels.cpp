@@ -326,7 +326,7 @@ template <class V, class I>
 TK_INLINE void forward_passes(const Arrays& a) {
   const std::size_t n = a.half;
   for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
-  const LanePasses<V, I> lanes;
+  static const LanePasses<V, I> lanes;  // its cosines once: these transforms are short
   for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
     const std::size_t end = begin + a.inner_block;
     for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
@@ -337,7 +337,7 @@ TK_INLINE void forward_passes(const Arrays& a) {
 template <class V, class I>
 TK_INLINE void inverse_passes(const Arrays& a) {
   const std::size_t n = a.half;
-  const LanePasses<V, I> lanes;
+  static const LanePasses<V, I> lanes;  // its cosines once: these transforms are short
   for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
     const std::size_t end = begin + a.inner_block;
     for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.inverse(a.re + j, a.im + j);
@@ -351,7 +351,7 @@ template <class V, class I>
 TK_INLINE void multiply_passes(const Arrays& a, const double* sre, const double* sim) {
   const std::size_t n = a.half;
   for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
-  const LanePasses<V, I> lanes;
+  static const LanePasses<V, I> lanes;  // its cosines once: these transforms are short
   for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
     const std::size_t end = begin + a.inner_block;
     for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);

@@ -14,6 +14,8 @@ namespace tk::primes::digits18 {
 namespace {
 
 constexpr double kInverseRadix = 1.0 / kRadix;
+constexpr std::int64_t kRadixInt = std::int64_t{1} << kBits;
+constexpr std::int64_t kDigitMask = kRadixInt - 1;
 
 struct Pieces {
   double low, middle, high;
@@ -39,7 +41,7 @@ bool from_mpz(const mpz_class& x, double* digits, std::size_t count) {
     std::uint64_t chunk = limb < limbs ? mpz_getlimbn(z, static_cast<mp_size_t>(limb)) >> shift : 0;
     if (shift > 64 - kBits && limb + 1 < limbs)
       chunk |= mpz_getlimbn(z, static_cast<mp_size_t>(limb + 1)) << (64 - shift);
-    std::int64_t digit = static_cast<std::int64_t>(chunk & static_cast<std::uint64_t>(kCheckModulus)) + carry;
+    std::int64_t digit = static_cast<std::int64_t>(chunk & static_cast<std::uint64_t>(kDigitMask)) + carry;
     carry = digit >= (std::int64_t{1} << (kBits - 1)) ? 1 : 0;
     digit -= carry << kBits;
     digits[j] = sign * static_cast<double>(digit);
@@ -53,7 +55,7 @@ mpz_class to_mpz(const double* digits, std::size_t count) {
   std::int64_t carry = 0;
   for (std::size_t j = 0; j < count; ++j) {
     const std::int64_t v = static_cast<std::int64_t>(digits[j]) + carry;
-    const std::int64_t digit = v & kCheckModulus;
+    const std::int64_t digit = v & kDigitMask;
     carry = (v - digit) / (std::int64_t{1} << kBits);
     const std::size_t bit = j * kBits, limb = bit / 64, shift = bit % 64;
     bits[limb] |= static_cast<std::uint64_t>(digit) << shift;
@@ -67,22 +69,29 @@ mpz_class to_mpz(const double* digits, std::size_t count) {
 
 TK_DIGIT_CLONES std::int64_t residue(const double* digits, std::size_t count) {
   // Exact in any order (integers, fewer than 2^30 / 2^18 digits in any
-  // use): eight sums the compiler may keep in one vector.
+  // use): eight sums the compiler may keep in one vector; the even ones
+  // gather the even places.
   double sums[8] = {};
   std::size_t j = 0;
   for (; j + 8 <= count; j += 8)
     for (std::size_t l = 0; l < 8; ++l) sums[l] += digits[j + l];
-  for (; j < count; ++j) sums[0] += digits[j];
-  double sum = 0;
-  for (double s : sums) sum += s;
-  if (!(std::fabs(sum) < 4e18)) return -1;  // NaN or infinite digits: no residue matches
-  const std::int64_t r = static_cast<std::int64_t>(sum) % kCheckModulus;
+  for (; j < count; ++j) sums[j % 2] += digits[j];
+  const double even = sums[0] + sums[2] + sums[4] + sums[6], odd = sums[1] + sums[3] + sums[5] + sums[7];
+  if (!(std::fabs(even) < 1e15 && std::fabs(odd) < 1e15)) return -1;  // NaN or infinite digits: no residue matches
+  const std::int64_t r =
+      (static_cast<std::int64_t>(even) % kCheckModulus + (static_cast<std::int64_t>(odd) % kCheckModulus) * kRadixInt) %
+      kCheckModulus;
   return r < 0 ? r + kCheckModulus : r;
 }
 
 std::int64_t residue_product(std::int64_t a, std::int64_t b) {
-  const std::int64_t r = ((a % kCheckModulus) * (b % kCheckModulus)) % kCheckModulus;
-  return r < 0 ? r + kCheckModulus : r;
+  auto normal = [](std::int64_t x) {
+    return static_cast<std::uint64_t>((x % kCheckModulus + kCheckModulus) % kCheckModulus);
+  };
+  const std::uint64_t m = static_cast<std::uint64_t>(kCheckModulus), x = normal(a), y = normal(b);
+  // x * y below 2^72: by the halves of y, each product below 2^54
+  const std::uint64_t high = (x * (y >> kBits)) % m, low = (x * (y & static_cast<std::uint64_t>(kDigitMask))) % m;
+  return static_cast<std::int64_t>(((high << kBits) % m + low) % m);
 }
 
 TK_DIGIT_CLONES void carry_acyclic(const double* y, std::size_t count, double* out, double* scratch) {

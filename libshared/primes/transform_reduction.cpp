@@ -56,27 +56,27 @@ TK_DIGIT_CLONES void weight_into(RightAngleSquarer& t, const double* x, std::siz
 }
 
 // Coefficients [from, to) of the product the transform holds after its
-// inverse, times `scale`, rounded into y[0..to - from); returns the worst
-// distance from an integer.
-TK_DIGIT_CLONES double unweight_into(RightAngleSquarer& t, double scale, std::size_t from, std::size_t to, double* y) {
+// inverse, times `scale`, rounded into y[0..to - from); whether each was
+// within kMaxRoundoff of its integer.
+// (A flag, not the worst error, so the loops vectorise: a max of doubles
+// is a serial chain to the compiler without -ffast-math.)
+TK_DIGIT_CLONES bool unweight_into(RightAngleSquarer& t, double scale, std::size_t from, std::size_t to, double* y) {
   const std::size_t h = t.points();
   const double *re = t.real(), *im = t.imaginary(), *c = t.theta_cos(), *s = t.theta_sin();
-  double worst = 0;
+  int bad = 0;
   // coefficient k < h is Re of the point k, k >= h Im of the point k - h
   for (std::size_t k = from; k < std::min(to, h); ++k) {
     const double v = scale * (re[k] * c[k] + im[k] * s[k]), rounded = d18::nearest(v);
-    const double error = std::fabs(v - rounded);
-    worst = error > worst ? error : worst;
+    bad |= !(std::fabs(v - rounded) <= kMaxRoundoff);  // NaN too
     y[k - from] = rounded;
   }
   for (std::size_t k = std::max(from, h); k < to; ++k) {
     const std::size_t j = k - h;
     const double v = scale * (im[j] * c[j] - re[j] * s[j]), rounded = d18::nearest(v);
-    const double error = std::fabs(v - rounded);
-    worst = error > worst ? error : worst;
+    bad |= !(std::fabs(v - rounded) <= kMaxRoundoff);
     y[k - from] = rounded;
   }
-  return worst;  // a NaN is missed here, but not by the digit sums (digits18::residue)
+  return bad == 0;
 }
 
 // x's digits folded modulo 2^(18 length) + 1 into out[0..length), added to it.
@@ -184,11 +184,11 @@ bool TransformModulus::reduce(std::int64_t check, double factor, Residue& out) {
   RightAngleSquarer& t = *square_;
   t.inverse_in_place();
   const std::size_t length = t.length();
-  const double worst = unweight_into(t, factor / static_cast<double>(t.points()), 0, length, coefficients_.data());
+  const bool rounded = unweight_into(t, factor / static_cast<double>(t.points()), 0, length, coefficients_.data());
   d18::carry_acyclic(coefficients_.data(), length, product_.data(), scratch_.data());
   const std::size_t count = length + 3;
   const bool ok =
-      worst <= kMaxRoundoff &&
+      rounded &&
       d18::residue(product_.data(), count) == d18::residue_product(check, static_cast<std::int64_t>(factor)) &&
       reduce_digits(product_.data(), count, out);
   if (!ok) ++failures_;
@@ -217,14 +217,14 @@ bool TransformModulus::reduce_digits(const double* a, std::size_t count, Residue
   fold_into(quotient, quotient_count, lr, folded_.data());
   weight_into(r, folded_.data(), lr);
   r.multiply_in_place(n_re_.data(), n_im_.data());
-  const double worst = unweight_into(r, 1.0 / static_cast<double>(r.points()), 0, lr, coefficients_.data());
-  if (!(worst <= kMaxRoundoff)) return false;
+  if (!unweight_into(r, 1.0 / static_cast<double>(r.points()), 0, lr, coefficients_.data())) return false;
   std::fill(folded_.begin(), folded_.begin() + static_cast<std::ptrdiff_t>(lr), 0.0);
   fold_into(a, count, lr, folded_.data());
   for (std::size_t j = 0; j < lr; ++j) folded_[j] -= coefficients_[j];
   d18::carry_negacyclic(folded_.data(), lr, remainder_digits_.data(), scratch_.data());
   // r = a - q N exactly when its digits past a residue's are zero and its
-  // value modulo 2^18 - 1 is a's less q's times N's (2^K + 1 is 2 there).
+  // value modulo 2^36 - 1 is a's less q's times N's (2^K + 1 is 2 there,
+  // K being a multiple of 36).
   for (std::size_t j = digits_; j < lr; ++j)
     if (remainder_digits_[j] != 0.0) return false;
   const std::int64_t expected = d18::residue_product(

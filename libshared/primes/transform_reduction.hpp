@@ -12,7 +12,7 @@
 /// [0, N): residues are kept so, and reduced exactly at the end.
 ///
 /// Every step is checked: each rounded coefficient lies within 0.25 of an
-/// integer, the digit sums modulo 2^18 - 1 agree with the factors' (which
+/// integer, the values modulo 2^36 - 1 agree with the factors' (which
 /// catches any wrong coefficient, carry or quotient product), and a
 /// remainder fits the digits a residue has. A step that fails reports it,
 /// and the caller does it again with GMP: a failed check never gives a
@@ -34,7 +34,7 @@ class TransformModulus {
  public:
   /// A residue: value() = sum of digits[j] * 2^(18 j), |value| < 2.2 N,
   /// congruent to what it stands for modulo N; `check` is its value mod
-  /// 2^18 - 1.
+  /// 2^36 - 1 (transform_digits.hpp).
   struct Residue {
     std::vector<double> digits;
     std::int64_t check = 0;
@@ -69,7 +69,7 @@ class TransformModulus {
   double* product_real() { return square_->real(); }
   double* product_imaginary() { return square_->imaginary(); }
   /// out := (factor times the product held, reduced), given its value
-  /// modulo 2^18 - 1 (`check`) from its factors'. False when a check failed
+  /// modulo 2^36 - 1 (`check`) from its factors'. False when a check failed
   /// (out is then undefined): the caller redoes the step otherwise.
   bool reduce(std::int64_t check, double factor, Residue& out);
 

@@ -25,11 +25,9 @@ std::int64_t mod_check(std::int64_t x) { return digits18::residue_product(x, 1);
 
 }  // namespace
 
-bool transform_loops_take(const mpz_class& N) { return mpz_sizeinbase(N.get_mpz_t(), 2) >= kTransformFromBits; }
-
 std::optional<mpz_class> transform_power_of_two(const mpz_class& N, const mpz_class& exponent,
                                                 const std::atomic<bool>* cancel) {
-  if (!transform_loops_take(N) || exponent < 1) return std::nullopt;
+  if (exponent < 1) return std::nullopt;
   auto modulus = TransformModulus::create(N, 2);  // x^2 * 2
   if (!modulus) return std::nullopt;
   TransformModulus& m = *modulus;
@@ -66,7 +64,7 @@ std::optional<mpz_class> transform_power_of_two(const mpz_class& N, const mpz_cl
 std::optional<std::pair<mpz_class, mpz_class>> transform_lucas_u(const mpz_class& N, long q, const mpz_class& k,
                                                                  const LucasStep& gmp_step,
                                                                  const std::atomic<bool>* cancel) {
-  if (!transform_loops_take(N) || k < 1 || q > (1L << 20) || q < -(1L << 20)) return std::nullopt;
+  if (k < 1 || q > (1L << 20) || q < -(1L << 20)) return std::nullopt;
   const std::uint64_t spread = std::max<std::uint64_t>(3, 1 + 4 * static_cast<std::uint64_t>(q < 0 ? -q : q));
   auto modulus = TransformModulus::create(N, spread);
   if (!modulus) return std::nullopt;

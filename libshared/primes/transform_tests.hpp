@@ -13,15 +13,24 @@
 
 namespace tk::primes {
 
-/// Below this many bits GMP's own powering and division are as fast
-/// (bench: bench_generic and the crossover measured in bench/bench_transform_reduction.cpp).
-constexpr std::size_t kTransformFromBits = 2000;
+/// From these sizes on (bits of N) the transform loops beat GMP's
+/// (bench_transform_reduction, 2026-11-27, a loaded 2-core host: base 2
+/// against mpz_powm 0.67-1.00 at 2,000-3,000 bits, 1.33 at 5,000; the
+/// Lucas chain against GMP's squarings and divisions 1.05 at 2,000 bits,
+/// 0.69-0.88 below).
+constexpr std::size_t kTransformPowerFromBits = 3000;
+constexpr std::size_t kTransformLucasFromBits = 2000;
 
-/// Whether the transform loops take N (generic, size in range).
-bool transform_loops_take(const mpz_class& N);
+/// Whether the transform loops are worth taking for N, by its size.
+inline bool transform_power_pays(const mpz_class& N) {
+  return mpz_sizeinbase(N.get_mpz_t(), 2) >= kTransformPowerFromBits;
+}
+inline bool transform_lucas_pays(const mpz_class& N) {
+  return mpz_sizeinbase(N.get_mpz_t(), 2) >= kTransformLucasFromBits;
+}
 
 /// 2^exponent mod N (exponent >= 1), or nothing where N has no transform
-/// or `cancel` was set.
+/// (too small or large, or no AVX2 with FMA) or `cancel` was set.
 std::optional<mpz_class> transform_power_of_two(const mpz_class& N, const mpz_class& exponent,
                                                 const std::atomic<bool>* cancel = nullptr);
 
