@@ -72,7 +72,7 @@ void per_operation(gmp_randclass& random) {
 
 void crossover(gmp_randclass& random) {
   std::printf("bits   base 2: powm  ours  ratio | Lucas: GMP  ours  ratio   (us per bit, medians of 5)\n");
-  for (unsigned long bits : {1000ul, 1500ul, 1800ul, 2000ul, 2500ul, 3000ul, 5000ul, 10000ul, 30000ul, 100000ul}) {
+  for (unsigned long bits : {1000ul, 2000ul, 2500ul, 3000ul, 3500ul, 4000ul, 5000ul, 10000ul, 30000ul, 100000ul}) {
     const mpz_class N = random_odd(bits, random);
     const unsigned long exponent_bits = bits > 20000 ? 2000 : 4000;
     mpz_class e = random.get_z_bits(exponent_bits) | 1;

@@ -14,12 +14,13 @@
 namespace tk::primes {
 
 /// From these sizes on (bits of N) the transform loops beat GMP's
-/// (bench_transform_reduction, 2026-11-27, a loaded 2-core host: base 2
-/// against mpz_powm 0.67-1.00 at 2,000-3,000 bits, 1.33 at 5,000; the
-/// Lucas chain against GMP's squarings and divisions 1.05 at 2,000 bits,
-/// 0.69-0.88 below).
-constexpr std::size_t kTransformPowerFromBits = 3000;
-constexpr std::size_t kTransformLucasFromBits = 2000;
+/// (bench_transform_reduction, 2026-11-27, runs on a loaded 2-core host,
+/// ratios GMP time / ours: base 2 against mpz_powm 0.63-0.67 at 2,000
+/// bits, 0.64-1.09 at 3,000, 0.78-0.94 at 3,500, 1.27-1.75 at 4,000; the
+/// Lucas chain against GMP's squarings and divisions 0.98-1.05 at 2,000,
+/// 0.94-0.95 at 2,500, 0.98-1.31 at 3,000, 1.29-1.60 at 4,000).
+constexpr std::size_t kTransformPowerFromBits = 4000;
+constexpr std::size_t kTransformLucasFromBits = 3000;
 
 /// Whether the transform loops are worth taking for N, by its size.
 inline bool transform_power_pays(const mpz_class& N) {
