@@ -245,17 +245,16 @@ struct LanePasses {
       }
   }
 
-  TK_INLINE void square(double* re, double* im) const {
-    V r = load<V>(re), m = load<V>(im);
+  // The passes forward and back on one vector of points in registers.
+  TK_INLINE void forward_in(V& r, V& m) const {
 #pragma GCC unroll 4
     for (std::size_t pass = 0; pass < kPasses; ++pass) {
       r = permuted(r, partner[pass]) + sign[pass] * r;
       m = permuted(m, partner[pass]) + sign[pass] * m;
       if (pass + 1 < kPasses) times(r, m, twr[pass], twi[pass]);  // the last pass's twiddles are all 1
     }
-    const V t = r * r - m * m;
-    m = (r + r) * m;
-    r = t;
+  }
+  TK_INLINE void inverse_in(V& r, V& m) const {
 #pragma GCC unroll 4
     for (std::size_t undone = 0; undone < kPasses; ++undone) {
       const std::size_t pass = kPasses - 1 - undone;
@@ -263,6 +262,15 @@ struct LanePasses {
       r = permuted(r, partner[pass]) + sign[pass] * r;
       m = permuted(m, partner[pass]) + sign[pass] * m;
     }
+  }
+
+  TK_INLINE void square(double* re, double* im) const {
+    V r = load<V>(re), m = load<V>(im);
+    forward_in(r, m);
+    const V t = r * r - m * m;
+    m = (r + r) * m;
+    r = t;
+    inverse_in(r, m);
     store(re, r);
     store(im, m);
   }
@@ -271,94 +279,95 @@ struct LanePasses {
   // inverse the caller sequences itself.
   TK_INLINE void forward(double* re, double* im) const {
     V r = load<V>(re), m = load<V>(im);
-#pragma GCC unroll 4
-    for (std::size_t pass = 0; pass < kPasses; ++pass) {
-      r = permuted(r, partner[pass]) + sign[pass] * r;
-      m = permuted(m, partner[pass]) + sign[pass] * m;
-      if (pass + 1 < kPasses) times(r, m, twr[pass], twi[pass]);
-    }
+    forward_in(r, m);
     store(re, r);
     store(im, m);
   }
-
   TK_INLINE void inverse(double* re, double* im) const {
     V r = load<V>(re), m = load<V>(im);
-#pragma GCC unroll 4
-    for (std::size_t undone = 0; undone < kPasses; ++undone) {
-      const std::size_t pass = kPasses - 1 - undone;
-      if (pass + 1 < kPasses) times_conjugate(r, m, twr[pass], twi[pass]);
-      r = permuted(r, partner[pass]) + sign[pass] * r;
-      m = permuted(m, partner[pass]) + sign[pass] * m;
-    }
+    inverse_in(r, m);
     store(re, r);
     store(im, m);
   }
 
   // forward, times the stored spectrum (sre + i*sim) point by point, inverse
   TK_INLINE void multiply(double* re, double* im, const double* sre, const double* sim) const {
-    forward(re, im);
     V r = load<V>(re), m = load<V>(im);
+    forward_in(r, m);
     times(r, m, load<V>(sre), load<V>(sim));
+    inverse_in(r, m);
     store(re, r);
     store(im, m);
-    inverse(re, im);
   }
 };
+
+// The passes over the whole array (blocks above an L1's worth), forward
+// or back.
+template <class V>
+TK_INLINE void outer_passes(const Arrays& a, bool forward) {
+  if (forward)
+    for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, a.half);
+  else
+    for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, a.half);
+}
+
+// For each L1-sized block: its inner passes forward (when `forward`), then
+// in_block(begin, end), then its inner passes back (when `back`).
+template <class V, class InBlock>
+TK_INLINE void by_blocks(const Arrays& a, bool forward, bool back, InBlock&& in_block) {
+  for (std::size_t begin = 0; begin < a.half; begin += a.inner_block) {
+    const std::size_t end = begin + a.inner_block;
+    if (forward)
+      for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+    in_block(begin, end);
+    if (back)
+      for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
+  }
+}
 
 // The passes forward, the pointwise square, the passes back, on a.re/a.im.
 template <class V, class I>
 TK_INLINE void passes(const Arrays& a) {
-  const std::size_t n = a.half;
-  for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
+  outer_passes<V>(a, true);
   const LanePasses<V, I> lanes;
-  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
-    const std::size_t end = begin + a.inner_block;
-    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+  by_blocks<V>(a, true, true, [&](std::size_t begin, std::size_t end) {
     for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.square(a.re + j, a.im + j);
-    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
-  }
-  for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
+  });
+  outer_passes<V>(a, false);
 }
+
+// The split passes below compute the lanes' twiddles once (static): the
+// transforms they serve are short, and called several times a bit.
 
 // The forward passes alone: a.re/a.im become the spectrum, in the order
 // the inverse passes take.
 template <class V, class I>
 TK_INLINE void forward_passes(const Arrays& a) {
-  const std::size_t n = a.half;
-  for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
-  static const LanePasses<V, I> lanes;  // its cosines once: these transforms are short
-  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
-    const std::size_t end = begin + a.inner_block;
-    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+  outer_passes<V>(a, true);
+  static const LanePasses<V, I> lanes;
+  by_blocks<V>(a, true, false, [&](std::size_t begin, std::size_t end) {
     for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.forward(a.re + j, a.im + j);
-  }
+  });
 }
 
 template <class V, class I>
 TK_INLINE void inverse_passes(const Arrays& a) {
-  const std::size_t n = a.half;
-  static const LanePasses<V, I> lanes;  // its cosines once: these transforms are short
-  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
-    const std::size_t end = begin + a.inner_block;
+  static const LanePasses<V, I> lanes;
+  by_blocks<V>(a, false, true, [&](std::size_t begin, std::size_t end) {
     for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.inverse(a.re + j, a.im + j);
-    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
-  }
-  for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
+  });
+  outer_passes<V>(a, false);
 }
 
 // passes() with a product by a stored spectrum in place of the square.
 template <class V, class I>
 TK_INLINE void multiply_passes(const Arrays& a, const double* sre, const double* sim) {
-  const std::size_t n = a.half;
-  for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
-  static const LanePasses<V, I> lanes;  // its cosines once: these transforms are short
-  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
-    const std::size_t end = begin + a.inner_block;
-    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+  outer_passes<V>(a, true);
+  static const LanePasses<V, I> lanes;
+  by_blocks<V>(a, true, true, [&](std::size_t begin, std::size_t end) {
     for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.multiply(a.re + j, a.im + j, sre + j, sim + j);
-    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
-  }
-  for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
+  });
+  outer_passes<V>(a, false);
 }
 
 template <class V>

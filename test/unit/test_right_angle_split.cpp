@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "primes/right_angle_transform.hpp"
+#include "simd_widths.hpp"
 
 namespace right_angle_split_test {
 
@@ -63,12 +64,7 @@ double distance(RightAngleSquarer& t, const Digits& z) {
   return worst;
 }
 
-std::vector<RightAngleSquarer::Simd> widths_here() {
-  std::vector<RightAngleSquarer::Simd> widths;
-  for (auto simd : {RightAngleSquarer::Simd::avx2, RightAngleSquarer::Simd::avx512})
-    if (RightAngleSquarer::create(64, simd)) widths.push_back(simd);
-  return widths;
-}
+using simd_test::widths_here;
 
 // Lengths with radix-3, -2 and -4 passes, and ones (L/2 > 1024) whose
 // outer passes run over the whole array.

@@ -14,6 +14,7 @@
 #include "primes/transform_digits.hpp"
 #include "primes/transform_reduction.hpp"
 #include "primes/transform_tests.hpp"
+#include "simd_widths.hpp"
 
 namespace transform_reduction_test {
 
@@ -21,12 +22,7 @@ using namespace tk::primes;
 namespace d18 = tk::primes::digits18;
 using Simd = RightAngleSquarer::Simd;
 
-std::vector<Simd> widths_here() {
-  std::vector<Simd> widths;
-  for (auto simd : {Simd::avx2, Simd::avx512})
-    if (RightAngleSquarer::create(64, simd)) widths.push_back(simd);
-  return widths;
-}
+using simd_test::widths_here;
 
 mpz_class power_of_two(unsigned long bits) {
   mpz_class x;
