@@ -30,6 +30,10 @@ template <class V>
 constexpr std::size_t kLanes = sizeof(V) / sizeof(double);
 
 #define TK_INLINE __attribute__((always_inline)) inline
+// The butterflies' lambdas too: left to the inliner's budget, they stop
+// being inlined once the file holds more users of them (the split passes),
+// and a lambda does not take its caller's target (AVX-512, AVX2).
+#define TK_LAMBDA_INLINE __attribute__((always_inline))
 
 template <class V>
 TK_INLINE V load(const double* p) {
@@ -116,7 +120,7 @@ TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begi
 template <class V>
 TK_INLINE void forward4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end) {
-  for_each_butterfly<V>(4, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
+  for_each_butterfly<V>(4, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
     const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q),
                    d = get<V>(re, im, at + 3 * q);
     const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
@@ -130,7 +134,7 @@ TK_INLINE void forward4(double* re, double* im, const double* twr, const double*
 template <class V>
 TK_INLINE void inverse4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end) {
-  for_each_butterfly<V>(4, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
+  for_each_butterfly<V>(4, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
     const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
                    y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j),
                    y3 = untwiddled(get<V>(re, im, at + 3 * q), twr, twi, 2 * q + j);
@@ -145,7 +149,7 @@ TK_INLINE void inverse4(double* re, double* im, const double* twr, const double*
 template <class V>
 TK_INLINE void forward2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end) {
-  for_each_butterfly<V>(2, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t h) {
+  for_each_butterfly<V>(2, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t h) TK_LAMBDA_INLINE {
     const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
     put(re, im, at, a + b);
     put(re, im, at + h, twiddled(a - b, twr, twi, j));
@@ -155,7 +159,7 @@ TK_INLINE void forward2(double* re, double* im, const double* twr, const double*
 template <class V>
 TK_INLINE void inverse2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end) {
-  for_each_butterfly<V>(2, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t h) {
+  for_each_butterfly<V>(2, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t h) TK_LAMBDA_INLINE {
     const Point<V> a = get<V>(re, im, at), b = untwiddled(get<V>(re, im, at + h), twr, twi, j);
     put(re, im, at, a + b);
     put(re, im, at + h, a - b);
@@ -169,7 +173,7 @@ template <class V>
 TK_INLINE void forward3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(3, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
+  for_each_butterfly<V>(3, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
     const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
     const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
     const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
@@ -183,7 +187,7 @@ template <class V>
 TK_INLINE void inverse3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(3, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) {
+  for_each_butterfly<V>(3, block, begin, end, [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
     const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
                    y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j);
     const Point<V> sum = y1 + y2, m = {y0.r - half * sum.r, y0.m - half * sum.m};
@@ -266,11 +270,22 @@ struct LanePasses {
 
   TK_INLINE void square(double* re, double* im) const {
     V r = load<V>(re), m = load<V>(im);
-    forward_in(r, m);
+#pragma GCC unroll 4
+    for (std::size_t pass = 0; pass < kPasses; ++pass) {
+      r = permuted(r, partner[pass]) + sign[pass] * r;
+      m = permuted(m, partner[pass]) + sign[pass] * m;
+      if (pass + 1 < kPasses) times(r, m, twr[pass], twi[pass]);  // the last pass's twiddles are all 1
+    }
     const V t = r * r - m * m;
     m = (r + r) * m;
     r = t;
-    inverse_in(r, m);
+#pragma GCC unroll 4
+    for (std::size_t undone = 0; undone < kPasses; ++undone) {
+      const std::size_t pass = kPasses - 1 - undone;
+      if (pass + 1 < kPasses) times_conjugate(r, m, twr[pass], twi[pass]);
+      r = permuted(r, partner[pass]) + sign[pass] * r;
+      m = permuted(m, partner[pass]) + sign[pass] * m;
+    }
     store(re, r);
     store(im, m);
   }
@@ -311,63 +326,69 @@ TK_INLINE void outer_passes(const Arrays& a, bool forward) {
     for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, a.half);
 }
 
-// For each L1-sized block: its inner passes forward (when `forward`), then
-// in_block(begin, end), then its inner passes back (when `back`).
-template <class V, class InBlock>
-TK_INLINE void by_blocks(const Arrays& a, bool forward, bool back, InBlock&& in_block) {
+// What the lane passes do between the forward and inverse passes.
+enum class Pointwise { square, multiply, forward_only, inverse_only };
+
+// The passes forward (unless inverse_only), the pointwise step, the passes
+// back (unless forward_only), on a.re/a.im, the inner passes one L1-sized
+// block at a time. (No lambdas here: a lambda does not take its caller's
+// target attribute, so its vectors would be built for the baseline.)
+template <class V, class I, Pointwise kind>
+TK_INLINE void run_passes(const Arrays& a, const LanePasses<V, I>& lanes, const double* sre = nullptr,
+                          const double* sim = nullptr) {
+  constexpr bool forward = kind != Pointwise::inverse_only, back = kind != Pointwise::forward_only;
+  if (forward) outer_passes<V>(a, true);
   for (std::size_t begin = 0; begin < a.half; begin += a.inner_block) {
     const std::size_t end = begin + a.inner_block;
     if (forward)
       for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
-    in_block(begin, end);
+    for (std::size_t j = begin; j < end; j += kLanes<V>) {
+      if constexpr (kind == Pointwise::square) lanes.square(a.re + j, a.im + j);
+      else if constexpr (kind == Pointwise::multiply) lanes.multiply(a.re + j, a.im + j, sre + j, sim + j);
+      else if constexpr (kind == Pointwise::forward_only) lanes.forward(a.re + j, a.im + j);
+      else lanes.inverse(a.re + j, a.im + j);
+    }
     if (back)
       for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
   }
+  if (back) outer_passes<V>(a, false);
 }
 
 // The passes forward, the pointwise square, the passes back, on a.re/a.im.
 template <class V, class I>
 TK_INLINE void passes(const Arrays& a) {
-  outer_passes<V>(a, true);
+  const std::size_t n = a.half;
+  for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
   const LanePasses<V, I> lanes;
-  by_blocks<V>(a, true, true, [&](std::size_t begin, std::size_t end) {
+  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
+    const std::size_t end = begin + a.inner_block;
+    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
     for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.square(a.re + j, a.im + j);
-  });
-  outer_passes<V>(a, false);
+    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
+  }
+  for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
 }
 
-// The split passes below compute the lanes' twiddles once (static): the
+// The split passes compute the lanes' twiddles once (static): the
 // transforms they serve are short, and called several times a bit.
-
-// The forward passes alone: a.re/a.im become the spectrum, in the order
-// the inverse passes take.
+// forward_passes leaves the spectrum in the order inverse_passes takes.
 template <class V, class I>
 TK_INLINE void forward_passes(const Arrays& a) {
-  outer_passes<V>(a, true);
   static const LanePasses<V, I> lanes;
-  by_blocks<V>(a, true, false, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.forward(a.re + j, a.im + j);
-  });
+  run_passes<V, I, Pointwise::forward_only>(a, lanes);
 }
 
 template <class V, class I>
 TK_INLINE void inverse_passes(const Arrays& a) {
   static const LanePasses<V, I> lanes;
-  by_blocks<V>(a, false, true, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.inverse(a.re + j, a.im + j);
-  });
-  outer_passes<V>(a, false);
+  run_passes<V, I, Pointwise::inverse_only>(a, lanes);
 }
 
 // passes() with a product by a stored spectrum in place of the square.
 template <class V, class I>
 TK_INLINE void multiply_passes(const Arrays& a, const double* sre, const double* sim) {
-  outer_passes<V>(a, true);
   static const LanePasses<V, I> lanes;
-  by_blocks<V>(a, true, true, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.multiply(a.re + j, a.im + j, sre + j, sim + j);
-  });
-  outer_passes<V>(a, false);
+  run_passes<V, I, Pointwise::multiply>(a, lanes, sre, sim);
 }
 
 template <class V>
