@@ -270,22 +270,11 @@ struct LanePasses {
 
   TK_INLINE void square(double* re, double* im) const {
     V r = load<V>(re), m = load<V>(im);
-#pragma GCC unroll 4
-    for (std::size_t pass = 0; pass < kPasses; ++pass) {
-      r = permuted(r, partner[pass]) + sign[pass] * r;
-      m = permuted(m, partner[pass]) + sign[pass] * m;
-      if (pass + 1 < kPasses) times(r, m, twr[pass], twi[pass]);  // the last pass's twiddles are all 1
-    }
+    forward_in(r, m);
     const V t = r * r - m * m;
     m = (r + r) * m;
     r = t;
-#pragma GCC unroll 4
-    for (std::size_t undone = 0; undone < kPasses; ++undone) {
-      const std::size_t pass = kPasses - 1 - undone;
-      if (pass + 1 < kPasses) times_conjugate(r, m, twr[pass], twi[pass]);
-      r = permuted(r, partner[pass]) + sign[pass] * r;
-      m = permuted(m, partner[pass]) + sign[pass] * m;
-    }
+    inverse_in(r, m);
     store(re, r);
     store(im, m);
   }
@@ -357,16 +346,8 @@ TK_INLINE void run_passes(const Arrays& a, const LanePasses<V, I>& lanes, const 
 // The passes forward, the pointwise square, the passes back, on a.re/a.im.
 template <class V, class I>
 TK_INLINE void passes(const Arrays& a) {
-  const std::size_t n = a.half;
-  for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
   const LanePasses<V, I> lanes;
-  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
-    const std::size_t end = begin + a.inner_block;
-    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
-    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.square(a.re + j, a.im + j);
-    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
-  }
-  for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
+  run_passes<V, I, Pointwise::square>(a, lanes);
 }
 
 // The split passes compute the lanes' twiddles once (static): the
