@@ -34,4 +34,19 @@ SelfridgeChoice selfridge_d(const mpz_class& N);
 bool strong_lucas_probable_prime(const Modulus& N, std::int64_t d, mpz_class& factor,
                                  const std::atomic<bool>* cancel = nullptr, bool* zero_at_last = nullptr);
 
+/// One doubling step of the Lucas U chain (P = 1, Q = q) with GMP:
+/// (U_j, U_(j+1)) to (U_2j, U_2j+1), or to (U_2j+1, U_2j+2) when `odd`,
+/// by three squarings and two remainders (Hackman's formulas, see
+/// strong_lucas_probable_prime); the results lie in (-N, N).
+class LucasDoubler {
+ public:
+  LucasDoubler(const Modulus& N, long q);
+  void operator()(mpz_class& u, mpz_class& u_next, bool odd);
+
+ private:
+  const Modulus& n_;
+  long q_;
+  mpz_class high_, low_, square_, diff_;
+};
+
 }  // namespace tk::primes

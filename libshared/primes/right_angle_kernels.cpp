@@ -30,6 +30,10 @@ template <class V>
 constexpr std::size_t kLanes = sizeof(V) / sizeof(double);
 
 #define TK_INLINE __attribute__((always_inline)) inline
+// The butterflies' lambdas too: left to the inliner's budget, they stop
+// being inlined once the file holds more users of them (the split passes),
+// and a lambda does not take its caller's target (AVX-512, AVX2).
+#define TK_LAMBDA_INLINE __attribute__((always_inline))
 
 template <class V>
 TK_INLINE V load(const double* p) {
@@ -124,50 +128,54 @@ TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begi
 template <class V>
 TK_INLINE void forward4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(4, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) {
-    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q),
-                   d = get<V>(re, im, at + 3 * q);
-    const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
-    put(re, im, at, t0 + t2);
-    put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
-    put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
-    put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
-  });
+  for_each_butterfly<V>(4, block, begin, end, columns,
+                        [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
+                          const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q),
+                                         c = get<V>(re, im, at + 2 * q), d = get<V>(re, im, at + 3 * q);
+                          const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
+                          put(re, im, at, t0 + t2);
+                          put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
+                          put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
+                          put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
+                        });
 }
 
 template <class V>
 TK_INLINE void inverse4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(4, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) {
-    const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
-                   y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j),
-                   y3 = untwiddled(get<V>(re, im, at + 3 * q), twr, twi, 2 * q + j);
-    const Point<V> u0 = y0 + y2, u1 = y0 - y2, u2 = y1 + y3, u3 = times_i(y1 - y3);
-    put(re, im, at, u0 + u2);
-    put(re, im, at + q, u1 + u3);
-    put(re, im, at + 2 * q, u0 - u2);
-    put(re, im, at + 3 * q, u1 - u3);
-  });
+  for_each_butterfly<V>(4, block, begin, end, columns,
+                        [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
+                          const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
+                                         y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j),
+                                         y3 = untwiddled(get<V>(re, im, at + 3 * q), twr, twi, 2 * q + j);
+                          const Point<V> u0 = y0 + y2, u1 = y0 - y2, u2 = y1 + y3, u3 = times_i(y1 - y3);
+                          put(re, im, at, u0 + u2);
+                          put(re, im, at + q, u1 + u3);
+                          put(re, im, at + 2 * q, u0 - u2);
+                          put(re, im, at + 3 * q, u1 - u3);
+                        });
 }
 
 template <class V>
 TK_INLINE void forward2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(2, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t h) {
-    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
-    put(re, im, at, a + b);
-    put(re, im, at + h, twiddled(a - b, twr, twi, j));
-  });
+  for_each_butterfly<V>(2, block, begin, end, columns,
+                        [&](std::size_t at, std::size_t j, std::size_t h) TK_LAMBDA_INLINE {
+                          const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
+                          put(re, im, at, a + b);
+                          put(re, im, at + h, twiddled(a - b, twr, twi, j));
+                        });
 }
 
 template <class V>
 TK_INLINE void inverse2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(2, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t h) {
-    const Point<V> a = get<V>(re, im, at), b = untwiddled(get<V>(re, im, at + h), twr, twi, j);
-    put(re, im, at, a + b);
-    put(re, im, at + h, a - b);
-  });
+  for_each_butterfly<V>(2, block, begin, end, columns,
+                        [&](std::size_t at, std::size_t j, std::size_t h) TK_LAMBDA_INLINE {
+                          const Point<V> a = get<V>(re, im, at), b = untwiddled(get<V>(re, im, at + h), twr, twi, j);
+                          put(re, im, at, a + b);
+                          put(re, im, at + h, a - b);
+                        });
 }
 
 constexpr double kHalfRoot3 = 0.86602540378443864676;  // sin(2*pi/3)
@@ -177,29 +185,31 @@ template <class V>
 TK_INLINE void forward3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(3, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) {
-    const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
-    const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
-    const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
-    put(re, im, at, a + sum);
-    put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
-    put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
-  });
+  for_each_butterfly<V>(
+      3, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
+        const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
+        const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
+        const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
+        put(re, im, at, a + sum);
+        put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
+        put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
+      });
 }
 
 template <class V>
 TK_INLINE void inverse3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
   const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(3, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) {
-    const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
-                   y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j);
-    const Point<V> sum = y1 + y2, m = {y0.r - half * sum.r, y0.m - half * sum.m};
-    const Point<V> ihd = times_i(Point<V>{h * (y1.r - y2.r), h * (y1.m - y2.m)});
-    put(re, im, at, y0 + sum);
-    put(re, im, at + q, m + ihd);
-    put(re, im, at + 2 * q, m - ihd);
-  });
+  for_each_butterfly<V>(3, block, begin, end, columns,
+                        [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
+                          const Point<V> y0 = get<V>(re, im, at), y1 = untwiddled(get<V>(re, im, at + q), twr, twi, j),
+                                         y2 = untwiddled(get<V>(re, im, at + 2 * q), twr, twi, q + j);
+                          const Point<V> sum = y1 + y2, m = {y0.r - half * sum.r, y0.m - half * sum.m};
+                          const Point<V> ihd = times_i(Point<V>{h * (y1.r - y2.r), h * (y1.m - y2.m)});
+                          put(re, im, at, y0 + sum);
+                          put(re, im, at + q, m + ihd);
+                          put(re, im, at + 2 * q, m - ihd);
+                        });
 }
 
 template <class V>
@@ -253,17 +263,16 @@ struct LanePasses {
       }
   }
 
-  TK_INLINE void square(double* re, double* im) const {
-    V r = load<V>(re), m = load<V>(im);
+  // The passes forward and back on one vector of points in registers.
+  TK_INLINE void forward_in(V& r, V& m) const {
 #pragma GCC unroll 4
     for (std::size_t pass = 0; pass < kPasses; ++pass) {
       r = permuted(r, partner[pass]) + sign[pass] * r;
       m = permuted(m, partner[pass]) + sign[pass] * m;
       if (pass + 1 < kPasses) times(r, m, twr[pass], twi[pass]);  // the last pass's twiddles are all 1
     }
-    const V t = r * r - m * m;
-    m = (r + r) * m;
-    r = t;
+  }
+  TK_INLINE void inverse_in(V& r, V& m) const {
 #pragma GCC unroll 4
     for (std::size_t undone = 0; undone < kPasses; ++undone) {
       const std::size_t pass = kPasses - 1 - undone;
@@ -271,24 +280,120 @@ struct LanePasses {
       r = permuted(r, partner[pass]) + sign[pass] * r;
       m = permuted(m, partner[pass]) + sign[pass] * m;
     }
+  }
+
+  TK_INLINE void square(double* re, double* im) const {
+    V r = load<V>(re), m = load<V>(im);
+    forward_in(r, m);
+    const V t = r * r - m * m;
+    m = (r + r) * m;
+    r = t;
+    inverse_in(r, m);
+    store(re, r);
+    store(im, m);
+  }
+
+  // The same lane passes split up, for the forward, pointwise product and
+  // inverse the caller sequences itself.
+  TK_INLINE void forward(double* re, double* im) const {
+    V r = load<V>(re), m = load<V>(im);
+    forward_in(r, m);
+    store(re, r);
+    store(im, m);
+  }
+  TK_INLINE void inverse(double* re, double* im) const {
+    V r = load<V>(re), m = load<V>(im);
+    inverse_in(r, m);
+    store(re, r);
+    store(im, m);
+  }
+
+  // forward, times the stored spectrum (sre + i*sim) point by point, inverse
+  TK_INLINE void multiply(double* re, double* im, const double* sre, const double* sim) const {
+    V r = load<V>(re), m = load<V>(im);
+    forward_in(r, m);
+    times(r, m, load<V>(sre), load<V>(sim));
+    inverse_in(r, m);
     store(re, r);
     store(im, m);
   }
 };
 
+// The passes over the whole array (blocks above an L1's worth), forward
+// or back.
+template <class V>
+TK_INLINE void outer_passes(const Arrays& a, bool forward) {
+  if (forward)
+    for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, a.half);
+  else
+    for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, a.half);
+}
+
+// What the lane passes do between the forward and inverse passes.
+enum class Pointwise { square, multiply, forward_only, inverse_only };
+
+// The passes forward (unless inverse_only), the pointwise step, the passes
+// back (unless forward_only), on a.re/a.im, the inner passes one L1-sized
+// block at a time. (No lambdas here: a lambda does not take its caller's
+// target attribute, so its vectors would be built for the baseline.)
+template <class V, class I, Pointwise kind>
+TK_INLINE void run_passes(const Arrays& a, const LanePasses<V, I>& lanes, const double* sre = nullptr,
+                          const double* sim = nullptr) {
+  constexpr bool forward = kind != Pointwise::inverse_only, back = kind != Pointwise::forward_only;
+  if (forward) outer_passes<V>(a, true);
+  for (std::size_t begin = 0; begin < a.half; begin += a.inner_block) {
+    const std::size_t end = begin + a.inner_block;
+    if (forward)
+      for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+    for (std::size_t j = begin; j < end; j += kLanes<V>) {
+      if constexpr (kind == Pointwise::square) lanes.square(a.re + j, a.im + j);
+      else if constexpr (kind == Pointwise::multiply) lanes.multiply(a.re + j, a.im + j, sre + j, sim + j);
+      else if constexpr (kind == Pointwise::forward_only) lanes.forward(a.re + j, a.im + j);
+      else lanes.inverse(a.re + j, a.im + j);
+    }
+    if (back)
+      for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
+  }
+  if (back) outer_passes<V>(a, false);
+}
+
 // The passes forward, the pointwise square, the passes back, on a.re/a.im.
 template <class V, class I>
 TK_INLINE void passes(const Arrays& a) {
-  const std::size_t n = a.half;
-  for (std::size_t s = 0; s < a.inner_from; ++s) run_stage<V>(a, a.stages[s], true, 0, n);
   const LanePasses<V, I> lanes;
-  for (std::size_t begin = 0; begin < n; begin += a.inner_block) {
-    const std::size_t end = begin + a.inner_block;
-    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
-    for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.square(a.re + j, a.im + j);
-    for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
+  run_passes<V, I, Pointwise::square>(a, lanes);
+}
+
+// The split passes compute the lanes' twiddles once (static): the
+// transforms they serve are short, and called several times a bit.
+// forward_passes leaves the spectrum in the order inverse_passes takes.
+template <class V, class I>
+TK_INLINE void forward_passes(const Arrays& a) {
+  static const LanePasses<V, I> lanes;
+  run_passes<V, I, Pointwise::forward_only>(a, lanes);
+}
+
+template <class V, class I>
+TK_INLINE void inverse_passes(const Arrays& a) {
+  static const LanePasses<V, I> lanes;
+  run_passes<V, I, Pointwise::inverse_only>(a, lanes);
+}
+
+// passes() with a product by a stored spectrum in place of the square.
+template <class V, class I>
+TK_INLINE void multiply_passes(const Arrays& a, const double* sre, const double* sim) {
+  static const LanePasses<V, I> lanes;
+  run_passes<V, I, Pointwise::multiply>(a, lanes, sre, sim);
+}
+
+template <class V>
+TK_INLINE void pointwise(const Arrays& a, const double* sre, const double* sim) {
+  for (std::size_t j = 0; j < a.half; j += kLanes<V>) {
+    V r = load<V>(a.re + j), m = load<V>(a.im + j);
+    times(r, m, load<V>(sre + j), load<V>(sim + j));
+    store(a.re + j, r);
+    store(a.im + j, m);
   }
-  for (std::size_t s = a.inner_from; s-- > 0;) run_stage<V>(a, a.stages[s], false, 0, n);
 }
 
 template <class V, class I>
@@ -324,6 +429,26 @@ __attribute__((target("avx2,fma"))) void square_avx2(const Arrays& arrays, const
 __attribute__((target("avx512f,avx512dq,fma"))) void passes_avx512(const Arrays& arrays) { passes<v8d, v8i>(arrays); }
 
 __attribute__((target("avx2,fma"))) void passes_avx2(const Arrays& arrays) { passes<v4d, v4i>(arrays); }
+
+#define TK_AVX512 __attribute__((target("avx512f,avx512dq,fma")))
+#define TK_AVX2 __attribute__((target("avx2,fma")))
+
+TK_AVX512 void forward_avx512(const Arrays& arrays) { forward_passes<v8d, v8i>(arrays); }
+TK_AVX2 void forward_avx2(const Arrays& arrays) { forward_passes<v4d, v4i>(arrays); }
+TK_AVX512 void inverse_avx512(const Arrays& arrays) { inverse_passes<v8d, v8i>(arrays); }
+TK_AVX2 void inverse_avx2(const Arrays& arrays) { inverse_passes<v4d, v4i>(arrays); }
+TK_AVX512 void multiply_avx512(const Arrays& arrays, const double* re, const double* im) {
+  multiply_passes<v8d, v8i>(arrays, re, im);
+}
+TK_AVX2 void multiply_avx2(const Arrays& arrays, const double* re, const double* im) {
+  multiply_passes<v4d, v4i>(arrays, re, im);
+}
+TK_AVX512 void pointwise_avx512(const Arrays& arrays, const double* re, const double* im) {
+  pointwise<v8d>(arrays, re, im);
+}
+TK_AVX2 void pointwise_avx2(const Arrays& arrays, const double* re, const double* im) {
+  pointwise<v4d>(arrays, re, im);
+}
 
 // ---- One square split over threads (RightAngleSquarer's split passes) ----
 

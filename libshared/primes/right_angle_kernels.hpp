@@ -28,6 +28,17 @@ void square_avx2(const Arrays& arrays, const double* input, double* output);
 /// The transform, pointwise square and inverse alone, on arrays.re/im.
 void passes_avx512(const Arrays& arrays);
 void passes_avx2(const Arrays& arrays);
+/// The forward passes alone, the inverse passes alone, the fused
+/// forward-product-inverse with a stored spectrum (re, im), and the
+/// pointwise product with it (see RightAngleSquarer's split interface).
+void forward_avx512(const Arrays& arrays);
+void forward_avx2(const Arrays& arrays);
+void inverse_avx512(const Arrays& arrays);
+void inverse_avx2(const Arrays& arrays);
+void multiply_avx512(const Arrays& arrays, const double* re, const double* im);
+void multiply_avx2(const Arrays& arrays, const double* re, const double* im);
+void pointwise_avx512(const Arrays& arrays, const double* re, const double* im);
+void pointwise_avx2(const Arrays& arrays, const double* re, const double* im);
 
 /// One square split over threads: the outer passes on the columns whose
 /// index modulo arrays.inner_block is in [from, to), forward or inverse

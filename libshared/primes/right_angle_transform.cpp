@@ -130,6 +130,30 @@ void RightAngleSquarer::square_in_place() {
   outer_passes(false, 0, inner_block_);
 }
 
+void RightAngleSquarer::forward_in_place() {
+  const right_angle::Arrays arrays = this->arrays();
+  if (lanes_ == 8) right_angle::forward_avx512(arrays);
+  else right_angle::forward_avx2(arrays);
+}
+
+void RightAngleSquarer::inverse_in_place() {
+  const right_angle::Arrays arrays = this->arrays();
+  if (lanes_ == 8) right_angle::inverse_avx512(arrays);
+  else right_angle::inverse_avx2(arrays);
+}
+
+void RightAngleSquarer::multiply_pointwise(const double* spectrum_re, const double* spectrum_im) {
+  const right_angle::Arrays arrays = this->arrays();
+  if (lanes_ == 8) right_angle::pointwise_avx512(arrays, spectrum_re, spectrum_im);
+  else right_angle::pointwise_avx2(arrays, spectrum_re, spectrum_im);
+}
+
+void RightAngleSquarer::multiply_in_place(const double* spectrum_re, const double* spectrum_im) {
+  const right_angle::Arrays arrays = this->arrays();
+  if (lanes_ == 8) right_angle::multiply_avx512(arrays, spectrum_re, spectrum_im);
+  else right_angle::multiply_avx2(arrays, spectrum_re, spectrum_im);
+}
+
 right_angle::Arrays RightAngleSquarer::arrays() const {
   return {re_,         im_,   twiddle_re_,    twiddle_im_,    theta_cos_,
           theta_sin_,  half_, stages_.data(), stages_.size(), inner_from_,

@@ -50,6 +50,22 @@ class RightAngleSquarer {
   /// N times the cyclic square after, j < N; the square's coefficient j is
   /// then Re and its coefficient j + N is Im of that times theta^-j / N.
   void square_in_place();
+  /// The same square split up, for products and for sums of products in
+  /// the spectrum (transform_reduction): forward_in_place() turns c_j into
+  /// its spectrum (in an order of the transform's own, the same every
+  /// time), inverse_in_place() turns a spectrum into N times its cyclic
+  /// sequence; a spectrum copied out of real()/imaginary() after
+  /// forward_in_place() can be kept and multiplied in: multiply_pointwise
+  /// multiplies the spectrum held by it, multiply_in_place() does forward,
+  /// product and inverse one L1 block at a time as square_in_place() does.
+  /// forward_in_place(), square point by point, inverse_in_place() gives
+  /// square_in_place()'s result (up to rounding).
+  void forward_in_place();
+  void inverse_in_place();
+  void multiply_pointwise(const double* spectrum_re, const double* spectrum_im);
+  void multiply_in_place(const double* spectrum_re, const double* spectrum_im);
+  std::size_t points() const { return half_; }  ///< N, the length of real()/imaginary()
+
   double* real() { return re_; }
   double* imaginary() { return im_; }
   const double* theta_cos() const { return theta_cos_; }  ///< cos(pi*j/L), j < N

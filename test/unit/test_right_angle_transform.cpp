@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "primes/right_angle_transform.hpp"
+#include "simd_widths.hpp"
 
 namespace {
 
@@ -43,12 +44,7 @@ double worst_error(RightAngleSquarer& squarer, int bits, std::uint32_t seed) {
   return worst;
 }
 
-std::vector<RightAngleSquarer::Simd> widths_here() {
-  std::vector<RightAngleSquarer::Simd> widths;
-  for (auto simd : {RightAngleSquarer::Simd::avx2, RightAngleSquarer::Simd::avx512})
-    if (RightAngleSquarer::create(64, simd)) widths.push_back(simd);
-  return widths;
-}
+using simd_test::widths_here;
 
 TEST(RightAngleSquarer, ExactSquaresAtEveryKindOfLength) {
   const auto widths = widths_here();
