@@ -77,6 +77,19 @@ std::unique_ptr<RightAngleSquarer> RightAngleSquarer::create(std::size_t length,
   return std::unique_ptr<RightAngleSquarer>(new RightAngleSquarer(length / 2, lanes, plan(length / 2, lanes)));
 }
 
+std::unique_ptr<RightAngleSquarer> RightAngleSquarer::create_at_least(std::size_t minimum, Simd simd) {
+  if (!cpu_has(simd)) return nullptr;
+  const auto lanes = static_cast<std::size_t>(lanes_of(simd));
+  std::size_t best = 0;
+  for (std::size_t threes = 1; threes <= 243; threes *= 3)
+    for (std::size_t length = 8 * lanes * threes; length < (std::size_t{1} << 40); length *= 2)
+      if (length >= minimum) {
+        if (best == 0 || length < best) best = length;
+        break;
+      }
+  return best ? create(best, simd) : nullptr;
+}
+
 RightAngleSquarer::RightAngleSquarer(std::size_t half, int lanes, std::vector<Stage> stages)
     : half_(half), lanes_(lanes), stages_(std::move(stages)) {
   inner_from_ = 0;

@@ -31,6 +31,9 @@ class RightAngleSquarer {
   /// Nothing where the CPU lacks the SIMD asked for (AVX2 with FMA at
   /// least) or L/2 is not w * 2^a * 3^b, at least 4w (w the SIMD width).
   static std::unique_ptr<RightAngleSquarer> create(std::size_t length, Simd simd = Simd::best);
+  /// The shortest transform of at least `minimum` real points (L = 2^a *
+  /// 3^b times 8 lanes, b <= 5), or nothing as create().
+  static std::unique_ptr<RightAngleSquarer> create_at_least(std::size_t minimum, Simd simd = Simd::best);
   /// Whether `length` (L) has a transform on this CPU.
   static bool supports(std::size_t length);
   /// The widest SIMD this CPU gives it: 8 (AVX-512), 4 (AVX2) or 0.

@@ -18,26 +18,6 @@ namespace d18 = digits18;
 // A coefficient is an integer give or take this much, or the step fails.
 constexpr double kMaxRoundoff = 0.25;
 
-int lanes_for(RightAngleSquarer::Simd simd) {
-  if (simd == RightAngleSquarer::Simd::best) return RightAngleSquarer::widest_lanes();
-  return simd == RightAngleSquarer::Simd::avx512 ? 8 : 4;
-}
-
-// The shortest transform of at least `minimum` real points.
-std::unique_ptr<RightAngleSquarer> shortest_transform(std::size_t minimum, RightAngleSquarer::Simd simd) {
-  const int lanes = lanes_for(simd);
-  if (lanes == 0) return nullptr;
-  std::size_t best = 0;
-  for (std::size_t threes = 1; threes <= 243; threes *= 3)
-    for (std::size_t length = 8 * static_cast<std::size_t>(lanes) * threes; length < (std::size_t{1} << 40);
-         length *= 2)
-      if (length >= minimum) {
-        if (best == 0 || length < best) best = length;
-        break;
-      }
-  return best ? RightAngleSquarer::create(best, simd) : nullptr;
-}
-
 // c_j = (x_j + i x_(j+h)) theta^j into the transform, x zero from `count` on.
 TK_DIGIT_CLONES void weight_into(RightAngleSquarer& t, const double* x, std::size_t count) {
   const std::size_t h = t.points();
@@ -123,15 +103,15 @@ std::unique_ptr<TransformModulus> TransformModulus::create(const mpz_class& N, s
   mpz_ui_pow_ui(mu.get_mpz_t(), 2, s1 + m->high_shift_ * d18::kBits);
   mpz_fdiv_q(mu.get_mpz_t(), mu.get_mpz_t(), N.get_mpz_t());
 
-  m->square_ = shortest_transform(2 * M, simd);
+  m->square_ = RightAngleSquarer::create_at_least(2 * M, simd);
   if (!m->square_) return nullptr;
   const std::size_t product_digits = m->square_->length() + 3;
   const std::size_t mu_digits = mpz_sizeinbase(mu.get_mpz_t(), 2) / d18::kBits + 2;
   const std::size_t quotient_digits = (a_bits + 1) / d18::kBits + 1 - m->low_shift_;
   m->quotient_digits_count_ = quotient_digits;
-  m->quotient_ = shortest_transform(mu_digits + quotient_digits, simd);
+  m->quotient_ = RightAngleSquarer::create_at_least(mu_digits + quotient_digits, simd);
   // |r| < 2^(nb + 2) is then below 2^K / 8: its residue modulo 2^K + 1 is r.
-  m->remainder_ = shortest_transform((nb + 5 + d18::kBits - 1) / d18::kBits, simd);
+  m->remainder_ = RightAngleSquarer::create_at_least((nb + 5 + d18::kBits - 1) / d18::kBits, simd);
   if (!m->quotient_ || !m->remainder_ || m->high_shift_ < 3) return nullptr;
 
   std::vector<double> digits(mu_digits);
