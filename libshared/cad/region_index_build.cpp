@@ -285,8 +285,8 @@ namespace {
 
 constexpr std::size_t kThreadedFrom = 2000;  // elements: below, a second thread costs more than it saves
 
-/// work(0, ...) and, where worth it, work(1, ...) on a second thread: each
-/// part's bounds from `bounds` (parts + 1 of them).
+/// work(0) and, with two parts, work(1) on a second thread at the same
+/// time; each work(part) picks its own share of cells.
 template <class Work>
 void in_parts(std::size_t parts, Work&& work) {
   if (parts == 1) return work(0);
