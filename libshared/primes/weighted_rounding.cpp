@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "primes/cpu_features.hpp"
 #include "primes/weighted_squaring_detail.hpp"
@@ -31,6 +32,9 @@ typedef std::uint64_t v8u __attribute__((vector_size(64)));
 // low bits of the sum's representation: subtracting the shifter's bits
 // gives it as an int64 with no conversion instruction.
 constexpr double kShifter = 6755399441055744.0;
+// 2^51's bits: a double's magnitude is at least 2^51 (or NaN) when its
+// bits without the sign are at least these.
+constexpr std::int64_t kRangeBits = std::int64_t{(1023 + 51)} << 52;
 
 template <class V>
 TK_INLINE V load(const double* p) {
@@ -44,8 +48,8 @@ TK_INLINE V load(const double* p) {
 template <class V, class I, class U>
 struct Rounder {
   static constexpr std::size_t kLanes = sizeof(V) / sizeof(double);
-  V worst{}, biggest{}, probe{}, zero{}, shifter{}, limit{};
-  I shifter_int{};
+  V worst{}, shifter{};
+  I shifter_int{}, biggest_bits{}, magnitude_mask{};
   U sum{}, sum_high{}, p{}, sixty_one{};
 
   TK_INLINE Rounder() {
@@ -54,46 +58,43 @@ struct Rounder {
     for (std::size_t l = 0; l < kLanes; ++l) {
       shifter[l] = kShifter;
       shifter_int[l] = shifter_bits;
-      limit[l] = 0x1p51;
+      magnitude_mask[l] = std::numeric_limits<std::int64_t>::max();
       p[l] = kP61;
       sixty_one[l] = 61;
     }
   }
 
   // Rounds `value` into z and returns the lanes' z_j * 2^(e_j) mod p.
-  TK_INLINE U term(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
-    // Only max-like selects (GCC 12 scalarises other double compares at
-    // AVX-512). Values are clamped to +-2^51 so every lane converts to a
-    // sane integer; the largest magnitude and a NaN probe (a NaN or an
-    // infinity times 0 is NaN) say afterwards whether any was out of range.
-    const V magnitude = value > -value ? value : -value;
-    biggest = magnitude > biggest ? magnitude : biggest;
-    probe += value * zero;
-    V clamped = value > -limit ? value : -limit;
-    clamped = clamped < limit ? clamped : limit;
-    const V moved = clamped + shifter;
+  TK_INLINE U term(const V& value, const std::uint64_t* __restrict rotation, std::int64_t* __restrict z) {
+    // The range check is an integer max on the magnitude's bits: a NaN or
+    // an infinity has more than any finite value, so it fails too. Out of
+    // range, z and the error are nonsense (finish() caps the error at 1/2),
+    // but the square is then refused whole.
+    const I magnitude_bits = (I)value & magnitude_mask;
+    biggest_bits = magnitude_bits > biggest_bits ? magnitude_bits : biggest_bits;
+    const V moved = value + shifter;
     const V rounded = moved - shifter;
-    const V error = clamped > rounded ? clamped - rounded : rounded - clamped;
+    const V error = (V)((I)(value - rounded) & magnitude_mask);
     worst = error > worst ? error : worst;
     const I zi = (I)((U)moved - (U)shifter_int);
     std::memcpy(z, &zi, sizeof zi);
     const U residue = (U)zi + (p & (U)(zi >> 63));
-    U e;
-    for (std::size_t l = 0; l < kLanes; ++l) e[l] = rotation[l];
+    U e;  // 64-bit entries: a plain load, no widening shuffle
+    std::memcpy(&e, rotation, sizeof e);
     return ((residue << e) & p) + (residue >> (sixty_one - e));
   }
   TK_INLINE void accumulate(U& into, const U& t) const {
     into += t;
     into = (into & p) + (into >> 61);
   }
-  TK_INLINE void add_low(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+  TK_INLINE void add_low(const V& value, const std::uint64_t* __restrict rotation, std::int64_t* __restrict z) {
     accumulate(sum, term(value, rotation, z));
   }
-  TK_INLINE void add_high(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z) {
+  TK_INLINE void add_high(const V& value, const std::uint64_t* __restrict rotation, std::int64_t* __restrict z) {
     accumulate(sum_high, term(value, rotation, z));
   }
   // The vector where the low coefficients end: its first `low_lanes` to sum.
-  TK_INLINE void add_split(const V& value, const std::uint8_t* __restrict rotation, std::int64_t* __restrict z,
+  TK_INLINE void add_split(const V& value, const std::uint64_t* __restrict rotation, std::int64_t* __restrict z,
                            std::size_t low_lanes) {
     const U t = term(value, rotation, z);
     U low{}, high{};
@@ -107,10 +108,11 @@ struct Rounder {
     std::uint64_t total = 0, total_high = 0;
     for (std::size_t lane = 0; lane < kLanes; ++lane) {
       result.worst = std::max(result.worst, worst[lane]);
-      result.out_of_range |= !(biggest[lane] < 0x1p51) || probe[lane] != probe[lane];
+      result.out_of_range |= biggest_bits[lane] >= kRangeBits;
       total = fold61(total + sum[lane]);
       total_high = fold61(total_high + sum_high[lane]);
     }
+    if (result.out_of_range) result.worst = std::min(result.worst, 0.5);
     result.sum = total;
     result.sum_high = total_high;
     return result;
@@ -119,7 +121,7 @@ struct Rounder {
 
 template <class V, class I, class U>
 TK_INLINE RoundedCoefficients round_with(const double* __restrict output, const double* __restrict weight,
-                                         const std::uint8_t* __restrict rotation, std::int64_t* __restrict z,
+                                         const std::uint64_t* __restrict rotation, std::int64_t* __restrict z,
                                          std::size_t count, std::size_t low) {
   Rounder<V, I, U> rounder;
   constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
@@ -153,16 +155,25 @@ TK_INLINE RoundedCoefficients round_with(const double* __restrict output, const 
 template <class V, class I, class U>
 TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re, const double* __restrict im,
                                                      const RightAngleWeights& w,
-                                                     const std::uint8_t* __restrict rotation,
-                                                     std::int64_t* __restrict z, std::size_t half, std::size_t low) {
+                                                     const std::uint64_t* __restrict rotation,
+                                                     std::int64_t* __restrict z, std::size_t half, std::size_t low,
+                                                     std::size_t count) {
   Rounder<V, I, U> rounder;
   constexpr std::size_t lanes = Rounder<V, I, U>::kLanes;
   // Below `low`, across it (one vector), past it: no select in the loops.
+  // The partners at j + half are rounded only below `count` (past it the
+  // square is zero: its weights are).
   const std::size_t low_end = low / lanes * lanes;
+  const std::size_t partner_end = count > half ? std::min(half, (count - half + lanes - 1) / lanes * lanes) : 0;
+  // The weights' pointers as locals: z's stores cannot then make the loop reload them.
+  const double* __restrict a = w.a;
+  const double* __restrict b = w.b;
+  const double* __restrict c = w.c;
+  const double* __restrict d = w.d;
   auto both = [&](std::size_t j, auto&& first) __attribute__((always_inline)) {
     const V r = load<V>(re + j), m = load<V>(im + j);
-    first(r * load<V>(w.a + j) + m * load<V>(w.b + j), j);
-    rounder.add_high(m * load<V>(w.c + j) - r * load<V>(w.d + j), rotation + half + j, z + half + j);
+    first(r * load<V>(a + j) + m * load<V>(b + j), j);
+    if (j < partner_end) rounder.add_high(m * load<V>(c + j) - r * load<V>(d + j), rotation + half + j, z + half + j);
   };
   std::size_t j = 0;
   for (; j < low_end; j += lanes)
@@ -179,41 +190,42 @@ TK_INLINE RoundedCoefficients round_right_angle_with(const double* __restrict re
 }
 
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients round_avx512(const double* output, const double* weight,
-                                                                             const std::uint8_t* rotation,
+                                                                             const std::uint64_t* rotation,
                                                                              std::int64_t* z, std::size_t count,
                                                                              std::size_t low) {
   return round_with<v8d, v8i, v8u>(output, weight, rotation, z, count, low);
 }
 
 __attribute__((target("avx2"))) RoundedCoefficients round_avx2(const double* output, const double* weight,
-                                                               const std::uint8_t* rotation, std::int64_t* z,
+                                                               const std::uint64_t* rotation, std::int64_t* z,
                                                                std::size_t count, std::size_t low) {
   return round_with<v4d, v4i, v4u>(output, weight, rotation, z, count, low);
 }
 
-RoundedCoefficients round_portable(const double* output, const double* weight, const std::uint8_t* rotation,
+RoundedCoefficients round_portable(const double* output, const double* weight, const std::uint64_t* rotation,
                                    std::int64_t* z, std::size_t count, std::size_t low) {
   return round_with<v4d, v4i, v4u>(output, weight, rotation, z, count, low);
 }
 
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients right_angle_avx512(const double* re, const double* im,
                                                                                    const RightAngleWeights& weights,
-                                                                                   const std::uint8_t* rotation,
+                                                                                   const std::uint64_t* rotation,
                                                                                    std::int64_t* z, std::size_t half,
-                                                                                   std::size_t low) {
-  return round_right_angle_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half, low);
+                                                                                   std::size_t low, std::size_t count) {
+  return round_right_angle_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half, low, count);
 }
 
 __attribute__((target("avx2"))) RoundedCoefficients right_angle_avx2(const double* re, const double* im,
                                                                      const RightAngleWeights& weights,
-                                                                     const std::uint8_t* rotation, std::int64_t* z,
-                                                                     std::size_t half, std::size_t low) {
-  return round_right_angle_with<v4d, v4i, v4u>(re, im, weights, rotation, z, half, low);
+                                                                     const std::uint64_t* rotation, std::int64_t* z,
+                                                                     std::size_t half, std::size_t low,
+                                                                     std::size_t count) {
+  return round_right_angle_with<v4d, v4i, v4u>(re, im, weights, rotation, z, half, low, count);
 }
 
 }  // namespace
 
-RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint8_t* rotation,
+RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint64_t* rotation,
                                        std::int64_t* z, std::size_t count, std::size_t low) {
   if (cpu::has_avx512()) return round_avx512(output, weight, rotation, z, count, low);
   return cpu::has_avx2() ? round_avx2(output, weight, rotation, z, count, low)
@@ -222,10 +234,10 @@ RoundedCoefficients round_coefficients(const double* output, const double* weigh
 
 // Only the right-angle transform's callers come here, and it needs AVX2.
 RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
-                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half, std::size_t low,
-                                      bool wide) {
-  return wide && cpu::has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half, low)
-                                   : right_angle_avx2(re, im, weights, rotation, z, half, low);
+                                      const std::uint64_t* rotation, std::int64_t* z, std::size_t half, std::size_t low,
+                                      std::size_t count, bool wide) {
+  return wide && cpu::has_avx512() ? right_angle_avx512(re, im, weights, rotation, z, half, low, count)
+                                   : right_angle_avx2(re, im, weights, rotation, z, half, low, count);
 }
 
 // ---- One square split over threads ----
@@ -234,7 +246,7 @@ namespace {
 
 template <class V, class I, class U>
 TK_INLINE RoundedCoefficients round_columns_with(const double* __restrict re, const double* __restrict im,
-                                                 const RightAngleWeights& w, const std::uint8_t* __restrict rotation,
+                                                 const RightAngleWeights& w, const std::uint64_t* __restrict rotation,
                                                  std::int64_t* __restrict z, std::size_t half, std::size_t low,
                                                  std::size_t period, std::size_t from, std::size_t to) {
   Rounder<V, I, U> rounder;
@@ -254,9 +266,9 @@ TK_INLINE RoundedCoefficients round_columns_with(const double* __restrict re, co
   return result;
 }
 
-#define TK_COLUMNS_ARGS                                                                                                \
-  const double *re, const double *im, const RightAngleWeights &weights, const std::uint8_t *rotation, std::int64_t *z, \
-      std::size_t half, std::size_t low, std::size_t period, std::size_t from, std::size_t to
+#define TK_COLUMNS_ARGS                                                                                \
+  const double *re, const double *im, const RightAngleWeights &weights, const std::uint64_t *rotation, \
+      std::int64_t *z, std::size_t half, std::size_t low, std::size_t period, std::size_t from, std::size_t to
 __attribute__((target("avx512f,avx512dq"))) RoundedCoefficients columns_avx512(TK_COLUMNS_ARGS) {
   return round_columns_with<v8d, v8i, v8u>(re, im, weights, rotation, z, half, low, period, from, to);
 }
@@ -268,7 +280,7 @@ __attribute__((target("avx2"))) RoundedCoefficients columns_avx2(TK_COLUMNS_ARGS
 }  // namespace
 
 RoundedCoefficients round_right_angle_columns(const double* re, const double* im, const RightAngleWeights& weights,
-                                              const std::uint8_t* rotation, std::int64_t* z, std::size_t half,
+                                              const std::uint64_t* rotation, std::int64_t* z, std::size_t half,
                                               std::size_t low, std::size_t period, std::size_t from, std::size_t to,
                                               bool wide) {
   return wide && cpu::has_avx512() ? columns_avx512(re, im, weights, rotation, z, half, low, period, from, to)

@@ -20,7 +20,7 @@ struct RoundedCoefficients {
 
 /// z[j] = round(output[j] * weight[j]) for j < count; rotation[j] = e_j mod 61.
 /// The sums are split at index `low` (the reduction needs both parts).
-RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint8_t* rotation,
+RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint64_t* rotation,
                                        std::int64_t* z, std::size_t count, std::size_t low);
 
 /// The right-angle transform's output (RightAngleSquarer::square_in_place),
@@ -29,6 +29,7 @@ RoundedCoefficients round_coefficients(const double* output, const double* weigh
 /// digits' weights and the scale in one). half is a multiple of 8; z and
 /// rotation have 2 * half places (weights zero and rotations zero past the
 /// square's last coefficient). The sums are split at index `low` < half.
+/// Only z[j] for j < count (the square's coefficients) is written.
 struct RightAngleWeights {
   const double* a;
   const double* b;
@@ -37,15 +38,15 @@ struct RightAngleWeights {
 };
 /// `wide`: AVX-512 where the CPU has it, else AVX2.
 RoundedCoefficients round_right_angle(const double* re, const double* im, const RightAngleWeights& weights,
-                                      const std::uint8_t* rotation, std::int64_t* z, std::size_t half, std::size_t low,
-                                      bool wide);
+                                      const std::uint64_t* rotation, std::int64_t* z, std::size_t half, std::size_t low,
+                                      std::size_t count, bool wide);
 
 /// round_right_angle on the points j < half whose index modulo `period`
 /// is in [from, to) (multiples of the lanes, 8), and their partners at
 /// j + half: one thread's part of a split square. The sums are reduced;
 /// combine() adds two parts' (the same as one pass over both).
 RoundedCoefficients round_right_angle_columns(const double* re, const double* im, const RightAngleWeights& weights,
-                                              const std::uint8_t* rotation, std::int64_t* z, std::size_t half,
+                                              const std::uint64_t* rotation, std::int64_t* z, std::size_t half,
                                               std::size_t low, std::size_t period, std::size_t from, std::size_t to,
                                               bool wide);
 RoundedCoefficients combine(const RoundedCoefficients& a, const RoundedCoefficients& b);

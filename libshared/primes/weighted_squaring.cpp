@@ -45,7 +45,7 @@ bool WeightedSquaring::square_and_reduce(unsigned long minus) {
     right_angle_->square_in_place();
     const RightAngleWeights weights{round_a_.data(), round_b_.data(), round_c_.data(), round_d_.data()};
     rounded = round_right_angle(right_angle_->real(), right_angle_->imaginary(), weights, rotation_.data(), z,
-                                length_ / 2, m, wide_);
+                                length_ / 2, m, coefficients_, wide_);
   } else {
     square_by_real_fft(*plans_, input_, static_cast<fftw_complex*>(spectrum_), output_, length_);
     rounded = round_coefficients(output_, output_weight_.data(), rotation_.data(), z, coefficients_, m);
@@ -62,7 +62,7 @@ bool WeightedSquaring::square_and_reduce(unsigned long minus) {
   const SplitK split{k_low_, k_high_, static_cast<unsigned>(max_digit_bits_)};
   multiply_low_by_k(z, bits, m, split, c < 0, wide_);
   z[0] -= c * low_carry;
-  const std::int64_t carry = balance_digits(z, bits, m, 1, wide_);
+  const std::int64_t carry = balance_digits(z, bits, m, kProductCarryEnough, wide_);
   const i128 y = static_cast<i128>(upper) + carry + c * static_cast<i128>(minus);
   std::int64_t a = 0, b = 0;
   if (!divide_by_k(y, form_.k, a, b)) return false;  // cannot happen for t held here; never fold a wrong value
@@ -176,7 +176,8 @@ void WeightedSquaring::store(mpz_class& x) const {
 
 bool WeightedSquaring::holds_carried_residue() const {
   std::uint64_t sum = 0;
-  for (std::size_t j = 0; j < digits_; ++j) sum = fold61(sum + times_power61(residue61(digit_[j]), rotation_[j]));
+  for (std::size_t j = 0; j < digits_; ++j)
+    sum = fold61(sum + times_power61(residue61(digit_[j]), static_cast<unsigned>(rotation_[j])));
   return reduce61(sum) == value_mod_p_;
 }
 

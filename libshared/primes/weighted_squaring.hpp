@@ -51,10 +51,10 @@ class WeightedSquaring {
   /// FFTW's always. TOOLKIT_RIESEL_TRANSFORM=avx2 or fftw sets create()'s.
   enum class Transform { widest, avx2, fftw };
 
-  /// A given transform length and largest digit size, unchecked for
-  /// rounding safety (for tests of the checks); nothing when the square
-  /// would not fit the length.
-  static std::unique_ptr<WeightedSquaring> create_with(const SpecialForm& form, std::size_t length, int digit_bits,
+  /// A given transform length and average digit size (the low digits are
+  /// ceil(n / average_bits)), unchecked for rounding safety (for tests of
+  /// the checks); nothing when the square would not fit the length.
+  static std::unique_ptr<WeightedSquaring> create_with(const SpecialForm& form, std::size_t length, double average_bits,
                                                        Transform transform = Transform::widest);
 
   WeightedSquaring(const WeightedSquaring&) = delete;
@@ -82,7 +82,8 @@ class WeightedSquaring {
   std::size_t transform_length() const { return length_; }
   /// "right-angle, 8 lanes" or "FFTW": which transform squares.
   std::string transform_name() const;
-  int digit_bits() const { return max_digit_bits_; }  ///< the largest s_j
+  int digit_bits() const { return max_digit_bits_; }      ///< the largest s_j
+  std::size_t low_digits() const { return low_digits_; }  ///< m: the digits below 2^n
   double worst_roundoff() const { return worst_roundoff_; }
   std::uint64_t fallbacks() const { return fallbacks_; }
 
@@ -114,6 +115,10 @@ class WeightedSquaring {
   std::int64_t carry_enough() const {
     return (std::int64_t{1} << digit_bound_bits_) - (std::int64_t{1} << (max_digit_bits_ - 1)) - 1;
   }
+  /// The product's carries stop at this: the next square's digits may
+  /// exceed [-2^(s-1), 2^(s-1)) by up to 2^10 (under 0.1 % of a 20-bit
+  /// digit, no change in rounding), a lane pass fewer than carrying to 1.
+  static constexpr std::int64_t kProductCarryEnough = 1024;
   /// Notes the rounding; whether the square is safe to reduce.
   bool rounding_checks_out(const RoundedCoefficients& rounded);
   /// Y's digits from m up (weighted_squaring.cpp), from the carried coefficients.
@@ -137,7 +142,7 @@ class WeightedSquaring {
   int max_digit_bits_ = 0;
   std::vector<std::uint64_t> exponent_;  ///< e_j, j <= coefficients_
   std::vector<std::uint8_t> bits_;       ///< s_j
-  std::vector<std::uint8_t> rotation_;   ///< e_j mod 61: 2^(e_j) mod 2^61-1 is a rotation
+  std::vector<std::uint64_t> rotation_;  ///< e_j mod 61: 2^(e_j) mod 2^61-1 is a rotation
   std::vector<double> input_weight_;     ///< 2^(e_j - nj/m)
   std::vector<double> output_weight_;    ///< its inverse over L
   // The right-angle transform's: input_weight_ times cos and sin(pi*j/L),

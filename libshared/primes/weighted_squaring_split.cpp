@@ -29,7 +29,7 @@ namespace {
 
 // Below this transform length a second thread did not pay (bench_riesel's
 // split table, riesel(1)).
-constexpr std::size_t kSplitFromLength = 18432;
+constexpr std::size_t kSplitFromLength = 16384;
 
 // Paced splits: a trial of this many squarings each way, then this many
 // squarings the faster way (the trials cost a few percent at worst).
@@ -149,7 +149,8 @@ bool WeightedSquaring::square_and_reduce_split(unsigned long minus) {
                            part + 1 == parts ? m : share(m / 8, part + 1, parts) * 8, split, c < 0, wide_);
     threads.barrier();                           // the carries' ranges are not the multiplication's
     if (part == 0) product[0] -= c * low_carry;  // digit 0 is part 0's in the carries
-    const std::int64_t out = balance_digits_split(product, bits, m, 1, wide_, threads, part, carry_exchange_);
+    const std::int64_t out =
+        balance_digits_split(product, bits, m, kProductCarryEnough, wide_, threads, part, carry_exchange_);
     if (part == 0) carry = out;
   });
   weights_pending_ = false;
