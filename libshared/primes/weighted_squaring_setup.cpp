@@ -93,9 +93,15 @@ constexpr int kTimingTurns = 4, kSquaringsPerTurn = 8;
 const std::vector<std::size_t>& candidate_lengths() {
   static const std::vector<std::size_t> lengths = [] {
     std::vector<std::size_t> all = fast_fft_lengths();
-    for (std::size_t power = 64; power <= (std::size_t{1} << 22); power *= 2)
+    for (std::size_t power = 64; power <= (std::size_t{1} << 22); power *= 2) {
       for (std::size_t odd : {15, 27, 135})
         if (odd * power >= kTimeFromLength) all.push_back(odd * power);
+      // Only ours plans these below the timed lengths (FFTW's list has
+      // no 27 or 81): 3456 = 27*128 takes the seed's n = 36627 at the
+      // rule's digits, 10 to 14 % faster than 4096.
+      for (std::size_t odd : {27, 81})
+        if (odd * power < kTimeFromLength) all.push_back(odd * power);
+    }
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     return all;
