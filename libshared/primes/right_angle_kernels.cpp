@@ -106,6 +106,31 @@ TK_INLINE Point<V> untwiddled(const Point<V>& a, const double* twr, const double
   return b;
 }
 
+// Where a forward pass reads its points: re/im, or (the first pass of a
+// weighted square) digits times their weights. The weighted point is
+// pinned in registers before any butterfly sees it, so no multiply-add
+// fuses it: the same roundings as weighting into re/im first.
+template <class V>
+struct FromArrays {
+  const double* re;
+  const double* im;
+  TK_INLINE Point<V> operator()(std::size_t at) const { return get<V>(re, im, at); }
+};
+template <class V, class I>
+struct FromDigits {
+  const std::int64_t* digits;
+  const double* weight_re;
+  const double* weight_im;
+  TK_INLINE Point<V> operator()(std::size_t at) const {
+    I whole;
+    std::memcpy(&whole, digits + at, sizeof whole);
+    const V value = __builtin_convertvector(whole, V);
+    V r = value * load<V>(weight_re + at), m = value * load<V>(weight_im + at);
+    __asm__("" : "+v"(r), "+v"(m));
+    return {r, m};
+  }
+};
+
 // Which butterflies of each block a call does: columns j in [from, to)
 // (all by default; a thread of a split square takes a window of them).
 struct Columns {
@@ -125,19 +150,24 @@ TK_INLINE void for_each_butterfly(int radix, std::size_t block, std::size_t begi
     for (std::size_t j = columns.from; j < to; j += kLanes<V>) butterfly(base + j, j, q);
 }
 
+template <class V, class Source>
+TK_INLINE void forward4_from(const Source& source, double* re, double* im, const double* twr, const double* twi,
+                             std::size_t block, std::size_t begin, std::size_t end, Columns columns) {
+  for_each_butterfly<V>(
+      4, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
+        const Point<V> a = source(at), b = source(at + q), c = source(at + 2 * q), d = source(at + 3 * q);
+        const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
+        put(re, im, at, t0 + t2);
+        put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
+        put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
+        put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
+      });
+}
+
 template <class V>
 TK_INLINE void forward4(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  for_each_butterfly<V>(4, block, begin, end, columns,
-                        [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
-                          const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q),
-                                         c = get<V>(re, im, at + 2 * q), d = get<V>(re, im, at + 3 * q);
-                          const Point<V> t0 = a + c, t1 = a - c, t2 = b + d, t3 = times_i(b - d);
-                          put(re, im, at, t0 + t2);
-                          put(re, im, at + q, twiddled(t1 - t3, twr, twi, j));
-                          put(re, im, at + 2 * q, twiddled(t0 - t2, twr, twi, q + j));
-                          put(re, im, at + 3 * q, twiddled(t1 + t3, twr, twi, 2 * q + j));
-                        });
+  forward4_from<V>(FromArrays<V>{re, im}, re, im, twr, twi, block, begin, end, columns);
 }
 
 template <class V>
@@ -156,15 +186,21 @@ TK_INLINE void inverse4(double* re, double* im, const double* twr, const double*
                         });
 }
 
-template <class V>
-TK_INLINE void forward2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
-                        std::size_t begin, std::size_t end, Columns columns = {}) {
+template <class V, class Source>
+TK_INLINE void forward2_from(const Source& source, double* re, double* im, const double* twr, const double* twi,
+                             std::size_t block, std::size_t begin, std::size_t end, Columns columns) {
   for_each_butterfly<V>(2, block, begin, end, columns,
                         [&](std::size_t at, std::size_t j, std::size_t h) TK_LAMBDA_INLINE {
-                          const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + h);
+                          const Point<V> a = source(at), b = source(at + h);
                           put(re, im, at, a + b);
                           put(re, im, at + h, twiddled(a - b, twr, twi, j));
                         });
+}
+
+template <class V>
+TK_INLINE void forward2(double* re, double* im, const double* twr, const double* twi, std::size_t block,
+                        std::size_t begin, std::size_t end, Columns columns = {}) {
+  forward2_from<V>(FromArrays<V>{re, im}, re, im, twr, twi, block, begin, end, columns);
 }
 
 template <class V>
@@ -181,19 +217,25 @@ TK_INLINE void inverse2(double* re, double* im, const double* twr, const double*
 constexpr double kHalfRoot3 = 0.86602540378443864676;  // sin(2*pi/3)
 
 // y1, y2 = m -+ i*h*d (forward: e^(-2*pi*i/3) = -1/2 - i*h), or +- for the inverse.
+template <class V, class Source>
+TK_INLINE void forward3_from(const Source& source, double* re, double* im, const double* twr, const double* twi,
+                             std::size_t block, std::size_t begin, std::size_t end, Columns columns) {
+  const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
+  for_each_butterfly<V>(3, block, begin, end, columns,
+                        [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
+                          const Point<V> a = source(at), b = source(at + q), c = source(at + 2 * q);
+                          const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
+                          const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
+                          put(re, im, at, a + sum);
+                          put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
+                          put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
+                        });
+}
+
 template <class V>
 TK_INLINE void forward3(double* re, double* im, const double* twr, const double* twi, std::size_t block,
                         std::size_t begin, std::size_t end, Columns columns = {}) {
-  const V half = splat<V>(0.5), h = splat<V>(kHalfRoot3);
-  for_each_butterfly<V>(
-      3, block, begin, end, columns, [&](std::size_t at, std::size_t j, std::size_t q) TK_LAMBDA_INLINE {
-        const Point<V> a = get<V>(re, im, at), b = get<V>(re, im, at + q), c = get<V>(re, im, at + 2 * q);
-        const Point<V> sum = b + c, m = {a.r - half * sum.r, a.m - half * sum.m};
-        const Point<V> ihd = times_i(Point<V>{h * (b.r - c.r), h * (b.m - c.m)});
-        put(re, im, at, a + sum);
-        put(re, im, at + q, twiddled(m - ihd, twr, twi, j));
-        put(re, im, at + 2 * q, twiddled(m + ihd, twr, twi, q + j));
-      });
+  forward3_from<V>(FromArrays<V>{re, im}, re, im, twr, twi, block, begin, end, columns);
 }
 
 template <class V>
@@ -223,6 +265,19 @@ TK_INLINE void run_stage(const Arrays& a, const RightAngleSquarer::Stage& stage,
     case -3: return inverse3<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
     case 2: return forward2<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
     default: return inverse2<V>(a.re, a.im, twr, twi, stage.block, begin, end, columns);
+  }
+}
+
+// The first forward pass, reading digits times their weights (Arrays::digits).
+template <class V, class I>
+TK_INLINE void run_first_stage_from_digits(const Arrays& a, std::size_t begin, std::size_t end, Columns columns = {}) {
+  const RightAngleSquarer::Stage& stage = a.stages[0];
+  const double *twr = a.twiddle_re + stage.twiddles, *twi = a.twiddle_im + stage.twiddles;
+  const FromDigits<V, I> source{a.digits, a.weight_re, a.weight_im};
+  switch (stage.radix) {
+    case 4: return forward4_from<V>(source, a.re, a.im, twr, twi, stage.block, begin, end, columns);
+    case 3: return forward3_from<V>(source, a.re, a.im, twr, twi, stage.block, begin, end, columns);
+    default: return forward2_from<V>(source, a.re, a.im, twr, twi, stage.block, begin, end, columns);
   }
 }
 
@@ -458,17 +513,21 @@ namespace {
 // whose index modulo Q is in [from, to): every point such a pass reads or
 // writes has its index modulo Q in that window too, so a thread that owns
 // the window runs all outer passes with no barrier between them.
-template <class V>
+template <class V, class I>
 TK_INLINE void outer_columns(const Arrays& a, bool forward, std::size_t from, std::size_t to) {
   const std::size_t period = a.inner_block;
-  auto one = [&](const RightAngleSquarer::Stage& stage) __attribute__((always_inline)) {
+  auto one = [&](const RightAngleSquarer::Stage& stage, bool from_digits) __attribute__((always_inline)) {
     const std::size_t q = stage.block / static_cast<std::size_t>(stage.radix);
-    for (std::size_t u = 0; u < q; u += period) run_stage<V>(a, stage, forward, 0, a.half, Columns{u + from, u + to});
+    for (std::size_t u = 0; u < q; u += period) {
+      const Columns columns{u + from, u + to};
+      if (from_digits) run_first_stage_from_digits<V, I>(a, 0, a.half, columns);
+      else run_stage<V>(a, stage, forward, 0, a.half, columns);
+    }
   };
   if (forward)
-    for (std::size_t s = 0; s < a.inner_from; ++s) one(a.stages[s]);
+    for (std::size_t s = 0; s < a.inner_from; ++s) one(a.stages[s], s == 0 && a.digits);
   else
-    for (std::size_t s = a.inner_from; s-- > 0;) one(a.stages[s]);
+    for (std::size_t s = a.inner_from; s-- > 0;) one(a.stages[s], false);
 }
 
 // The inner passes, pointwise square and inverse inner passes of inner
@@ -478,7 +537,10 @@ TK_INLINE void inner_blocks(const Arrays& a, std::size_t first, std::size_t last
   const LanePasses<V, I> lanes;
   for (std::size_t begin = first * a.inner_block; begin < last * a.inner_block; begin += a.inner_block) {
     const std::size_t end = begin + a.inner_block;
-    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) run_stage<V>(a, a.stages[s], true, begin, end);
+    for (std::size_t s = a.inner_from; s < a.stage_count; ++s) {
+      if (s == 0 && a.digits) run_first_stage_from_digits<V, I>(a, begin, end);
+      else run_stage<V>(a, a.stages[s], true, begin, end);
+    }
     for (std::size_t j = begin; j < end; j += kLanes<V>) lanes.square(a.re + j, a.im + j);
     for (std::size_t s = a.stage_count; s-- > a.inner_from;) run_stage<V>(a, a.stages[s], false, begin, end);
   }
@@ -488,11 +550,11 @@ TK_INLINE void inner_blocks(const Arrays& a, std::size_t first, std::size_t last
 
 __attribute__((target("avx512f,avx512dq,fma"))) void outer_columns_avx512(const Arrays& arrays, bool forward,
                                                                           std::size_t from, std::size_t to) {
-  outer_columns<v8d>(arrays, forward, from, to);
+  outer_columns<v8d, v8i>(arrays, forward, from, to);
 }
 __attribute__((target("avx2,fma"))) void outer_columns_avx2(const Arrays& arrays, bool forward, std::size_t from,
                                                             std::size_t to) {
-  outer_columns<v4d>(arrays, forward, from, to);
+  outer_columns<v4d, v4i>(arrays, forward, from, to);
 }
 __attribute__((target("avx512f,avx512dq,fma"))) void inner_blocks_avx512(const Arrays& arrays, std::size_t first,
                                                                          std::size_t last) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "primes/right_angle_transform.hpp"
 
@@ -21,6 +22,12 @@ struct Arrays {
   std::size_t stage_count;
   std::size_t inner_from;
   std::size_t inner_block;
+  /// Where set (AVX-512 only), the first forward pass reads its points as
+  /// digits[j] * (weight_re[j] + i*weight_im[j]) instead of re/im: the
+  /// weighting pass fused into it, rounded as that pass rounds.
+  const std::int64_t* digits = nullptr;
+  const double* weight_re = nullptr;
+  const double* weight_im = nullptr;
 };
 
 void square_avx512(const Arrays& arrays, const double* input, double* output);

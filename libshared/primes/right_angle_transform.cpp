@@ -143,6 +143,18 @@ void RightAngleSquarer::square_in_place() {
   outer_passes(false, 0, inner_block_);
 }
 
+void RightAngleSquarer::square_in_place_from(const std::int64_t* digits, const double* weight_re,
+                                             const double* weight_im) {
+  source_digits_ = digits;
+  source_weight_re_ = weight_re;
+  source_weight_im_ = weight_im;
+  outer_passes(true, 0, inner_block_);
+  inner_passes(0, half_ / inner_block_);
+  source_digits_ = nullptr;
+  source_weight_re_ = source_weight_im_ = nullptr;
+  outer_passes(false, 0, inner_block_);
+}
+
 void RightAngleSquarer::forward_in_place() {
   const right_angle::Arrays arrays = this->arrays();
   if (lanes_ == 8) right_angle::forward_avx512(arrays);
@@ -168,9 +180,20 @@ void RightAngleSquarer::multiply_in_place(const double* spectrum_re, const doubl
 }
 
 right_angle::Arrays RightAngleSquarer::arrays() const {
-  return {re_,         im_,   twiddle_re_,    twiddle_im_,    theta_cos_,
-          theta_sin_,  half_, stages_.data(), stages_.size(), inner_from_,
-          inner_block_};
+  return {re_,
+          im_,
+          twiddle_re_,
+          twiddle_im_,
+          theta_cos_,
+          theta_sin_,
+          half_,
+          stages_.data(),
+          stages_.size(),
+          inner_from_,
+          inner_block_,
+          source_digits_,
+          source_weight_re_,
+          source_weight_im_};
 }
 
 // ---- One square split over threads ----

@@ -53,6 +53,10 @@ class RightAngleSquarer {
   /// N times the cyclic square after, j < N; the square's coefficient j is
   /// then Re and its coefficient j + N is Im of that times theta^-j / N.
   void square_in_place();
+  /// square_in_place() on c_j = digits[j] * (weight_re[j] + i*weight_im[j]),
+  /// j < N, read by the first forward pass itself (no pass of its own);
+  /// the same result as writing c_j into real()/imaginary() first.
+  void square_in_place_from(const std::int64_t* digits, const double* weight_re, const double* weight_im);
   /// The same square split up, for products and for sums of products in
   /// the spectrum (transform_reduction): forward_in_place() turns c_j into
   /// its spectrum (in an order of the transform's own, the same every
@@ -101,6 +105,10 @@ class RightAngleSquarer {
   double* twiddle_im_ = nullptr;
   double* theta_cos_ = nullptr;  ///< cos(pi*j/L), j < N
   double* theta_sin_ = nullptr;
+  // square_in_place_from()'s input, for the length of that call.
+  const std::int64_t* source_digits_ = nullptr;
+  const double* source_weight_re_ = nullptr;
+  const double* source_weight_im_ = nullptr;
 
   // ---- One square split over threads (weighted_squaring_split.cpp) ----
  public:

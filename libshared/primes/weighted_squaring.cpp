@@ -36,13 +36,18 @@ bool WeightedSquaring::square_and_reduce(unsigned long minus) {
   if (threads_) {
     pace();
     if (split_active_) return square_and_reduce_split(minus);
-    weigh_pending();  // the split left the digits unweighted
   }
   RoundedCoefficients rounded;
   std::int64_t* z = coefficient_.data();
   const std::size_t m = low_digits_;
   if (right_angle_) {
-    right_angle_->square_in_place();
+    if (weights_pending_ && weigh_in_transform_) {
+      right_angle_->square_in_place_from(digit_.data(), re_weight_.data(), im_weight_.data());
+      weights_pending_ = false;
+    } else {
+      weigh_pending();  // a split square left the digits unweighted
+      right_angle_->square_in_place();
+    }
     const RightAngleWeights weights{round_a_.data(), round_b_.data(), round_c_.data(), round_d_.data()};
     rounded = round_right_angle(right_angle_->real(), right_angle_->imaginary(), weights, rotation_.data(), z,
                                 length_ / 2, m, coefficients_, wide_);
@@ -113,6 +118,12 @@ void WeightedSquaring::update_residue(const RoundedCoefficients& rounded, std::i
 }
 
 void WeightedSquaring::write_input(std::int64_t top) {
+  if (weigh_in_transform_) {  // the digits alone: the next square's first pass weighs them
+    std::copy(coefficient_.begin(), coefficient_.begin() + static_cast<std::ptrdiff_t>(low_digits_), digit_.begin());
+    write_top_digits(digit_.data(), bits_.data(), low_digits_, digits_, top);
+    weights_pending_ = true;
+    return;
+  }
   weights_pending_ = false;  // every digit weighted here
   FoldTarget target{digit_.data(), input_, input_weight_.data(), nullptr, nullptr, wide_};
   if (right_angle_) {

@@ -160,7 +160,10 @@ class WeightedSquaring {
   void* spectrum_ = nullptr;             ///< FFTW-aligned, length_/2 + 1 complex
   const RealFftPlans* plans_ = nullptr;  ///< FFTW's, where right_angle_ is not used
   std::unique_ptr<RightAngleSquarer> right_angle_;
-  bool wide_ = true;                       ///< the passes may use AVX-512 (where the CPU has it)
+  bool wide_ = true;  ///< the passes may use AVX-512 (where the CPU has it)
+  /// The digits are weighted by the transform's first pass (AVX-512), not
+  /// by a pass of their own: write_input() leaves them pending.
+  bool weigh_in_transform_ = false;
   std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded, then carried; L places
   std::uint64_t value_mod_p_ = 0;          ///< the input's value (t) mod 2^61-1
   std::uint64_t square_mod_p_ = 0;         ///< its square's, from the coefficients

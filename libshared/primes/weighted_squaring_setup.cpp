@@ -208,7 +208,7 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   }
   coefficient_.assign(length, 0);
   rotation_.resize(length, 0);
-  digit_.assign(digits_, 0);
+  digit_.assign(length / 2, 0);  // zero past digits_: the transform's first pass may read them
   modulus_mod_p_ = mpz_fdiv_ui(modulus_of(form).get_mpz_t(), kP61);
   k_mod_p_ = form.k % kP61;
   two_n_mod_p_ = times_power61(1, static_cast<unsigned>(n % 61));
@@ -220,6 +220,7 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   wide_ = right_angle_ ? right_angle_->lanes() == 8 : transform != Transform::avx2;
   if (right_angle_) {
     right_angle_weights();
+    weigh_in_transform_ = right_angle_->lanes() == 8;
     return;
   }
   // FFTW's arrays, only where FFTW squares (ours works in its own).
@@ -252,8 +253,8 @@ void WeightedSquaring::right_angle_weights() {
   const std::size_t half = length_ / 2;
   const double* cosine = right_angle_->theta_cos();
   const double* sine = right_angle_->theta_sin();
-  re_weight_.resize(digits_);
-  im_weight_.resize(digits_);
+  re_weight_.assign(half, 0.0);  // zero past digits_, read with the zero digits there
+  im_weight_.assign(half, 0.0);
   for (std::size_t j = 0; j < digits_; ++j) {
     re_weight_[j] = input_weight_[j] * cosine[j];
     im_weight_[j] = input_weight_[j] * sine[j];
