@@ -7,7 +7,7 @@
 /// and few may be nearest to its points. Each leaf keeps
 ///  - the elements that may be nearest to one of its points: those within
 ///    the centre's nearest distance plus a leaf diagonal, pruned by the
-///    same test on quarters of the leaf, twice over (less where it stops
+///    same test on quarters of the leaf, once (not where it stops
 ///    pruning), which leaves little more than the elements whose Voronoi
 ///    regions meet the leaf. The lists come top down (see
 ///    region_index_cells.cpp) so the build grows as about n log n; a cell
