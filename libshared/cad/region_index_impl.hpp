@@ -256,10 +256,9 @@ struct RegionIndex::Impl {
 
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);
   void tree_nearest(Point p, double& best2, std::uint32_t& best) const;
-  /// The elements within `radius` of p, (distance, element); false (out
-  /// unfinished) as soon as there are more than `cap`.
-  bool tree_within(Point p, double radius, std::vector<std::pair<double, std::uint32_t>>& out,
-                   std::size_t cap = SIZE_MAX) const;
+  /// The elements within `radius` of p (and any whose padded box is);
+  /// false (out unfinished) as soon as there are more than `cap`.
+  bool tree_within(Point p, double radius, std::vector<std::uint32_t>& out, std::size_t cap = SIZE_MAX) const;
   bool tree_ray_parity(Point p) const;
   void build_grid();
   /// The windows of the blocks of cells in rows [row_begin, row_end) of blocks.
