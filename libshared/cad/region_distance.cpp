@@ -7,7 +7,7 @@
 /// and few may be nearest to its points. Each leaf keeps
 ///  - the elements that may be nearest to one of its points: those within
 ///    the centre's nearest distance plus a leaf diagonal, pruned by the
-///    same test on quarters of the leaf, twice over (less where it stops
+///    same test on quarters of the leaf, once (not where it stops
 ///    pruning), which leaves little more than the elements whose Voronoi
 ///    regions meet the leaf. The lists come top down (see
 ///    region_index_cells.cpp) so the build grows as about n log n; a cell
@@ -64,8 +64,7 @@ void RegionIndex::Impl::tree_nearest(Point p, double& best2, std::uint32_t& best
   }
 }
 
-bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::pair<double, std::uint32_t>>& out,
-                                    std::size_t cap) const {
+bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::uint32_t>& out, std::size_t cap) const {
   const double r2 = radius * radius;
   std::uint32_t stack[128];
   std::size_t top = 0;
@@ -74,17 +73,26 @@ bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::pai
     const std::uint32_t index = stack[--top];
     const Node& node = nodes[index];
     if (box_distance2(node.box, p) > r2) continue;
-    // Every element of a box within the radius is: past the cap, stop
-    // before examining them (a wide cell's window fails fast).
-    if (out.size() + (node.count > 0 ? node.count : node.first) > cap && box_far2(node.box, p) <= r2) return false;
+    if (box_far2(node.box, p) <= r2) {
+      // Every element of a box within the radius is: past the cap, stop
+      // (a wide cell's window fails fast); else take them all without a
+      // distance each (a subtree's elements are a run of `order`, starting
+      // at its leftmost leaf's).
+      const std::uint32_t count = node.count > 0 ? node.count : node.first;
+      if (out.size() + count > cap) return false;
+      std::uint32_t leftmost = index;
+      while (nodes[leftmost].count == 0) ++leftmost;
+      const auto run = order.begin() + nodes[leftmost].first;
+      out.insert(out.end(), run, run + count);
+      continue;
+    }
     if (node.count == 0) {
       stack[top++] = node.right;
       stack[top++] = index + 1;
       continue;
     }
     for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-      const double d2 = distance2(kernels[order[i]], p);
-      if (d2 <= r2) out.emplace_back(std::sqrt(d2), order[i]);
+      if (distance2(kernels[order[i]], p) <= r2) out.push_back(order[i]);
     }
     if (out.size() > cap) return false;
   }

@@ -65,11 +65,8 @@ void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, 
   tree_nearest(c, best2, best);
   const double nearest = std::sqrt(best2);
   const double reach = (nearest + std::sqrt(2.0) * double(span) * size) * (1 + 1e-9);
-  std::vector<std::pair<double, std::uint32_t>> found;
-  if (tree_within(c, reach, found, kWideWindow)) {
-    std::vector<std::uint32_t> list;
-    list.reserve(found.size());
-    for (const auto& entry : found) list.push_back(entry.second);
+  std::vector<std::uint32_t> list;
+  if (tree_within(c, reach, list, kWideWindow)) {
     split_block(w, x0, y0, span, list, nearest);
   } else if (span > 1) {
     const std::size_t half_span = span / 2;
