@@ -77,11 +77,8 @@ std::vector<Stretch> brute_force_stretches(const std::vector<Loop>& drawn, const
 void expect_brute_force_stretches(const std::vector<Segment>& segments, double radius, MachiningSide side,
                                   const std::string& what) {
   const LoopSet set = build_loops(segments, 1e-6);
-  const RegionIndex index(set.loops);
-  OffsetOptions options;
-  options.tool_radius = radius;
-  options.side = side;
-  const RegionOffset offset = offset_region(set.loops, index, options);
+  const OffsetOptions options{.tool_radius = radius, .side = side};
+  const RegionOffset offset = offset_region(set.loops, RegionIndex(set.loops), options);
   const std::vector<Stretch> expected = brute_force_stretches(set.loops, offset.loops, radius, options);
   ASSERT_EQ(offset.uncut.size(), expected.size()) << what;
   for (std::size_t i = 0; i < expected.size(); ++i) {
