@@ -106,8 +106,11 @@ bool simple_and_disjoint(const ClipperLib::Paths& paths) {
     const ClipperLib::Path& path = paths[p];
     if (path.size() < 3) return false;
     for (std::size_t i = 0; i < path.size(); ++i) {
-      const IntPoint& from = path[i];
-      const IntPoint& to = path[(i + 1) % path.size()];
+      // Transposed, so the sweep line runs along x as Clipper's does: where
+      // the caller turned the paths for Clipper (clipper_sweep.hpp), it
+      // crosses few edges for this sweep too. Meeting is unchanged by it.
+      const IntPoint from{path[i].Y, path[i].X};
+      const IntPoint to{path[(i + 1) % path.size()].Y, path[(i + 1) % path.size()].X};
       if (from == to) return false;  // a repeated vertex: not a polygon's edge
       const bool forward = lexicographic_less(from, to);
       edges.push_back({forward ? from : to, forward ? to : from, from, to, p, i, path.size()});
