@@ -32,14 +32,19 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
   // is no farther), so where that element alone is near enough, the
   // search is not needed. (Its distance is computed here, not by the
   // index: the margin covers the two computations' rounding.)
+  // Tried only after a sample within reach: along material left uncut
+  // (most of a gear's or comb's flanks) it would fail every time.
   const double near_enough = radius + options.uncut_report_mm - 1e-9 * (1 + radius);
+  bool last_within_reach = true;
   auto sample_gap = [&](const Segment& s, double t) {
-    if (contour && hint < contour->elements().size()) {
+    if (last_within_reach && contour && hint < contour->elements().size()) {
       const Point p = point_at(s, t);
       const double bound = points_apart(nearest_point(contour->elements()[hint], p), p);
       if (bound <= near_enough) return bound - radius;
     }
-    return gap_at(s, t);
+    const double gap = gap_at(s, t);
+    last_within_reach = gap <= options.uncut_report_mm;
+    return gap;
   };
   for (const Loop& loop : drawn) {
     const std::size_t first_of_loop = spans.size();
