@@ -45,7 +45,8 @@ std::vector<Stretch> brute_force_stretches(const std::vector<Loop>& drawn, const
       bool open = false;
       for (std::size_t i = 0; i <= samples; ++i) {
         const Point p = point_at(s, static_cast<double>(i) / samples);
-        const double gap = std::abs(brute_force_query(contour, p).distance) - radius;
+        // No contour (the tool fits nowhere): all is uncut, R + 1 deep by find_uncut's convention.
+        const double gap = contour.empty() ? radius + 1 : std::abs(brute_force_query(contour, p).distance) - radius;
         if (gap <= options.uncut_report_mm) {
           open = false;
           continue;
