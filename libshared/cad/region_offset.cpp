@@ -14,6 +14,8 @@
 #include <ctime>
 
 #include "cad/clipper_sweep.hpp"
+#include "cad/region_uncut.hpp"
+#include "cad/region_union.hpp"
 #include "cad/segment_geometry.hpp"
 #include "cli/option_checks.hpp"
 #include "io/error.hpp"
@@ -275,73 +277,6 @@ void reverse(Loop& loop) {
   loop.area = -loop.area;
 }
 
-/// Points of the drawing farther than R (+ the report threshold) from the
-/// tool's contour: material the tool cannot reach. Sampled every R / 8
-/// along each element; the deepest point of a span is then refined by a
-/// golden-section search between its neighbouring samples.
-std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIndex* contour, double radius,
-                                  const OffsetOptions& options) {
-  std::vector<UncutSpan> spans;
-  if (radius <= 0) return spans;
-  const double step = std::max(radius / 8, 10 * options.tolerance);
-  std::size_t hint = SIZE_MAX;  // the last nearest element: each point asked is near the last
-  auto gap_at = [&](const Segment& s, double t) {
-    if (!contour) return radius + 1;
-    const RegionQuery q = contour->nearest(point_at(s, t), hint);
-    hint = q.element;
-    return q.distance - radius;
-  };
-  for (const Loop& loop : drawn) {
-    const std::size_t first_of_loop = spans.size();
-    for (const Segment& s : loop.segments) {
-      const std::size_t samples = std::min<std::size_t>(10000, 1 + static_cast<std::size_t>(segment_length(s) / step));
-      std::vector<double> gaps(samples + 1);
-      for (std::size_t i = 0; i <= samples; ++i) gaps[i] = gap_at(s, static_cast<double>(i) / samples);
-      for (std::size_t i = 0; i <= samples;) {
-        if (gaps[i] <= options.uncut_report_mm) {
-          ++i;
-          continue;
-        }
-        const std::size_t begin = i;
-        std::size_t deepest = i;
-        for (; i <= samples && gaps[i] > options.uncut_report_mm; ++i)
-          if (gaps[i] > gaps[deepest]) deepest = i;
-        double lo = static_cast<double>(deepest == 0 ? 0 : deepest - 1) / samples;
-        double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
-        const double golden = (std::sqrt(5.0) - 1) / 2;
-        for (int k = 0; k < 40; ++k) {
-          const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
-          if (gap_at(s, a) > gap_at(s, b)) {
-            hi = b;
-          } else {
-            lo = a;
-          }
-        }
-        const double depth = std::max(gaps[deepest], gap_at(s, 0.5 * (lo + hi)));
-        spans.push_back({point_at(s, static_cast<double>(begin) / samples),
-                         point_at(s, static_cast<double>(i - 1) / samples), depth, s.entity, s.source_line});
-      }
-    }
-    // A corner shared by two elements shows up at the end of one and the start of the next.
-    std::vector<UncutSpan> merged(spans.begin(), spans.begin() + first_of_loop);
-    for (std::size_t i = first_of_loop; i < spans.size(); ++i) {
-      if (merged.size() > first_of_loop && norm(merged.back().to - spans[i].from) < 1e-9) {
-        merged.back().to = spans[i].to;
-        merged.back().depth = std::max(merged.back().depth, spans[i].depth);
-      } else {
-        merged.push_back(spans[i]);
-      }
-    }
-    if (merged.size() > first_of_loop + 1 && norm(merged.back().to - merged[first_of_loop].from) < 1e-9) {
-      merged[first_of_loop].from = merged.back().from;  // the loop's first corner
-      merged[first_of_loop].depth = std::max(merged[first_of_loop].depth, merged.back().depth);
-      merged.pop_back();
-    }
-    spans = std::move(merged);
-  }
-  return spans;
-}
-
 /// Adds the CPU seconds since the last call (or construction) to a stage's total.
 class StageClock {
  public:
@@ -427,11 +362,10 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     // also where a drawing's loops cross themselves or each other; Clipper
     // offsets by orientation, so hand it the even-odd union first.
     // (A union, not SimplifyPolygons: its strictly-simple pass is quadratic on spiky outlines.)
-    {
-      ClipperLib::Clipper even_odd;
-      even_odd.AddPaths(paths, ClipperLib::ptSubject, true);
-      even_odd.Execute(ClipperLib::ctUnion, paths, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
-    }
+    // Simple disjoint loops, oriented by their nesting, are their own union (region_union.hpp).
+    std::vector<bool> outer;
+    for (const Loop& loop : drawn) outer.push_back(!loop.is_hole());
+    even_odd_union(paths, outer);
     clock.add(&OffsetStageTimes::even_odd_union);
     ClipperLib::ClipperOffset offsetter;
     offsetter.ArcTolerance = join_tolerance(paths, options) / kClipperUnitMm;
