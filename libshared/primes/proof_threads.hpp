@@ -8,6 +8,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <thread>
 #include <type_traits>
@@ -59,5 +60,9 @@ class ProofThreads {
   bool stopping_ = false;
   std::vector<std::thread> workers_;
 };
+
+/// Where part `part` of `parts` starts in [0, units), the units shared out
+/// in order (part `parts` gives `units`): each thread's range of a split.
+inline std::size_t share(std::size_t units, unsigned part, unsigned parts) { return units * part / parts; }
 
 }  // namespace tk::primes

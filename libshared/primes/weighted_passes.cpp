@@ -326,8 +326,6 @@ void weigh_columns(const FoldTarget& target, std::size_t digits, std::size_t hal
 
 namespace {
 
-std::size_t share(std::size_t units, unsigned part, unsigned parts) { return units * part / parts; }
-
 // The lanes' passes split: part p carries whole vectors [share(p), share(p + 1)),
 // the last part also the digits past them.
 TK_WIDE std::int64_t lanes_split(std::int64_t* digit, const std::uint8_t* bits, std::size_t count, std::int64_t enough,

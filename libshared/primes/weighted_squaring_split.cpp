@@ -35,9 +35,6 @@ constexpr std::size_t kSplitFromLength = 16384;
 // squarings the faster way (the trials cost a few percent at worst).
 constexpr std::int64_t kTrialSquares = 32, kStretchSquares = 2048, kLongestStretch = 65536;
 
-// Part `part` of `parts` of [0, units): the first units go to the first parts.
-std::size_t share(std::size_t units, unsigned part, unsigned parts) { return units * part / parts; }
-
 }  // namespace
 
 std::size_t WeightedSquaring::split_from_length() {
