@@ -116,7 +116,12 @@ double wall_seconds() {
 void compare_split(std::uint64_t n, unsigned threads, int repeats) {
   const SpecialForm form{16869987339975, n, -1};
   auto one = WeightedSquaring::create(form);
-  auto split = WeightedSquaring::create(form);
+  // The same length and digits as `one` (create() times its candidates and
+  // may pick another length for a second squarer): n / (m - 1/2) bits give m.
+  auto split =
+      one ? WeightedSquaring::create_with(form, one->transform_length(),
+                                          static_cast<double>(n) / (static_cast<double>(one->low_digits()) - 0.5))
+          : nullptr;
   if (!one || !split || !split->use_threads(threads)) {
     std::printf("  n = %llu: no split squaring at this size\n", static_cast<unsigned long long>(n));
     return;
