@@ -481,10 +481,6 @@ __attribute__((target("avx2,fma"))) void square_avx2(const Arrays& arrays, const
   square_with<v4d, v4i>(arrays, input, output);
 }
 
-__attribute__((target("avx512f,avx512dq,fma"))) void passes_avx512(const Arrays& arrays) { passes<v8d, v8i>(arrays); }
-
-__attribute__((target("avx2,fma"))) void passes_avx2(const Arrays& arrays) { passes<v4d, v4i>(arrays); }
-
 #define TK_AVX512 __attribute__((target("avx512f,avx512dq,fma")))
 #define TK_AVX2 __attribute__((target("avx2,fma")))
 

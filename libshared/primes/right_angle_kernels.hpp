@@ -32,9 +32,6 @@ struct Arrays {
 
 void square_avx512(const Arrays& arrays, const double* input, double* output);
 void square_avx2(const Arrays& arrays, const double* input, double* output);
-/// The transform, pointwise square and inverse alone, on arrays.re/im.
-void passes_avx512(const Arrays& arrays);
-void passes_avx2(const Arrays& arrays);
 /// The forward passes alone, the inverse passes alone, the fused
 /// forward-product-inverse with a stored spectrum (re, im), and the
 /// pointwise product with it (see RightAngleSquarer's split interface).

@@ -137,12 +137,9 @@ void RightAngleSquarer::square(const double* input, double* output) {
 // By the split square's passes over every column and block: the same
 // compiled code, so the same roundings, as a square split over threads
 // (GCC fuses multiply-adds differently where the passes inline elsewhere).
-void RightAngleSquarer::square_in_place() {
-  outer_passes(true, 0, inner_block_);
-  inner_passes(0, half_ / inner_block_);
-  outer_passes(false, 0, inner_block_);
-}
+void RightAngleSquarer::square_in_place() { square_in_place_from(nullptr, nullptr, nullptr); }
 
+// No digits: the first pass reads real()/imaginary().
 void RightAngleSquarer::square_in_place_from(const std::int64_t* digits, const double* weight_re,
                                              const double* weight_im) {
   source_digits_ = digits;

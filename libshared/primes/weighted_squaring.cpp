@@ -41,7 +41,7 @@ bool WeightedSquaring::square_and_reduce(unsigned long minus) {
   std::int64_t* z = coefficient_.data();
   const std::size_t m = low_digits_;
   if (right_angle_) {
-    if (weights_pending_ && weigh_in_transform_) {
+    if (weigh_in_transform_) {  // digit_ holds the digits whether or not they were weighted
       right_angle_->square_in_place_from(digit_.data(), re_weight_.data(), im_weight_.data());
       weights_pending_ = false;
     } else {
