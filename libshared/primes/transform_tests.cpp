@@ -84,23 +84,31 @@ std::optional<std::pair<mpz_class, mpz_class>> transform_lucas_u(const mpz_class
     const std::int64_t c_odd =
         mod_check(digits18::residue_product(cn, cn) - digits18::residue_product(q, digits18::residue_product(cu, cu)));
     const std::int64_t c_next = mod_check(c_odd - digits18::residue_product(q, c_even));
-    // which: 0 = U_2j, 1 = U_2j+1, 2 = U_2j+2
-    auto combine = [&](int which) {
+    // which: 0 = U_2j, 1 = U_2j+1, 2 = U_2j+2; each loop computes only
+    // the products its value needs (the even one for 0 and 2, the odd for 1 and 2).
+    auto combine = [&]<int which>() {
       double *re = m.product_real(), *im = m.product_imaginary();
       const double *ar = us.re.data(), *ai = us.im.data(), *br = ns.re.data(), *bi = ns.im.data();
       for (std::size_t j = 0; j < h; ++j) {
-        const double er = 2.0 * br[j] - ar[j], ei = 2.0 * bi[j] - ai[j];  // 2 U_(j+1) - U_j
-        const double even_r = ar[j] * er - ai[j] * ei, even_i = ar[j] * ei + ai[j] * er;
-        const double odd_r = (br[j] * br[j] - bi[j] * bi[j]) - qd * (ar[j] * ar[j] - ai[j] * ai[j]);
-        const double odd_i = 2.0 * (br[j] * bi[j] - qd * ar[j] * ai[j]);
+        double even_r = 0, even_i = 0, odd_r = 0, odd_i = 0;
+        if constexpr (which != 1) {
+          const double er = 2.0 * br[j] - ar[j], ei = 2.0 * bi[j] - ai[j];  // 2 U_(j+1) - U_j
+          even_r = ar[j] * er - ai[j] * ei, even_i = ar[j] * ei + ai[j] * er;
+        }
+        if constexpr (which != 0) {
+          odd_r = (br[j] * br[j] - bi[j] * bi[j]) - qd * (ar[j] * ar[j] - ai[j] * ai[j]);
+          odd_i = 2.0 * (br[j] * bi[j] - qd * ar[j] * ai[j]);
+        }
         re[j] = which == 0 ? even_r : which == 1 ? odd_r : odd_r - qd * even_r;
         im[j] = which == 0 ? even_i : which == 1 ? odd_i : odd_i - qd * even_i;
       }
     };
-    combine(odd ? 1 : 0);
+    if (odd) combine.template operator()<1>();
+    else combine.template operator()<0>();
     bool ok = m.reduce(odd ? c_odd : c_even, 1.0, u_out);
     if (ok) {
-      combine(odd ? 2 : 1);
+      if (odd) combine.template operator()<2>();
+      else combine.template operator()<1>();
       ok = m.reduce(odd ? c_next : c_odd, 1.0, next_out);
     }
     if (ok) {
