@@ -47,8 +47,6 @@ class UnionFind {
   std::vector<std::size_t> parent_;
 };
 
-double distance(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
 /// Clusters end points (2k = start of segment k, 2k + 1 = its end) that are
 /// within `tolerance` of each other, directly or through a chain of ends.
 /// Clusters are numbered by their first end.

@@ -10,11 +10,7 @@
 #include "cad/segment_geometry.hpp"
 
 namespace tk::cad {
-namespace {
 
-double points_apart(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-}  // namespace
 std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIndex* contour, double radius,
                                   const OffsetOptions& options) {
   std::vector<UncutSpan> spans;
@@ -39,7 +35,7 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
   auto sample_gap = [&](const Segment& s, double t) {
     if (last_within_reach && contour && hint < contour->elements().size()) {
       const Point p = point_at(s, t);
-      const double bound = points_apart(nearest_point(contour->elements()[hint], p), p);
+      const double bound = distance(nearest_point(contour->elements()[hint], p), p);
       if (bound <= near_enough) return bound - radius;
     }
     const double gap = gap_at(s, t);
@@ -80,14 +76,14 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
     // A corner shared by two elements shows up at the end of one and the start of the next.
     std::vector<UncutSpan> merged(spans.begin(), spans.begin() + first_of_loop);
     for (std::size_t i = first_of_loop; i < spans.size(); ++i) {
-      if (merged.size() > first_of_loop && points_apart(merged.back().to, spans[i].from) < 1e-9) {
+      if (merged.size() > first_of_loop && distance(merged.back().to, spans[i].from) < 1e-9) {
         merged.back().to = spans[i].to;
         merged.back().depth = std::max(merged.back().depth, spans[i].depth);
       } else {
         merged.push_back(spans[i]);
       }
     }
-    if (merged.size() > first_of_loop + 1 && points_apart(merged.back().to, merged[first_of_loop].from) < 1e-9) {
+    if (merged.size() > first_of_loop + 1 && distance(merged.back().to, merged[first_of_loop].from) < 1e-9) {
       merged[first_of_loop].from = merged.back().from;  // the loop's first corner
       merged[first_of_loop].depth = std::max(merged[first_of_loop].depth, merged.back().depth);
       merged.pop_back();

@@ -152,8 +152,10 @@ bool simple_and_disjoint(const ClipperLib::Paths& paths) {
   return true;
 }
 
-ClipperLib::Path without_collinear(const ClipperLib::Path& path) {
-  const ClipperLib::Path distinct = without_repeats(path);
+namespace {
+
+// without_collinear() on a path already without repeats.
+ClipperLib::Path corners_of(const ClipperLib::Path& distinct) {
   // Clipper drops a vertex whose neighbours are collinear with it, again
   // until none is; on a path that does not double back, one pass against
   // the original neighbours drops the same (the inner vertices of each straight run).
@@ -165,6 +167,10 @@ ClipperLib::Path without_collinear(const ClipperLib::Path& path) {
   return corners;
 }
 
+}  // namespace
+
+ClipperLib::Path without_collinear(const ClipperLib::Path& path) { return corners_of(without_repeats(path)); }
+
 bool even_odd_union(ClipperLib::Paths& paths, const std::vector<bool>& outer) {
   ClipperLib::Paths distinct;
   distinct.reserve(paths.size());
@@ -174,7 +180,7 @@ bool even_odd_union(ClipperLib::Paths& paths, const std::vector<bool>& outer) {
   if (skip) {
     cleaned.reserve(paths.size());
     for (std::size_t i = 0; i < distinct.size() && skip; ++i) {
-      cleaned.push_back(without_collinear(distinct[i]));
+      cleaned.push_back(corners_of(distinct[i]));
       // Rounding to integers can flip a sliver; then Clipper decides.
       skip = cleaned.back().size() >= 3 && ClipperLib::Orientation(cleaned.back()) == outer[i] &&
              ClipperLib::Area(cleaned.back()) != 0;

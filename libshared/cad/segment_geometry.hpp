@@ -4,6 +4,7 @@
 /// query, bounding box, and flattening into chords.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "cad/drawing.hpp"
@@ -48,6 +49,8 @@ Segment sub_segment(const Segment& segment, double t0, double t1);
 /// counter-clockwise (0 for a line): what a loop's shoelace over chords misses.
 double arc_area(const Segment& segment);
 
+/// The distance between two points.
+inline double distance(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
 /// Twice the signed area of the triangle a, b, p: > 0 when p is left of a -> b.
 double orient(Point a, Point b, Point p);
 /// Whether p is left of the line a -> b, a point on the line counting as
