@@ -36,6 +36,14 @@ struct SplitK {
 void multiply_low_by_k(std::int64_t* d, const std::uint8_t* bits, std::size_t m, const SplitK& k, bool add_upper,
                        bool wide);
 
+/// AVX-512 only: out[j] for j < m = multiply_low_by_k's d[j] (d is only
+/// read), plus `add_at_zero` at digit 0, then balance_digits' first lane
+/// pass on out[0..m), in one sweep. Returns the largest carry moved;
+/// `carry_out` gets the carry out of digit m - 1. Further passes, where
+/// the largest carry calls for them, are the caller's.
+std::int64_t multiply_and_carry(const std::int64_t* d, std::int64_t* out, const std::uint8_t* bits, std::size_t m,
+                                const SplitK& k, bool add_upper, std::int64_t add_at_zero, std::int64_t& carry_out);
+
 /// Adds `carry` to digit 0 and carries it on until it is absorbed or
 /// reaches `end`; returns what is left (0 but for a freak value).
 std::int64_t absorb_at_bottom(std::int64_t* digit, const std::uint8_t* bits, std::size_t end, std::int64_t carry);

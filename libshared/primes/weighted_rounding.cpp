@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "primes/cpu_features.hpp"
+#include "primes/weighted_carry_lanes.hpp"
 #include "primes/weighted_squaring_detail.hpp"
 
 // The vector helpers are always inlined into functions compiled for
@@ -64,8 +65,8 @@ struct Rounder {
     }
   }
 
-  // Rounds `value` into z and returns the lanes' z_j * 2^(e_j) mod p.
-  TK_INLINE U term(const V& value, const std::uint64_t* __restrict rotation, std::int64_t* __restrict z) {
+  // `value` rounded to integers, the worst error and the range noted.
+  TK_INLINE I round(const V& value) {
     // The range check is an integer max on the magnitude's bits: a NaN or
     // an infinity has more than any finite value, so it fails too. Out of
     // range, z and the error are nonsense (finish() caps the error at 1/2),
@@ -76,12 +77,20 @@ struct Rounder {
     const V rounded = moved - shifter;
     const V error = (V)((I)(value - rounded) & magnitude_mask);
     worst = error > worst ? error : worst;
-    const I zi = (I)((U)moved - (U)shifter_int);
-    std::memcpy(z, &zi, sizeof zi);
+    return (I)((U)moved - (U)shifter_int);
+  }
+  // The lanes' z_j * 2^(e_j) mod p.
+  TK_INLINE U rotated(const I& zi, const std::uint64_t* __restrict rotation) const {
     const U residue = (U)zi + (p & (U)(zi >> 63));
     U e;  // 64-bit entries: a plain load, no widening shuffle
     std::memcpy(&e, rotation, sizeof e);
     return ((residue << e) & p) + (residue >> (sixty_one - e));
+  }
+  // Rounds `value` into z and returns the lanes' z_j * 2^(e_j) mod p.
+  TK_INLINE U term(const V& value, const std::uint64_t* __restrict rotation, std::int64_t* __restrict z) {
+    const I zi = round(value);
+    std::memcpy(z, &zi, sizeof zi);
+    return rotated(zi, rotation);
   }
   TK_INLINE void accumulate(U& into, const U& t) const {
     into += t;
@@ -96,7 +105,9 @@ struct Rounder {
   // The vector where the low coefficients end: its first `low_lanes` to sum.
   TK_INLINE void add_split(const V& value, const std::uint64_t* __restrict rotation, std::int64_t* __restrict z,
                            std::size_t low_lanes) {
-    const U t = term(value, rotation, z);
+    add_split_term(term(value, rotation, z), low_lanes);
+  }
+  TK_INLINE void add_split_term(const U& t, std::size_t low_lanes) {
     U low{}, high{};
     for (std::size_t l = 0; l < kLanes; ++l) (l < low_lanes ? low : high)[l] = t[l];
     accumulate(sum, low);
@@ -223,7 +234,90 @@ __attribute__((target("avx2"))) RoundedCoefficients right_angle_avx2(const doubl
   return round_right_angle_with<v4d, v4i, v4u>(re, im, weights, rotation, z, half, low, count);
 }
 
+// round_right_angle with the first lane pass of balance_digits done on
+// the rounded integers before they are stored, on each range: [0, low)
+// and [low, count). The low stream (j < half) and the partner stream
+// (half + j) carry at once; the carry out of digit half - 1 into digit
+// half is added when the low stream ends, the one out of digit count - 1
+// taken off as the top carry. The sums are of the integers as rounded.
+__attribute__((target("avx512f,avx512dq"))) CarriedCoefficients right_angle_carried_avx512(
+    const double* __restrict re, const double* __restrict im, const RightAngleWeights& w,
+    const std::uint64_t* __restrict rotation, const std::uint8_t* __restrict bits, std::int64_t* __restrict z,
+    std::size_t half, std::size_t low, std::size_t count) {
+  Rounder<v8d, v8i, v8u> rounder;
+  CarryLanes lows, partners;
+  const std::size_t partner_end = count > half ? std::min(half, (count - half + 7) / 8 * 8) : 0;
+  const std::size_t split_at = low / 8 * 8;  // the vector holding digit `low` (low < half)
+  const double* __restrict a = w.a;
+  const double* __restrict b = w.b;
+  const double* __restrict c = w.c;
+  const double* __restrict d = w.d;
+  auto partner = [&](std::size_t j, const v8d& r, const v8d& m)
+      __attribute__((always_inline, target("avx512f,avx512dq"))) {
+    if (j >= partner_end) return;
+    const v8i zi = rounder.round(m * load<v8d>(c + j) - r * load<v8d>(d + j));
+    rounder.accumulate(rounder.sum_high, rounder.rotated(zi, rotation + half + j));
+    _mm512_storeu_si512(z + half + j, partners.carried((__m512i)zi, bits + half + j));
+  };
+  // A whole vector of one range, its sum into `sum`.
+  auto whole = [&](std::size_t j, v8u & sum) __attribute__((always_inline, target("avx512f,avx512dq"))) {
+    const v8d r = load<v8d>(re + j), m = load<v8d>(im + j);
+    const v8i zi = rounder.round(r * load<v8d>(a + j) + m * load<v8d>(b + j));
+    rounder.accumulate(sum, rounder.rotated(zi, rotation + j));
+    _mm512_storeu_si512(z + j, lows.carried((__m512i)zi, bits + j));
+    partner(j, r, m);
+  };
+  std::size_t j = 0;
+  for (; j < split_at; j += 8) whole(j, rounder.sum);
+  // The split vector: lanes below `low` end the low range, whose carry out
+  // of its last digit goes to low_carry, not into digit `low`.
+  CarriedCoefficients result;
+  {
+    const auto low_lanes = static_cast<unsigned>(low - j);
+    const __mmask8 low_mask = static_cast<__mmask8>((1u << low_lanes) - 1),
+                   at_low = static_cast<__mmask8>(1u << low_lanes);
+    const v8d r = load<v8d>(re + j), m = load<v8d>(im + j);
+    const v8i zi = rounder.round(r * load<v8d>(a + j) + m * load<v8d>(b + j));
+    rounder.add_split_term(rounder.rotated(zi, rotation + j), low_lanes);
+    const __m512i before_largest = lows.largest;
+    __m512i up;
+    const __m512i kept = lows.step((__m512i)zi, bits + j, up);
+    __m512i in = lows.carries_in(up);
+    result.low_carry = _mm512_mask_reduce_max_epi64(at_low, in);
+    in = _mm512_mask_mov_epi64(in, at_low, _mm512_setzero_si512());
+    const __m512i moved = _mm512_abs_epi64(up);
+    result.low_largest =
+        _mm512_reduce_max_epi64(_mm512_mask_max_epi64(before_largest, low_mask, before_largest, moved));
+    lows.largest = _mm512_maskz_mov_epi64(static_cast<__mmask8>(~low_mask), moved);  // the high range's from here
+    lows.before = up;
+    _mm512_storeu_si512(z + j, _mm512_add_epi64(kept, in));
+    partner(j, r, m);
+    j += 8;
+  }
+  for (; j < half; j += 8) whole(j, rounder.sum_high);
+  const std::int64_t into_half = lows.last_up();
+  const std::size_t end = partner_end > 0 ? half + partner_end : half;
+  if (partner_end > 0) z[half] += into_half;
+  if (count < end) {
+    result.top_carry = z[count];
+    z[count] = 0;
+  } else {
+    result.top_carry = partner_end > 0 ? partners.last_up() : into_half;
+  }
+  result.high_largest = std::max(lows.most(), partner_end > 0 ? partners.most() : std::int64_t{0});
+  result.rounded = rounder.finish();
+  result.rounded.sum = reduce61(result.rounded.sum);
+  result.rounded.sum_high = reduce61(result.rounded.sum_high);
+  return result;
+}
+
 }  // namespace
+
+CarriedCoefficients round_right_angle_carried(const double* re, const double* im, const RightAngleWeights& weights,
+                                              const std::uint64_t* rotation, const std::uint8_t* bits, std::int64_t* z,
+                                              std::size_t half, std::size_t low, std::size_t count) {
+  return right_angle_carried_avx512(re, im, weights, rotation, bits, z, half, low, count);
+}
 
 RoundedCoefficients round_coefficients(const double* output, const double* weight, const std::uint64_t* rotation,
                                        std::int64_t* z, std::size_t count, std::size_t low) {

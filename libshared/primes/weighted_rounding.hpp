@@ -41,6 +41,23 @@ RoundedCoefficients round_right_angle(const double* re, const double* im, const 
                                       const std::uint64_t* rotation, std::int64_t* z, std::size_t half, std::size_t low,
                                       std::size_t count, bool wide);
 
+/// round_right_angle (AVX-512 only) with balance_digits' first lane pass
+/// done on the rounded integers before they are stored, on digits [0, low)
+/// and [low, count) as two ranges (bits: the digits' sizes): what
+/// round_right_angle, then balance_digits' first pass on each range,
+/// leave. Further passes, where a range's largest carry calls for them,
+/// are the caller's.
+struct CarriedCoefficients {
+  RoundedCoefficients rounded;    ///< of the integers as rounded, before any carry
+  std::int64_t low_carry = 0;     ///< out of digit low - 1
+  std::int64_t top_carry = 0;     ///< out of digit count - 1
+  std::int64_t low_largest = 0;   ///< the largest carry moved in [0, low)
+  std::int64_t high_largest = 0;  ///< the same in [low, count)
+};
+CarriedCoefficients round_right_angle_carried(const double* re, const double* im, const RightAngleWeights& weights,
+                                              const std::uint64_t* rotation, const std::uint8_t* bits, std::int64_t* z,
+                                              std::size_t half, std::size_t low, std::size_t count);
+
 /// round_right_angle on the points j < half whose index modulo `period`
 /// is in [from, to) (multiples of the lanes, 8), and their partners at
 /// j + half: one thread's part of a split square. The sums are reduced;

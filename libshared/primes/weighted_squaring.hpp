@@ -19,7 +19,10 @@
 /// two halves of k), one multiplies, one carries the product, and the small
 /// part above 2^n (Y, below about 2^(2*kbits + 6)) folds by one word
 /// division, Y = a*k + b giving -c*a + b*2^n; the last pass weighs the
-/// digits into the next transform's input. load() and store() convert.
+/// digits into the next transform's input. Where AVX-512 squares, the
+/// passes fuse: the transform's first pass weighs, the rounding carries
+/// once, the multiplication carries its product once (the same digits,
+/// fewer sweeps over memory). load() and store() convert.
 ///
 #pragma once
 
@@ -109,6 +112,8 @@ class WeightedSquaring {
   /// t := k*t^2 + c*minus*2^n on the transform; false (nothing held
   /// changed) when a check fails.
   bool square_and_reduce(unsigned long minus);
+  /// The same where the transform weighs the digits (AVX-512): the carries fused into the passes before them.
+  bool square_and_reduce_fused(unsigned long minus);
   /// The same, split over threads_ (weighted_squaring_split.cpp).
   bool square_and_reduce_split(unsigned long minus);
   /// The carries before the multiplication by k stop at this (the digits then multiply in 64 bits).
@@ -171,8 +176,9 @@ class WeightedSquaring {
   std::uint64_t k_mod_p_ = 0, two_n_mod_p_ = 0, inverse_two_n_mod_p_ = 0;  ///< k's, 2^n's, 2^-n's
   double worst_roundoff_ = 0;
   std::uint64_t fallbacks_ = 0;
-  // The split squaring's: the threads, the product's digits (swapped with
-  // digit_), each thread's rounding, and whether digit_ is yet to be weighted.
+  // The threads of a split squaring; the product's digits (the split and
+  // the fused squarings write them here, then swap them with digit_); each
+  // thread's rounding; and whether digit_ is yet to be weighted.
   std::unique_ptr<ProofThreads> threads_;
   std::vector<std::int64_t> product_;
   std::vector<RoundedCoefficients> rounded_parts_;

@@ -221,6 +221,7 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   if (right_angle_) {
     right_angle_weights();
     weigh_in_transform_ = right_angle_->lanes() == 8;
+    product_.assign(digit_.size(), 0);  // the fused square's next digits
     return;
   }
   // FFTW's arrays, only where FFTW squares (ours works in its own).

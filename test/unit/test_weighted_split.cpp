@@ -24,26 +24,19 @@ using squaring_test::name_of;
 using squaring_test::value_of;
 using SplitTransform = WeightedSquaring::Transform;
 
-// One squarer on one thread and one on `threads`, the same transform and
-// digits, squared side by side from the same x; GMP's chain alongside.
-void expect_split_matches(const SpecialForm& form, SplitTransform transform, unsigned threads, unsigned long minus,
-                          int rounds, gmp_randclass& random) {
-  auto widest = WeightedSquaring::create(form);
-  ASSERT_NE(widest, nullptr) << name_of(form);
-  // create() times a few lengths and may keep one only FFTW plans (under
-  // the sanitizers FFTW, not instrumented, often wins): the next one ours plans.
-  std::size_t length = widest->transform_length();
-  while (!RightAngleSquarer::supports(length)) length += 16;
-  // create()'s low digits m exactly: n / (m - 1/2) bits round up to m.
-  const double bits = static_cast<double>(form.n) / (static_cast<double>(widest->low_digits()) - 0.5);
+// One squarer on one thread and one on `threads`, the same transform,
+// length and digits, squared side by side from the same x; GMP's chain
+// alongside. `own_length`: create() chose this length (no square redone).
+void expect_pair_matches(const SpecialForm& form, std::size_t length, double bits, SplitTransform transform,
+                         unsigned threads, unsigned long minus, int rounds, gmp_randclass& random, bool own_length) {
   auto one = WeightedSquaring::create_with(form, length, bits, transform);
   auto split = WeightedSquaring::create_with(form, length, bits, transform);
   ASSERT_NE(one, nullptr) << name_of(form);
   ASSERT_NE(split, nullptr) << name_of(form);
   ASSERT_TRUE(split->use_threads(threads)) << name_of(form) << " on " << split->transform_name();
   ASSERT_EQ(split->threads(), threads);
-  const std::string what = name_of(form) + " on " + split->transform_name() + ", " + std::to_string(threads) +
-                           " threads, minus " + std::to_string(minus);
+  const std::string what = name_of(form) + " on " + split->transform_name() + ", length " + std::to_string(length) +
+                           ", " + std::to_string(threads) + " threads, minus " + std::to_string(minus);
   const mpz_class N = value_of(form);
   mpz_class x = random.get_z_range(N);
   one->load(x);
@@ -57,6 +50,8 @@ void expect_split_matches(const SpecialForm& form, SplitTransform transform, uns
     ASSERT_EQ(split->held_mod_p61(), one->held_mod_p61()) << what << " round " << round;
     if (round % 4 == 3 || round + 1 == rounds) {
       mpz_class got;
+      one->store(got);
+      ASSERT_EQ(got, x) << what << " round " << round;
       split->store(got);
       ASSERT_EQ(got, x) << what << " round " << round;
     }
@@ -65,10 +60,24 @@ void expect_split_matches(const SpecialForm& form, SplitTransform transform, uns
   // rare one at the next plannable length), most went the split way.
   EXPECT_EQ(split->fallbacks(), one->fallbacks()) << what;
   EXPECT_LE(4 * split->fallbacks(), static_cast<std::uint64_t>(rounds)) << what;
-  if (length == widest->transform_length()) {
+  if (own_length) {
     EXPECT_EQ(split->fallbacks(), 0u) << what;
   }
   EXPECT_EQ(split->worst_roundoff(), one->worst_roundoff()) << what;
+}
+
+void expect_split_matches(const SpecialForm& form, SplitTransform transform, unsigned threads, unsigned long minus,
+                          int rounds, gmp_randclass& random) {
+  auto widest = WeightedSquaring::create(form);
+  ASSERT_NE(widest, nullptr) << name_of(form);
+  // create() times a few lengths and may keep one only FFTW plans (under
+  // the sanitizers FFTW, not instrumented, often wins): the next one ours plans.
+  std::size_t length = widest->transform_length();
+  while (!RightAngleSquarer::supports(length)) length += 16;
+  // create()'s low digits m exactly: n / (m - 1/2) bits round up to m.
+  const double bits = static_cast<double>(form.n) / (static_cast<double>(widest->low_digits()) - 0.5);
+  expect_pair_matches(form, length, bits, transform, threads, minus, rounds, random,
+                      length == widest->transform_length());
 }
 
 TEST(WeightedSplit, DigitForDigitTheOneThreadSquaringAndGmps) {
@@ -79,6 +88,26 @@ TEST(WeightedSplit, DigitForDigitTheOneThreadSquaringAndGmps) {
       for (std::uint64_t n : {64ull, 127ull, 4503ull, 36627ull, 171960ull})
         for (std::int64_t c : {-1, 1})
           expect_split_matches(SpecialForm{k, n, c}, transform, 2, c < 0 ? 2 : 0, 12, random);
+}
+
+// Where AVX-512 squares on one thread, the rounding carries the two
+// ranges of digits, [0, m) and [m, 2(m + t) - 1), in the pass that rounds
+// them, and the multiplication by k carries its product (the split square
+// carries in passes of their own): m at every offset within a vector of
+// eight, the square's last coefficient at offsets past the middle of the
+// transform and below it (a length four times too long), and k of 56
+// bits, whose digits take a second carry pass before the multiplication.
+TEST(WeightedSplit, FusedCarriesAtEveryEdgeOfTheirVectors) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(2325);
+  for (std::uint64_t k : {3ull, 16869987339975ull, (1ull << 56) - 1})
+    for (std::uint64_t n : {4000ull, 4001ull, 4003ull, 4007ull})
+      for (std::size_t m = 200; m < 208; ++m) {
+        const SpecialForm form{k, n, n % 2 ? -1 : 1};
+        const double bits = static_cast<double>(n) / (static_cast<double>(m) - 0.5);
+        for (std::size_t length : {std::size_t{512}, std::size_t{2048}})
+          expect_pair_matches(form, length, bits, SplitTransform::widest, 2, n % 2 ? 2 : 0, 6, random, false);
+      }
 }
 
 // Lengths with three outer passes, and three threads (uneven shares).
