@@ -96,16 +96,28 @@ RightAngleSquarer::RightAngleSquarer(std::size_t half, int lanes, std::vector<St
   while (inner_from_ < stages_.size() && stages_[inner_from_].block > kInnerBlockPoints) ++inner_from_;
   inner_block_ = inner_from_ < stages_.size() ? stages_[inner_from_].block : static_cast<std::size_t>(lanes);
   const std::size_t twiddles = twiddle_count(stages_);
-  const std::size_t total = 4 * half + 2 * twiddles;
+  // The arrays in one allocation, each kSkew doubles (17 cache lines)
+  // past the end of the one before: arrays of a power-of-two length
+  // would otherwise start at the same offset modulo 4 KB, and a pass
+  // reading the same index of each would use one set of the L1 cache
+  // (8 % per squaring at n = 171960 on the Intel host).
+  constexpr std::size_t kSkew = 136;
+  const std::size_t sizes[] = {half, half, half, half, twiddles, twiddles};
+  std::size_t offsets[6] = {}, total = 0;
+  for (std::size_t a = 0; a < 6; ++a) {
+    offsets[a] = total;
+    total += sizes[a] + kSkew;
+  }
   buffer_ = static_cast<double*>(std::aligned_alloc(64, ((total * sizeof(double) + 63) / 64) * 64));
   if (!buffer_) throw std::bad_alloc();
-  re_ = buffer_;
-  im_ = re_ + half;
-  theta_cos_ = im_ + half;
-  theta_sin_ = theta_cos_ + half;
-  twiddle_re_ = theta_sin_ + half;
-  twiddle_im_ = twiddle_re_ + twiddles;
-  std::fill(re_, re_ + 2 * half, 0.0);  // a square before any input squares zeros
+  re_ = buffer_ + offsets[0];
+  im_ = buffer_ + offsets[1];
+  theta_cos_ = buffer_ + offsets[2];
+  theta_sin_ = buffer_ + offsets[3];
+  twiddle_re_ = buffer_ + offsets[4];
+  twiddle_im_ = buffer_ + offsets[5];
+  std::fill(re_, re_ + half, 0.0);  // a square before any input squares zeros
+  std::fill(im_, im_ + half, 0.0);
   const long double pi = 3.141592653589793238462643383279502884L;
   for (std::size_t j = 0; j < half; ++j) {
     const long double angle = pi * static_cast<long double>(j) / static_cast<long double>(2 * half);

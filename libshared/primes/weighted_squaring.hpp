@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "primes/modulus.hpp"
+#include "primes/skewed_allocator.hpp"
 #include "primes/weighted_passes.hpp"
 #include "primes/weighted_rounding.hpp"
 
@@ -80,7 +81,7 @@ class WeightedSquaring {
 
   /// The digits held (balanced, digit j at 2^(e_j)): a split squaring
   /// (use_threads) must leave exactly the one-thread squaring's.
-  const std::vector<std::int64_t>& held_digits() const { return digit_; }
+  const SkewedVector<std::int64_t>& held_digits() const { return digit_; }
 
   std::size_t transform_length() const { return length_; }
   /// "right-angle, 8 lanes" or "FFTW": which transform squares.
@@ -145,15 +146,15 @@ class WeightedSquaring {
   std::size_t digits_;        ///< m + t: digits of the input
   std::size_t coefficients_;  ///< 2*digits_ - 1: coefficients of the square
   int max_digit_bits_ = 0;
-  std::vector<std::uint64_t> exponent_;  ///< e_j, j <= coefficients_
-  std::vector<std::uint8_t> bits_;       ///< s_j
-  std::vector<std::uint64_t> rotation_;  ///< e_j mod 61: 2^(e_j) mod 2^61-1 is a rotation
-  std::vector<double> input_weight_;     ///< 2^(e_j - nj/m)
-  std::vector<double> output_weight_;    ///< its inverse over L
+  std::vector<std::uint64_t> exponent_;   ///< e_j, j <= coefficients_
+  SkewedVector<std::uint8_t> bits_;       ///< s_j for j < coefficients_, then zeros
+  SkewedVector<std::uint64_t> rotation_;  ///< e_j mod 61: 2^(e_j) mod 2^61-1 is a rotation
+  std::vector<double> input_weight_;      ///< 2^(e_j - nj/m)
+  std::vector<double> output_weight_;     ///< its inverse over L
   // The right-angle transform's: input_weight_ times cos and sin(pi*j/L),
   // and the rounding's weights (weighted_rounding.hpp).
-  std::vector<double> re_weight_, im_weight_, round_a_, round_b_, round_c_, round_d_;
-  std::vector<std::int64_t> digit_;      ///< the input's digits, for store()
+  SkewedVector<double> re_weight_, im_weight_, round_a_, round_b_, round_c_, round_d_;
+  SkewedVector<std::int64_t> digit_;     ///< the input's digits, for store()
   std::int64_t k_low_ = 0, k_high_ = 0;  ///< k = k_high_*2^max_digit_bits_ + k_low_
   /// The coefficients are carried until every digit is below 2^digit_bound_bits_ (so
   /// k_low_ and k_high_ times a digit fit 64 bits); false where no bound fits.
@@ -169,10 +170,10 @@ class WeightedSquaring {
   /// The digits are weighted by the transform's first pass (AVX-512), not
   /// by a pass of their own: write_input() leaves them pending.
   bool weigh_in_transform_ = false;
-  std::vector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded, then carried; L places
-  std::uint64_t value_mod_p_ = 0;          ///< the input's value (t) mod 2^61-1
-  std::uint64_t square_mod_p_ = 0;         ///< its square's, from the coefficients
-  std::uint64_t modulus_mod_p_ = 0;        ///< N's
+  SkewedVector<std::int64_t> coefficient_;  ///< the square's coefficients, rounded, then carried; L places
+  std::uint64_t value_mod_p_ = 0;           ///< the input's value (t) mod 2^61-1
+  std::uint64_t square_mod_p_ = 0;          ///< its square's, from the coefficients
+  std::uint64_t modulus_mod_p_ = 0;         ///< N's
   std::uint64_t k_mod_p_ = 0, two_n_mod_p_ = 0, inverse_two_n_mod_p_ = 0;  ///< k's, 2^n's, 2^-n's
   double worst_roundoff_ = 0;
   std::uint64_t fallbacks_ = 0;
@@ -180,7 +181,7 @@ class WeightedSquaring {
   // the fused squarings write them here, then swap them with digit_); each
   // thread's rounding; and whether digit_ is yet to be weighted.
   std::unique_ptr<ProofThreads> threads_;
-  std::vector<std::int64_t> product_;
+  SkewedVector<std::int64_t> product_;
   std::vector<RoundedCoefficients> rounded_parts_;
   CarryExchange carry_exchange_;
   bool weights_pending_ = false;

@@ -208,6 +208,7 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
   }
   coefficient_.assign(length, 0);
   rotation_.resize(length, 0);
+  bits_.resize(length + 8, 0);   // the fused carries read whole vectors past the last coefficient
   digit_.assign(length / 2, 0);  // zero past digits_: the transform's first pass may read them
   modulus_mod_p_ = mpz_fdiv_ui(modulus_of(form).get_mpz_t(), kP61);
   k_mod_p_ = form.k % kP61;
@@ -240,7 +241,7 @@ WeightedSquaring::WeightedSquaring(const SpecialForm& form, std::size_t length, 
 // every length create() picks: S <= 25).
 void WeightedSquaring::split_k() {
   const int s_max = max_digit_bits_;
-  const int s_min = *std::min_element(bits_.begin(), bits_.end());
+  const int s_min = *std::min_element(bits_.begin(), bits_.begin() + static_cast<std::ptrdiff_t>(coefficients_));
   const int kbits = std::bit_width(form_.k);
   k_low_ = static_cast<std::int64_t>(form_.k & ((std::uint64_t{1} << s_max) - 1));
   k_high_ = static_cast<std::int64_t>(form_.k >> s_max);
