@@ -126,7 +126,9 @@ struct FromDigits {
     std::memcpy(&whole, digits + at, sizeof whole);
     const V value = __builtin_convertvector(whole, V);
     V r = value * load<V>(weight_re + at), m = value * load<V>(weight_im + at);
+#if !defined(__clang__)  // clang contracts only within one expression, and refuses this 64-byte operand here
     __asm__("" : "+v"(r), "+v"(m));
+#endif
     return {r, m};
   }
 };

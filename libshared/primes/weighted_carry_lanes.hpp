@@ -2,62 +2,102 @@
 /// @brief One lane pass of balance_digits (weighted_passes.hpp) on eight
 /// digits, for the AVX-512 passes that compute the digits themselves (the
 /// rounding, the multiplication by k) and carry them in the same sweep
-/// rather than in a pass of their own. Include only from files built with
-/// AVX-512 intrinsics; the caller's target must include avx512f.
+/// rather than in a pass of their own; and those products of k.
+///
+/// Written over GCC vector types, with no target of their own: the
+/// functions that use them are always inlined into one compiled for
+/// AVX-512 (so no vector crosses a call, which clang refuses between
+/// functions of different targets).
 #pragma once
 
-// GCC 12 warns inside its own AVX-512 intrinsics (their _mm512_undefined).
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wpsabi"
-#include <immintrin.h>
-
 #include <cstdint>
+#include <cstring>
 
-namespace tk::primes {
+#include "primes/weighted_passes.hpp"
+
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace tk::primes::carry_lanes {
+
+typedef std::int64_t Lanes __attribute__((vector_size(64)));
+
+#define TK_LANES_INLINE __attribute__((always_inline)) inline
+
+TK_LANES_INLINE Lanes load(const std::int64_t* p) {
+  Lanes v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+TK_LANES_INLINE void store(std::int64_t* p, const Lanes& v) { std::memcpy(p, &v, sizeof v); }
+/// bits[0..8) widened, as a broadcast word shifted per lane (GCC 12 makes
+/// __builtin_convertvector from eight bytes a chain of inserts).
+TK_LANES_INLINE Lanes sizes_at(const std::uint8_t* bits) {
+  std::int64_t word;
+  std::memcpy(&word, bits, sizeof word);
+  const Lanes byte_shift = {0, 8, 16, 24, 32, 40, 48, 56};
+  return ((Lanes{} + word) >> byte_shift) & 255;
+}
+/// Lane i of the result is lane i - 1 of `now`, lane 0 lane 7 of `before`.
+TK_LANES_INLINE Lanes shifted_in(const Lanes& before, const Lanes& now) {
+  return __builtin_shufflevector(before, now, 7, 8, 9, 10, 11, 12, 13, 14);
+}
+TK_LANES_INLINE Lanes broadcast(std::int64_t v) { return Lanes{} + v; }
 
 /// Each digit's excess over [-2^(s-1), 2^(s-1)) moves one digit up, the
 /// carry a digit takes in being what its neighbour gave off before this
 /// pass: the same values as balance_digits' lanes pass. `before` holds the
 /// previous vector's carries (its lane 7 is the carry into this vector's
-/// lane 0), `largest` each lane's largest carry so far.
+/// lane 0), `largest` each lane's largest carry so far. A size of 0 (the
+/// zeros past the last coefficient) passes the digit up whole.
 struct CarryLanes {
-  __m512i before, largest;
+  Lanes before{}, largest{};
 
-  __attribute__((always_inline, target("avx512f"))) inline CarryLanes()
-      : before(_mm512_setzero_si512()), largest(_mm512_setzero_si512()) {}
-
-  /// The eight digits `value` at bits[0..8) after the pass; `up` gets their carries out.
-  __attribute__((always_inline, target("avx512f"))) inline __m512i step(__m512i value, const std::uint8_t* bits,
-                                                                        __m512i& up) {
-    const __m512i one = _mm512_set1_epi64(1);
-    const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits)));
-    const __m512i half = _mm512_sllv_epi64(one, _mm512_sub_epi64(size, one));
-    const __m512i total = _mm512_add_epi64(value, half);
-    up = _mm512_srav_epi64(total, size);
-    const __m512i kept = _mm512_sub_epi64(_mm512_sub_epi64(total, _mm512_sllv_epi64(up, size)), half);
-    largest = _mm512_max_epi64(largest, _mm512_abs_epi64(up));
-    return kept;
+  /// The eight digits `value` at bits[0..8) kept (without the carries in); `up` gets their carries out.
+  TK_LANES_INLINE Lanes step(const Lanes& value, const std::uint8_t* bits, Lanes& up) {
+    const Lanes size = sizes_at(bits);
+    const Lanes half = (broadcast(1) << size) >> 1;
+    const Lanes total = value + half;
+    up = total >> size;
+    const Lanes magnitude = up < 0 ? -up : up;
+    largest = magnitude > largest ? magnitude : largest;
+    return total - (up << size) - half;
   }
   /// The carries into the eight digits whose carries out are `up`.
-  __attribute__((always_inline, target("avx512f"))) inline __m512i carries_in(__m512i up) const {
-    return _mm512_alignr_epi64(up, before, 7);
-  }
+  TK_LANES_INLINE Lanes carries_in(const Lanes& up) const { return shifted_in(before, up); }
   /// step() with the carries in added; `before` moves on.
-  __attribute__((always_inline, target("avx512f"))) inline __m512i carried(__m512i value, const std::uint8_t* bits) {
-    __m512i up;
-    const __m512i kept = step(value, bits, up);
-    const __m512i digits = _mm512_add_epi64(kept, carries_in(up));
+  TK_LANES_INLINE Lanes carried(const Lanes& value, const std::uint8_t* bits) {
+    Lanes up;
+    const Lanes kept = step(value, bits, up);
+    const Lanes digits = kept + carries_in(up);
     before = up;
     return digits;
   }
-  /// The carry out of the last vector's lane 7.
-  __attribute__((always_inline, target("avx512f"))) inline std::int64_t last_up() const {
-    return _mm512_mask_reduce_max_epi64(0x80, before);
-  }
-  __attribute__((always_inline, target("avx512f"))) inline std::int64_t most() const {
-    return _mm512_reduce_max_epi64(largest);
+  TK_LANES_INLINE std::int64_t last_up() const { return before[7]; }  ///< out of the last vector's lane 7
+  TK_LANES_INLINE std::int64_t most() const { return largest_of(largest); }
+  static TK_LANES_INLINE std::int64_t largest_of(const Lanes& v) {
+    std::int64_t most = v[0];
+    for (int lane = 1; lane < 8; ++lane) most = v[lane] > most ? v[lane] : most;
+    return most;
   }
 };
 
-}  // namespace tk::primes
+/// multiply_low_by_k's values eight digits at a time, in order: the
+/// previous digits are the lanes before (the last of the vector before, kept).
+struct ProductLanes {
+  Lanes low, high, split, before{}, sizes_before;
+  TK_LANES_INLINE explicit ProductLanes(const SplitK& k)
+      : low(broadcast(k.low)), high(broadcast(k.high)), split(broadcast(k.bits)), sizes_before(split) {}
+  TK_LANES_INLINE Lanes next(const std::int64_t* d, const std::uint8_t* bits, std::size_t j, std::size_t m,
+                             bool add_upper) {
+    const Lanes old = load(d + j), upper = load(d + j + m), size = sizes_at(bits + j);
+    const Lanes moved = (high * shifted_in(before, old)) << (split - shifted_in(sizes_before, size));
+    before = old;
+    sizes_before = size;
+    const Lanes product = low * old + moved;
+    return add_upper ? product + upper : product - upper;
+  }
+};
+
+#undef TK_LANES_INLINE
+
+}  // namespace tk::primes::carry_lanes

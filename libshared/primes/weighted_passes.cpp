@@ -145,54 +145,34 @@ TK_INLINE void multiply_body(std::int64_t* __restrict d, const std::uint8_t* __r
   }
 }
 
-// multiply_body's values eight digits at a time, in order: the previous
-// digits are the lanes before (the last of the vector before, kept).
-struct ProductLanes {
-  __m512i low, high, split, before, sizes_before;
-  TK_WIDE TK_INLINE explicit ProductLanes(const SplitK& k)
-      : low(_mm512_set1_epi64(k.low)),
-        high(_mm512_set1_epi64(k.high)),
-        split(_mm512_set1_epi64(k.bits)),
-        before(_mm512_setzero_si512()),
-        sizes_before(split) {}
-  TK_WIDE TK_INLINE __m512i next(const std::int64_t* __restrict d, const std::uint8_t* __restrict bits, std::size_t j,
-                                 std::size_t m, bool add_upper) {
-    const __m512i old = _mm512_loadu_si512(d + j), upper = _mm512_loadu_si512(d + j + m);
-    const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits + j)));
-    const __m512i previous = _mm512_alignr_epi64(old, before, 7);
-    const __m512i previous_size = _mm512_alignr_epi64(size, sizes_before, 7);
-    const __m512i moved = _mm512_sllv_epi64(_mm512_mullo_epi64(high, previous), _mm512_sub_epi64(split, previous_size));
-    const __m512i product = _mm512_add_epi64(_mm512_mullo_epi64(low, old), moved);
-    before = old;
-    sizes_before = size;
-    return add_upper ? _mm512_add_epi64(product, upper) : _mm512_sub_epi64(product, upper);
-  }
-};
-
 // In place: a vector's old digits are read before it is written.
-TK_WIDE void multiply_lanes(std::int64_t* __restrict d, const std::uint8_t* __restrict bits, std::size_t m,
-                            const SplitK& k, bool add_upper) {
+TK_INLINE void multiply_lanes_body(std::int64_t* __restrict d, const std::uint8_t* __restrict bits, std::size_t m,
+                                   const SplitK& k, bool add_upper) {
   const std::size_t whole = m / 8 * 8;
   const std::int64_t tail_previous = whole > 0 ? d[whole - 1] : 0;
-  ProductLanes products(k);
-  for (std::size_t j = 0; j < whole; j += 8) _mm512_storeu_si512(d + j, products.next(d, bits, j, m, add_upper));
+  carry_lanes::ProductLanes products(k);
+  for (std::size_t j = 0; j < whole; j += 8) carry_lanes::store(d + j, products.next(d, bits, j, m, add_upper));
   multiply_body(d, bits, whole, m, k, add_upper, tail_previous);
+}
+TK_WIDE void multiply_lanes(std::int64_t* d, const std::uint8_t* bits, std::size_t m, const SplitK& k, bool add_upper) {
+  multiply_lanes_body(d, bits, m, k, add_upper);
 }
 
 // multiply_lanes into `out`, each vector of products carried by the lane
 // pass before it is stored (tail_pass's serial form for the digits past
 // the whole vectors): multiply_low_by_k, then the first pass of
 // balance_lanes, in one sweep.
-TK_WIDE std::int64_t multiply_carry_lanes(const std::int64_t* __restrict d, std::int64_t* __restrict out,
-                                          const std::uint8_t* __restrict bits, std::size_t m, const SplitK& k,
-                                          bool add_upper, std::int64_t add_at_zero, std::int64_t& carry_out) {
+TK_INLINE std::int64_t multiply_carry_body(const std::int64_t* __restrict d, std::int64_t* __restrict out,
+                                           const std::uint8_t* __restrict bits, std::size_t m, const SplitK& k,
+                                           bool add_upper, std::int64_t add_at_zero, std::int64_t& carry_out) {
   const std::size_t whole = m / 8 * 8;
-  ProductLanes products(k);
-  CarryLanes carry;
+  carry_lanes::ProductLanes products(k);
+  carry_lanes::CarryLanes carry;
+  carry_lanes::Lanes at_zero{};
+  at_zero[0] = add_at_zero;
   for (std::size_t j = 0; j < whole; j += 8) {
-    __m512i product = products.next(d, bits, j, m, add_upper);
-    if (j == 0) product = _mm512_mask_add_epi64(product, 1, product, _mm512_set1_epi64(add_at_zero));
-    _mm512_storeu_si512(out + j, carry.carried(product, bits + j));
+    const carry_lanes::Lanes product = products.next(d, bits, j, m, add_upper);
+    carry_lanes::store(out + j, carry.carried(j == 0 ? product + at_zero : product, bits + j));
   }
   std::int64_t up = whole > 0 ? carry.last_up() : 0;
   std::int64_t largest = whole > 0 ? carry.most() : 0;
@@ -204,6 +184,11 @@ TK_WIDE std::int64_t multiply_carry_lanes(const std::int64_t* __restrict d, std:
   }
   carry_out = up;
   return largest;
+}
+TK_WIDE std::int64_t multiply_carry_lanes(const std::int64_t* d, std::int64_t* out, const std::uint8_t* bits,
+                                          std::size_t m, const SplitK& k, bool add_upper, std::int64_t add_at_zero,
+                                          std::int64_t& carry_out) {
+  return multiply_carry_body(d, out, bits, m, k, add_upper, add_at_zero, carry_out);
 }
 
 // The top digits hold only what carries in (`up`); the last takes what is

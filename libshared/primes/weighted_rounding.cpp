@@ -240,60 +240,52 @@ __attribute__((target("avx2"))) RoundedCoefficients right_angle_avx2(const doubl
 // (half + j) carry at once; the carry out of digit half - 1 into digit
 // half is added when the low stream ends, the one out of digit count - 1
 // taken off as the top carry. The sums are of the integers as rounded.
-__attribute__((target("avx512f,avx512dq"))) CarriedCoefficients right_angle_carried_avx512(
-    const double* __restrict re, const double* __restrict im, const RightAngleWeights& w,
-    const std::uint64_t* __restrict rotation, const std::uint8_t* __restrict bits, std::int64_t* __restrict z,
-    std::size_t half, std::size_t low, std::size_t count) {
+TK_INLINE CarriedCoefficients right_angle_carried_with(const double* __restrict re, const double* __restrict im,
+                                                       const RightAngleWeights& w,
+                                                       const std::uint64_t* __restrict rotation,
+                                                       const std::uint8_t* __restrict bits, std::int64_t* __restrict z,
+                                                       std::size_t half, std::size_t low, std::size_t count) {
+  using carry_lanes::Lanes;
   Rounder<v8d, v8i, v8u> rounder;
-  CarryLanes lows, partners;
+  carry_lanes::CarryLanes lows, partners;
   const std::size_t partner_end = count > half ? std::min(half, (count - half + 7) / 8 * 8) : 0;
   const std::size_t split_at = low / 8 * 8;  // the vector holding digit `low` (low < half)
   const double* __restrict a = w.a;
   const double* __restrict b = w.b;
   const double* __restrict c = w.c;
   const double* __restrict d = w.d;
-  auto partner = [&](std::size_t j, const v8d& r, const v8d& m)
-      __attribute__((always_inline, target("avx512f,avx512dq"))) {
-    if (j >= partner_end) return;
-    const v8i zi = rounder.round(m * load<v8d>(c + j) - r * load<v8d>(d + j));
-    rounder.accumulate(rounder.sum_high, rounder.rotated(zi, rotation + half + j));
-    _mm512_storeu_si512(z + half + j, partners.carried((__m512i)zi, bits + half + j));
-  };
-  // A whole vector of one range, its sum into `sum`.
-  auto whole = [&](std::size_t j, v8u & sum) __attribute__((always_inline, target("avx512f,avx512dq"))) {
+  // A whole vector of each stream at j, the low stream's sum into `sum`.
+  auto whole = [&](std::size_t j, v8u & sum) __attribute__((always_inline)) {
     const v8d r = load<v8d>(re + j), m = load<v8d>(im + j);
     const v8i zi = rounder.round(r * load<v8d>(a + j) + m * load<v8d>(b + j));
     rounder.accumulate(sum, rounder.rotated(zi, rotation + j));
-    _mm512_storeu_si512(z + j, lows.carried((__m512i)zi, bits + j));
-    partner(j, r, m);
+    carry_lanes::store(z + j, lows.carried(zi, bits + j));
+    if (j >= partner_end) return;
+    const v8i partner = rounder.round(m * load<v8d>(c + j) - r * load<v8d>(d + j));
+    rounder.accumulate(rounder.sum_high, rounder.rotated(partner, rotation + half + j));
+    carry_lanes::store(z + half + j, partners.carried(partner, bits + half + j));
   };
   std::size_t j = 0;
   for (; j < split_at; j += 8) whole(j, rounder.sum);
   // The split vector: lanes below `low` end the low range, whose carry out
-  // of its last digit goes to low_carry, not into digit `low`.
+  // of its last digit goes to low_carry, not into digit `low`; the lanes
+  // from there on start the high range (their sums too).
   CarriedCoefficients result;
-  {
-    const auto low_lanes = static_cast<unsigned>(low - j);
-    const __mmask8 low_mask = static_cast<__mmask8>((1u << low_lanes) - 1),
-                   at_low = static_cast<__mmask8>(1u << low_lanes);
-    const v8d r = load<v8d>(re + j), m = load<v8d>(im + j);
-    const v8i zi = rounder.round(r * load<v8d>(a + j) + m * load<v8d>(b + j));
-    rounder.add_split_term(rounder.rotated(zi, rotation + j), low_lanes);
-    const __m512i before_largest = lows.largest;
-    __m512i up;
-    const __m512i kept = lows.step((__m512i)zi, bits + j, up);
-    __m512i in = lows.carries_in(up);
-    result.low_carry = _mm512_mask_reduce_max_epi64(at_low, in);
-    in = _mm512_mask_mov_epi64(in, at_low, _mm512_setzero_si512());
-    const __m512i moved = _mm512_abs_epi64(up);
-    result.low_largest =
-        _mm512_reduce_max_epi64(_mm512_mask_max_epi64(before_largest, low_mask, before_largest, moved));
-    lows.largest = _mm512_maskz_mov_epi64(static_cast<__mmask8>(~low_mask), moved);  // the high range's from here
-    lows.before = up;
-    _mm512_storeu_si512(z + j, _mm512_add_epi64(kept, in));
-    partner(j, r, m);
-    j += 8;
-  }
+  const auto low_lanes = static_cast<std::int64_t>(low - j);
+  const Lanes lane = {0, 1, 2, 3, 4, 5, 6, 7};
+  const Lanes in_low = lane < low_lanes;  // all ones or zero per lane
+  const Lanes largest_before = lows.largest, before = lows.before;
+  lows.largest = Lanes{};
+  v8u split_sum{};
+  whole(j, split_sum);
+  result.low_carry = carry_lanes::shifted_in(before, lows.before)[low_lanes];
+  z[low] -= result.low_carry;                 // the carry into digit `low` was added: taken back out
+  const Lanes moved = lows.largest & in_low;  // this vector's carries of the low range
+  result.low_largest = carry_lanes::CarryLanes::largest_of(largest_before > moved ? largest_before : moved);
+  lows.largest &= ~in_low;  // the high range's from here
+  rounder.accumulate(rounder.sum, split_sum & (v8u)in_low);
+  rounder.accumulate(rounder.sum_high, split_sum & ~(v8u)in_low);
+  j += 8;
   for (; j < half; j += 8) whole(j, rounder.sum_high);
   const std::int64_t into_half = lows.last_up();
   const std::size_t end = partner_end > 0 ? half + partner_end : half;
@@ -309,6 +301,12 @@ __attribute__((target("avx512f,avx512dq"))) CarriedCoefficients right_angle_carr
   result.rounded.sum = reduce61(result.rounded.sum);
   result.rounded.sum_high = reduce61(result.rounded.sum_high);
   return result;
+}
+
+__attribute__((target("avx512f,avx512dq"))) CarriedCoefficients right_angle_carried_avx512(
+    const double* re, const double* im, const RightAngleWeights& w, const std::uint64_t* rotation,
+    const std::uint8_t* bits, std::int64_t* z, std::size_t half, std::size_t low, std::size_t count) {
+  return right_angle_carried_with(re, im, w, rotation, bits, z, half, low, count);
 }
 
 }  // namespace
