@@ -1,95 +1,335 @@
 /// @file region_uncut.cpp
 /// @brief The uncut search (see region_uncut.hpp).
+///
+/// The answer is defined by every sample's exact gap (distance to the
+/// contour less R): runs of samples above the report threshold, each run's
+/// first deepest sample, refined by a golden-section search. The gap is
+/// 1-Lipschitz along the drawing (|g(p) - g(q)| <= |p - q|), so most
+/// samples need no search of the contour: one exactly known a little way
+/// back already puts them above the threshold (or below it), and within a
+/// run a branch and bound asks only the samples that could still be the
+/// deepest. A margin covers the rounding of the bounds, so each decision
+/// is the one the exact gaps would make.
 #include "cad/region_uncut.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <queue>
 
 #include "cad/segment_geometry.hpp"
 
 namespace tk::cad {
+namespace {
+
+/// |p - q| for the bounds (the margin covers its rounding): cheaper than
+/// std::hypot, which guards against overflow no drawing comes near.
+double apart_by(Point p, Point q) {
+  const double dx = p.x - q.x, dy = p.y - q.y;
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+/// How large the numbers in a distance to (or a point on) the segment
+/// get: its ends' coordinates, its length and, for an arc, its centre's
+/// distance from them (twice the radius at most).
+double rounding_scale(const Segment& s) {
+  const double chord = apart_by(s.start, s.end), bulge = std::abs(s.bulge);
+  const double radius = bulge > 0 ? chord * (1 + bulge * bulge) / (4 * bulge) : 0;
+  return std::abs(s.start.x) + std::abs(s.start.y) + std::abs(s.end.x) + std::abs(s.end.y) + chord + 2 * radius;
+}
+
+/// Exact gaps through the contour's index, each asked near the last (the
+/// hint speeds up the tree's search), and counted.
+class ExactGaps {
+ public:
+  ExactGaps(const RegionIndex* contour, double radius) : contour_(contour), radius_(radius) {}
+  double at(Point p, std::size_t& count) {
+    ++count;
+    if (!contour_) return radius_ + 1;  // no contour: all is uncut
+    const RegionQuery q = contour_->nearest(p, hint_);
+    hint_ = q.element;
+    return q.distance - radius_;
+  }
+  std::size_t last_element() const { return hint_; }
+  /// The gap to one element of the contour alone: at least the exact gap,
+  /// but for rounding (which the caller's margin covers).
+  bool gap_to(std::size_t element, Point p, double& bound) const {
+    if (!contour_ || element >= contour_->elements().size()) return false;
+    bound = distance(nearest_point(contour_->elements()[element], p), p) - radius_;
+    return true;
+  }
+
+ private:
+  const RegionIndex* contour_;
+  double radius_;
+  std::size_t hint_ = SIZE_MAX;
+};
+
+/// One element's samples: each gap exact or, where `exact` is 0, an upper
+/// bound only (the sample's side of the threshold is certain either way).
+struct Samples {
+  std::vector<Point> points;
+  std::vector<double> gaps;
+  std::vector<unsigned char> exact, uncut;
+  std::vector<std::size_t> elements;  // the contour's nearest, where exact
+  void reset(std::size_t count) {
+    elements.resize(count);
+    points.resize(count);
+    gaps.assign(count, 0);
+    exact.assign(count, 0);
+    uncut.assign(count, 0);
+  }
+};
+
+/// Sorts every sample to its side of the threshold, asking the exact gap
+/// only where the bounds leave it open.
+void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, UncutQueryCounts& counts) {
+  // The last answer's element bounds the gap from above; tried only after
+  // a sample within reach (along material left uncut it fails every time).
+  bool last_within_reach = true;
+  std::size_t anchor = SIZE_MAX;  // the last sample whose gap is exact
+  for (std::size_t i = 0; i < at.points.size(); ++i) {
+    const Point p = at.points[i];
+    if (anchor != SIZE_MAX) {
+      const double step = apart_by(p, at.points[anchor]);
+      const double upper = at.gaps[anchor] + step + slack;
+      if (at.gaps[anchor] - step - slack > threshold || upper <= threshold) {
+        at.gaps[i] = upper;
+        at.uncut[i] = upper > threshold;
+        continue;
+      }
+    }
+    double bound = 0;
+    if (last_within_reach && gaps.gap_to(gaps.last_element(), p, bound) && bound + slack <= threshold) {
+      at.gaps[i] = bound + slack;
+      continue;
+    }
+    at.gaps[i] = gaps.at(p, counts.sampling);
+    at.exact[i] = 1;
+    at.elements[i] = gaps.last_element();
+    at.uncut[i] = at.gaps[i] > threshold;
+    last_within_reach = !at.uncut[i];
+    anchor = i;
+  }
+}
+
+/// The run [begin, last]'s first deepest sample by exact gaps (the first
+/// of the greatest, as a scan would choose), by branch and bound: between
+/// two exact samples l < r, spaced at most `spacing` apart along the
+/// element, no gap exceeds (g_l + g_r + (r - l) * spacing) / 2; a stretch
+/// whose bound (plus the margin) is below the best exact gap so far holds
+/// neither a deeper sample nor an equal one, so it is left unasked.
+std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, ExactGaps& gaps, double spacing,
+                          double slack, UncutQueryCounts& counts) {
+  const auto ask = [&](std::size_t i) {
+    at.gaps[i] = gaps.at(at.points[i], counts.deepest);
+    at.exact[i] = 1;
+    at.elements[i] = gaps.last_element();
+  };
+  for (const std::size_t end : {begin, last})
+    if (!at.exact[end]) ask(end);
+  std::size_t deepest = begin;
+  struct Stretch {
+    double bound;
+    std::size_t l, r;
+    bool operator<(const Stretch& o) const { return bound < o.bound; }
+  };
+  std::priority_queue<Stretch> open;
+  const auto bound = [&](std::size_t l, std::size_t r) {
+    return (at.gaps[l] + at.gaps[r] + static_cast<double>(r - l) * spacing) / 2 + slack;
+  };
+  const auto consider = [&](std::size_t l, std::size_t r) {
+    if (r - l >= 2) open.push({bound(l, r), l, r});
+  };
+  const auto improve = [&](std::size_t i) {  // the scan's rule: the first of equal gaps
+    if (at.gaps[i] > at.gaps[deepest] || (at.gaps[i] == at.gaps[deepest] && i < deepest)) deepest = i;
+  };
+  for (std::size_t i = begin, l = begin; i <= last; ++i) {
+    if (!at.exact[i]) continue;
+    improve(i);
+    consider(l, i);
+    l = i;
+  }
+  while (!open.empty() && open.top().bound >= at.gaps[deepest]) {
+    const Stretch t = open.top();
+    open.pop();
+    const std::size_t m = t.l + (t.r - t.l) / 2;
+    ask(m);
+    improve(m);
+    consider(t.l, m);
+    consider(m, t.r);
+  }
+  return deepest;
+}
+
+/// A point whose gap is exact, and the contour's element nearest to it.
+struct Known {
+  Point p;
+  double gap;
+  std::size_t element;
+};
+
+/// The golden-section search between the deepest sample's neighbours, in
+/// its usual form (both inner points computed every step), each step's
+/// comparison decided as the exact gaps would decide it but mostly from
+/// bounds: from points already known exactly, a gap is at least theirs
+/// less the distance (Lipschitz) and at most the distance to their nearest
+/// elements. Only a comparison the bounds leave open asks the contour.
+class GoldenSearch {
+ public:
+  GoldenSearch(const Segment& s, ExactGaps& gaps, double slack, std::size_t& count)
+      : s_(s), gaps_(gaps), slack_(slack), count_(count) {}
+  void know(const Known& k) {
+    known_[next_] = k;
+    next_ = (next_ + 1) % kKept;
+    size_ = std::min(size_ + 1, kKept);
+  }
+  double depth(double lo, double hi, double sampled_depth) {
+    const double golden = (std::sqrt(5.0) - 1) / 2;
+    for (int k = 0; k < 40; ++k) {
+      const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+      if (deeper(point_at(s_, a), point_at(s_, b))) {
+        hi = b;
+      } else {
+        lo = a;
+      }
+    }
+    return std::max(sampled_depth, exact(point_at(s_, 0.5 * (lo + hi))));
+  }
+
+ private:
+  static constexpr std::size_t kKept = 6;  // the last few points asked: the search closes in on them
+  struct Range {
+    double low, high;
+    bool exact;  // the gap itself (low and high), a point asked before
+  };
+  /// Bounds from the known points' gaps alone (Lipschitz); `closest`, the
+  /// known point nearest to p, whose element bounds the gap best.
+  Range bounds(Point p, std::size_t& closest) const {
+    Range r{-HUGE_VAL, HUGE_VAL, false};
+    double closest_apart = HUGE_VAL;
+    for (std::size_t i = 0; i < size_; ++i) {
+      const Known& k = known_[i];
+      if (k.p.x == p.x && k.p.y == p.y) return {k.gap, k.gap, true};
+      const double apart = apart_by(p, k.p);
+      r.low = std::max(r.low, k.gap - apart - slack_);
+      r.high = std::min(r.high, k.gap + apart + slack_);
+      if (apart < closest_apart) closest_apart = apart, closest = i;
+    }
+    return r;
+  }
+  /// The bound by the closest known point's element, the tighter one.
+  void tighten(Range& r, Point p, std::size_t closest) const {
+    double by_element = 0;
+    if (!r.exact && size_ > 0 && gaps_.gap_to(known_[closest].element, p, by_element))
+      r.high = std::min(r.high, by_element + slack_);
+  }
+  double exact(Point p) {
+    std::size_t closest = 0;
+    const Range r = bounds(p, closest);
+    if (r.exact) return r.low;
+    const double gap = gaps_.at(p, count_);
+    know({p, gap, gaps_.last_element()});
+    return gap;
+  }
+  /// gap(a) > gap(b), the exact gaps' answer.
+  bool deeper(Point a, Point b) {
+    for (;;) {
+      std::size_t closest_a = 0, closest_b = 0;
+      Range ra = bounds(a, closest_a), rb = bounds(b, closest_b);
+      if (ra.exact && rb.exact) return ra.low > rb.low;
+      if (ra.low > rb.high) return true;
+      if (ra.high < rb.low) return false;
+      tighten(ra, a, closest_a);
+      tighten(rb, b, closest_b);
+      if (ra.low > rb.high) return true;
+      if (ra.high < rb.low) return false;
+      // Ask the less certain of the two; its answer may settle the other.
+      const bool ask_a = !ra.exact && (rb.exact || ra.high - ra.low >= rb.high - rb.low);
+      exact(ask_a ? a : b);
+    }
+  }
+
+  const Segment& s_;
+  ExactGaps& gaps_;
+  double slack_;
+  std::size_t& count_;
+  Known known_[kKept];
+  std::size_t next_ = 0, size_ = 0;
+};
+
+/// Joins the spans of one loop (from `first_of_loop` on) that meet at a
+/// corner: the end of one element and the start of the next.
+void join_at_corners(std::vector<UncutSpan>& spans, std::size_t first_of_loop) {
+  std::vector<UncutSpan> merged(spans.begin(), spans.begin() + first_of_loop);
+  for (std::size_t i = first_of_loop; i < spans.size(); ++i) {
+    if (merged.size() > first_of_loop && distance(merged.back().to, spans[i].from) < 1e-9) {
+      merged.back().to = spans[i].to;
+      merged.back().depth = std::max(merged.back().depth, spans[i].depth);
+    } else {
+      merged.push_back(spans[i]);
+    }
+  }
+  if (merged.size() > first_of_loop + 1 && distance(merged.back().to, merged[first_of_loop].from) < 1e-9) {
+    merged[first_of_loop].from = merged.back().from;  // the loop's first corner
+    merged[first_of_loop].depth = std::max(merged[first_of_loop].depth, merged.back().depth);
+    merged.pop_back();
+  }
+  spans = std::move(merged);
+}
+
+}  // namespace
 
 std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIndex* contour, double radius,
-                                  const OffsetOptions& options) {
+                                  const OffsetOptions& options, UncutQueryCounts* counts_out) {
   std::vector<UncutSpan> spans;
   if (radius <= 0) return spans;
+  UncutQueryCounts counts;
   const double step = std::max(radius / 8, 10 * options.tolerance);
-  std::size_t hint = SIZE_MAX;  // the last nearest element: each point asked is near the last
-  auto gap_at = [&](const Segment& s, double t) {
-    if (!contour) return radius + 1;
-    const RegionQuery q = contour->nearest(point_at(s, t), hint);
-    hint = q.element;
-    return q.distance - radius;
-  };
-  // A sample only matters when its gap exceeds the report threshold; the
-  // last answer's element bounds the gap from above (the nearest element
-  // is no farther), so where that element alone is near enough, the
-  // search is not needed. (Its distance is computed here, not by the
-  // index: the margin covers the two computations' rounding.)
-  // Tried only after a sample within reach: along material left uncut
-  // (most of a gear's or comb's flanks) it would fail every time.
-  const double near_enough = radius + options.uncut_report_mm - 1e-9 * (1 + radius);
-  bool last_within_reach = true;
-  auto sample_gap = [&](const Segment& s, double t) {
-    if (last_within_reach && contour && hint < contour->elements().size()) {
-      const Point p = point_at(s, t);
-      const double bound = distance(nearest_point(contour->elements()[hint], p), p);
-      if (bound <= near_enough) return bound - radius;
-    }
-    const double gap = gap_at(s, t);
-    last_within_reach = gap <= options.uncut_report_mm;
-    return gap;
-  };
+  const double threshold = options.uncut_report_mm;
+  ExactGaps gaps(contour, radius);
+  // The bounds' margin: far above the rounding of any distance computed
+  // here or by the index (a few dozen ulps of the coordinates', centres'
+  // and radii's magnitude), so every decision is the exact gaps' one.
+  double magnitude = 0;
+  for (const Loop& loop : drawn)
+    for (const Segment& s : loop.segments) magnitude = std::max(magnitude, rounding_scale(s));
+  if (contour)
+    for (const Segment& s : contour->elements()) magnitude = std::max(magnitude, rounding_scale(s));
+  const double slack = 1e-12 * (1 + radius) + 3e-14 * magnitude;
+  Samples at;
   for (const Loop& loop : drawn) {
     const std::size_t first_of_loop = spans.size();
     for (const Segment& s : loop.segments) {
-      const std::size_t samples = std::min<std::size_t>(10000, 1 + static_cast<std::size_t>(segment_length(s) / step));
-      std::vector<double> gaps(samples + 1);
-      for (std::size_t i = 0; i <= samples; ++i) gaps[i] = sample_gap(s, static_cast<double>(i) / samples);
+      const double length = segment_length(s);
+      const std::size_t samples = std::min<std::size_t>(10000, 1 + static_cast<std::size_t>(length / step));
+      at.reset(samples + 1);
+      for (std::size_t i = 0; i <= samples; ++i) at.points[i] = point_at(s, static_cast<double>(i) / samples);
+      counts.samples += samples + 1;
+      classify(at, gaps, threshold, slack, counts);
+      const double spacing = length / static_cast<double>(samples) * (1 + 1e-12);
       for (std::size_t i = 0; i <= samples;) {
-        if (gaps[i] <= options.uncut_report_mm) {
+        if (!at.uncut[i]) {
           ++i;
           continue;
         }
         const std::size_t begin = i;
-        std::size_t deepest = i;
-        for (; i <= samples && gaps[i] > options.uncut_report_mm; ++i)
-          if (gaps[i] > gaps[deepest]) deepest = i;
-        double lo = static_cast<double>(deepest == 0 ? 0 : deepest - 1) / samples;
-        double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
-        const double golden = (std::sqrt(5.0) - 1) / 2;
-        for (int k = 0; k < 40; ++k) {
-          const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
-          if (gap_at(s, a) > gap_at(s, b)) {
-            hi = b;
-          } else {
-            lo = a;
-          }
-        }
-        const double depth = std::max(gaps[deepest], gap_at(s, 0.5 * (lo + hi)));
+        while (i <= samples && at.uncut[i]) ++i;
+        const std::size_t deepest = first_deepest(at, begin, i - 1, gaps, spacing, slack, counts);
+        const double lo = static_cast<double>(deepest == 0 ? 0 : deepest - 1) / samples;
+        const double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
+        GoldenSearch search(s, gaps, slack, counts.refining);
+        for (const std::size_t k : {deepest == 0 ? deepest : deepest - 1, std::min(deepest + 1, samples), deepest})
+          if (at.exact[k]) search.know({at.points[k], at.gaps[k], at.elements[k]});
+        const double depth = search.depth(lo, hi, at.gaps[deepest]);
         spans.push_back({point_at(s, static_cast<double>(begin) / samples),
                          point_at(s, static_cast<double>(i - 1) / samples), depth, s.entity, s.source_line});
       }
     }
-    // A corner shared by two elements shows up at the end of one and the start of the next.
-    std::vector<UncutSpan> merged(spans.begin(), spans.begin() + first_of_loop);
-    for (std::size_t i = first_of_loop; i < spans.size(); ++i) {
-      if (merged.size() > first_of_loop && distance(merged.back().to, spans[i].from) < 1e-9) {
-        merged.back().to = spans[i].to;
-        merged.back().depth = std::max(merged.back().depth, spans[i].depth);
-      } else {
-        merged.push_back(spans[i]);
-      }
-    }
-    if (merged.size() > first_of_loop + 1 && distance(merged.back().to, merged[first_of_loop].from) < 1e-9) {
-      merged[first_of_loop].from = merged.back().from;  // the loop's first corner
-      merged[first_of_loop].depth = std::max(merged[first_of_loop].depth, merged.back().depth);
-      merged.pop_back();
-    }
-    spans = std::move(merged);
+    join_at_corners(spans, first_of_loop);
   }
+  if (counts_out) *counts_out = counts;
   return spans;
 }
 

@@ -3,6 +3,7 @@
 /// left where the tool's contour stays farther than its radius.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "cad/loops.hpp"
@@ -11,12 +12,24 @@
 
 namespace tk::cad {
 
+/// How many exact distances (searches of the contour's index) the uncut
+/// search asked, by stage: for tests and measurements.
+struct UncutQueryCounts {
+  std::size_t samples = 0;   ///< points sampled along the drawing
+  std::size_t sampling = 0;  ///< exact answers to tell uncut samples from cut ones
+  std::size_t deepest = 0;   ///< more, to find each span's deepest sample
+  std::size_t refining = 0;  ///< the golden-section search's
+};
+
 /// Points of the drawing farther than R (+ the report threshold) from the
 /// tool's contour (`contour`, an index over it; null: no contour, all is
 /// uncut): material the tool cannot reach. Sampled every R / 8 along each
 /// element; the deepest point of a span is then refined by a
-/// golden-section search between its neighbouring samples.
+/// golden-section search between its neighbouring samples. The answer is
+/// that of every sample's exact distance, though most samples are settled
+/// by bounds (the distance is 1-Lipschitz along the drawing). `counts`,
+/// when given, receives the number of exact distances asked.
 std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIndex* contour, double radius,
-                                  const OffsetOptions& options);
+                                  const OffsetOptions& options, UncutQueryCounts* counts = nullptr);
 
 }  // namespace tk::cad

@@ -1,21 +1,26 @@
 /// @file test_region_uncut.cpp
-/// @brief The uncut search skips the contour's search for samples its last
-/// answer's element already puts within reach (region_uncut.cpp): the
-/// stretches it reports are those brute force over the contour finds at
-/// the same samples (every R / 8 along each element), joined over corners
-/// the same way, none missed and none made up.
+/// @brief The uncut search settles most samples by bounds (the gap is
+/// 1-Lipschitz along the drawing) and asks the contour only where they
+/// leave the answer open (region_uncut.cpp); its answer must be the plain
+/// search's to the last bit: every sample's exact gap by brute force over
+/// the contour's elements, runs above the threshold, each run's first
+/// deepest sample refined by the same golden-section search, the runs
+/// joined over corners the same way.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cad/loops.hpp"
 #include "cad/region_distance.hpp"
 #include "cad/region_offset.hpp"
+#include "cad/region_uncut.hpp"
 #include "cad/segment_geometry.hpp"
 #include "region_parts.hpp"
 #include "test_volume.hpp"
@@ -24,91 +29,168 @@ namespace region_uncut_test {  // named: the unity build joins the tests' anonym
 
 using namespace tk::cad;
 
-struct Stretch {
-  Point from, to;
-  double deepest = 0;  // the deepest sample's gap
+struct PlainSearch {
+  std::vector<UncutSpan> spans;
+  std::size_t questions = 0;  // the exact gaps it asks at least: uncut samples, 81 per run
 };
 
-bool same_point(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-9; }
-
-/// The stretches by brute force: each sample's gap to the contour's nearest
-/// element, over every element; runs above the threshold, joined where one
-/// ends at the point the next starts (within a loop, and round its start).
-std::vector<Stretch> brute_force_stretches(const std::vector<Loop>& drawn, const std::vector<Loop>& contour,
-                                           double radius, const OffsetOptions& options) {
-  std::vector<Stretch> all;
+/// The search written plainly: every sample's exact gap, by `gap_at`
+/// (the distance to the contour's nearest element less R).
+template <class Gap>
+PlainSearch plain_search(const std::vector<Loop>& drawn, Gap gap_at, double radius, const OffsetOptions& options) {
+  PlainSearch result;
+  const double threshold = options.uncut_report_mm;
   const double step = std::max(radius / 8, 10 * options.tolerance);
   for (const Loop& loop : drawn) {
-    std::vector<Stretch> runs;
+    std::vector<UncutSpan> runs;
     for (const Segment& s : loop.segments) {
       const std::size_t samples = std::min<std::size_t>(10000, 1 + static_cast<std::size_t>(segment_length(s) / step));
-      bool open = false;
+      std::vector<double> gaps;
+      for (std::size_t i = 0; i <= samples; ++i) gaps.push_back(gap_at(point_at(s, double(i) / samples)));
       for (std::size_t i = 0; i <= samples; ++i) {
-        const Point p = point_at(s, static_cast<double>(i) / samples);
-        // No contour (the tool fits nowhere): all is uncut, R + 1 deep by find_uncut's convention.
-        const double gap = contour.empty() ? radius + 1 : std::abs(brute_force_query(contour, p).distance) - radius;
-        if (gap <= options.uncut_report_mm) {
-          open = false;
-          continue;
+        if (gaps[i] <= threshold) continue;
+        const std::size_t begin = i;
+        std::size_t deepest = i;
+        for (; i + 1 <= samples && gaps[i + 1] > threshold; ++i)
+          if (gaps[i + 1] > gaps[deepest]) deepest = i + 1;
+        result.questions += i - begin + 1 + 81;
+        double lo = double(deepest == 0 ? 0 : deepest - 1) / samples;
+        double hi = double(std::min(deepest + 1, samples)) / samples;
+        const double golden = (std::sqrt(5.0) - 1) / 2;
+        for (int k = 0; k < 40; ++k) {
+          const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+          if (gap_at(point_at(s, a)) > gap_at(point_at(s, b))) {
+            hi = b;
+          } else {
+            lo = a;
+          }
         }
-        if (!open) runs.push_back({p, p, gap});
-        open = true;
-        runs.back().to = p;
-        runs.back().deepest = std::max(runs.back().deepest, gap);
+        const double depth = std::max(gaps[deepest], gap_at(point_at(s, 0.5 * (lo + hi))));
+        runs.push_back(
+            {point_at(s, double(begin) / samples), point_at(s, double(i) / samples), depth, s.entity, s.source_line});
       }
     }
-    std::vector<Stretch> joined;
-    for (const Stretch& run : runs)
-      if (!joined.empty() && same_point(joined.back().to, run.from)) {
+    std::vector<UncutSpan> joined;
+    for (const UncutSpan& run : runs)
+      if (!joined.empty() && std::hypot(joined.back().to.x - run.from.x, joined.back().to.y - run.from.y) < 1e-9) {
         joined.back().to = run.to;
-        joined.back().deepest = std::max(joined.back().deepest, run.deepest);
+        joined.back().depth = std::max(joined.back().depth, run.depth);
       } else {
         joined.push_back(run);
       }
-    if (joined.size() > 1 && same_point(joined.back().to, joined.front().from)) {
+    if (joined.size() > 1 &&
+        std::hypot(joined.back().to.x - joined.front().from.x, joined.back().to.y - joined.front().from.y) < 1e-9) {
       joined.front().from = joined.back().from;
-      joined.front().deepest = std::max(joined.front().deepest, joined.back().deepest);
+      joined.front().depth = std::max(joined.front().depth, joined.back().depth);
       joined.pop_back();
     }
-    all.insert(all.end(), joined.begin(), joined.end());
+    result.spans.insert(result.spans.end(), joined.begin(), joined.end());
   }
-  return all;
+  return result;
 }
 
-void expect_brute_force_stretches(const std::vector<Segment>& segments, double radius, MachiningSide side,
-                                  const std::string& what) {
+/// Same spans as the plain search, bit for bit, with the index's exact
+/// distances (each the minimum over the elements as the index computes
+/// them); and as with brute force's (computed apart, they may differ in
+/// the last bit: depths to 1e-12). Returns the number of exact gaps
+/// find_uncut asked and the plain search's least number.
+std::pair<std::size_t, std::size_t> expect_plain_search_spans(const std::vector<Segment>& segments, double radius,
+                                                              MachiningSide side, const std::string& what) {
   const LoopSet set = build_loops(segments, 1e-6);
   const OffsetOptions options{.tool_radius = radius, .side = side};
   const RegionOffset offset = offset_region(set.loops, RegionIndex(set.loops), options);
-  const std::vector<Stretch> expected = brute_force_stretches(set.loops, offset.loops, radius, options);
-  ASSERT_EQ(offset.uncut.size(), expected.size()) << what;
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    EXPECT_TRUE(same_point(offset.uncut[i].from, expected[i].from)) << what << ", span " << i;
-    EXPECT_TRUE(same_point(offset.uncut[i].to, expected[i].to)) << what << ", span " << i;
-    EXPECT_GE(offset.uncut[i].depth, expected[i].deepest - 1e-9) << what << ", span " << i;
+  UncutQueryCounts counts;
+  const std::vector<UncutSpan> found = find_uncut(set.loops, offset.contour.get(), radius, options, &counts);
+  const RegionIndex* contour = offset.contour.get();
+  // No contour (the tool fits nowhere): all is uncut, R + 1 deep by find_uncut's convention.
+  const auto by_index = [&](Point p) { return contour ? contour->nearest(p).distance - radius : radius + 1; };
+  const auto by_brute_force = [&](Point p) {
+    return offset.loops.empty() ? radius + 1 : std::abs(brute_force_query(offset.loops, p).distance) - radius;
+  };
+  const PlainSearch expected = plain_search(set.loops, by_index, radius, options);
+  const PlainSearch brute = plain_search(set.loops, by_brute_force, radius, options);
+  EXPECT_EQ(offset.uncut.size(), found.size()) << what;
+  EXPECT_EQ(found.size(), expected.spans.size()) << what;
+  EXPECT_EQ(found.size(), brute.spans.size()) << what;
+  for (std::size_t i = 0; i < std::min(found.size(), expected.spans.size()); ++i) {
+    const UncutSpan &got = found[i], &want = expected.spans[i];
+    EXPECT_EQ(got.from.x, want.from.x) << what << ", span " << i;
+    EXPECT_EQ(got.from.y, want.from.y) << what << ", span " << i;
+    EXPECT_EQ(got.to.x, want.to.x) << what << ", span " << i;
+    EXPECT_EQ(got.to.y, want.to.y) << what << ", span " << i;
+    EXPECT_EQ(got.depth, want.depth) << what << ", span " << i;
+    EXPECT_EQ(got.entity, want.entity) << what << ", span " << i;
+    if (i < offset.uncut.size()) EXPECT_EQ(offset.uncut[i].depth, got.depth) << what << ", span " << i;
+    if (i >= brute.spans.size()) continue;
+    EXPECT_EQ(got.from.x, brute.spans[i].from.x) << what << ", span " << i;
+    EXPECT_EQ(got.to.y, brute.spans[i].to.y) << what << ", span " << i;
+    EXPECT_NEAR(got.depth, brute.spans[i].depth, 1e-12 * (1 + radius)) << what << ", span " << i;
   }
+  return {counts.sampling + counts.deepest + counts.refining, expected.questions};
 }
 
 std::string label(double radius, MachiningSide side) {
   return "R " + std::to_string(radius) + (side == MachiningSide::inside ? " inside" : " outside");
 }
 
-TEST(RegionUncut, GearsAsBruteForceFindsThem) {
-  for (const double bulge : {0.0, -0.15})
-    for (const double radius : {0.3, 1.0})
-      for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
-        expect_brute_force_stretches(
-            parts::gear(test_volume(40, 12), side == MachiningSide::inside ? 3 : 5, 0.5, bulge), radius, side,
-            label(radius, side) + ", bulge " + std::to_string(bulge));
+std::vector<Segment> moved(std::vector<Segment> part, double dx, double dy) {
+  for (Segment& s : part) s.start.x += dx, s.start.y += dy, s.end.x += dx, s.end.y += dy;
+  return part;
 }
 
-TEST(RegionUncut, RandomPartsAsBruteForceFindsThem) {
+TEST(RegionUncut, GearsAsThePlainSearchFindsThem) {
+  for (const double bulge : {0.0, -0.15, 0.2})
+    for (const double radius : {0.3, 1.0})
+      for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside}) {
+        const std::vector<Segment> gear =
+            parts::gear(test_volume(40, 12), side == MachiningSide::inside ? 3 : 5, 0.5, bulge);
+        const std::string what = label(radius, side) + ", bulge " + std::to_string(bulge);
+        const auto [asked, plain] = expect_plain_search_spans(gear, radius, side, what);
+        // Nearly all of a gear's flanks is left uncut: the plain search asks
+        // every sample there, the bounds settle most of them.
+        EXPECT_LT(3 * asked, plain) << what;
+      }
+}
+
+TEST(RegionUncut, FarFromTheOriginAsThePlainSearchFindsThem) {
+  // Coordinates in the thousands: the bounds' margin grows with them.
+  for (const double radius : {0.3, 1.0}) {
+    const auto [asked, plain] =
+        expect_plain_search_spans(moved(parts::gear(test_volume(24, 8), 4, 0.5, 0.1), 4998.25, -3001.5), radius,
+                                  MachiningSide::outside, label(radius, MachiningSide::outside) + ", moved");
+    EXPECT_GT(plain, 0u) << "no span to compare";
+  }
+}
+
+TEST(RegionUncut, RandomPartsAsThePlainSearchFindsThem) {
   std::mt19937_64 random(424);
   for (int star = 0; star < test_volume(8, 3); ++star) {
     const std::vector<Segment> part = parts::random_star_with_hole(random, 6 + 3 * star);
-    for (const double radius : {0.7, 2.5, 6.0})
+    for (const double radius : {0.7, 2.5, 6.0, 40.0})
       for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
-        expect_brute_force_stretches(part, radius, side, "star " + std::to_string(star) + ", " + label(radius, side));
+        expect_plain_search_spans(part, radius, side, "star " + std::to_string(star) + ", " + label(radius, side));
+  }
+}
+
+TEST(RegionUncut, SpikyStarsAsThePlainSearchFindsThem) {
+  // Long thin spikes, arcs among them: spans of every length, deepest at
+  // ends and inside, runs broken by a sample within reach.
+  std::mt19937_64 random(2024);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int part = 0; part < test_volume(6, 2); ++part) {
+    std::vector<Point> corners;
+    const int n = 12 + 4 * part;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * std::numbers::pi * i / n, r = (i % 2 ? 5 : 30) + 10 * unit(random);
+      corners.push_back({r * std::cos(angle), r * std::sin(angle)});
+    }
+    std::vector<Segment> star;
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      star.push_back(
+          {corners[i], corners[(i + 1) % corners.size()], unit(random) < 0.25 ? 0.5 * (unit(random) - 0.5) : 0});
+    for (const double radius : {0.5, 1.5, 4.0})
+      for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside})
+        expect_plain_search_spans(star, radius, side, "spiky " + std::to_string(part) + ", " + label(radius, side));
   }
 }
 
