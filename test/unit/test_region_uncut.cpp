@@ -120,7 +120,9 @@ std::pair<std::size_t, std::size_t> expect_plain_search_spans(const std::vector<
     EXPECT_EQ(got.to.y, want.to.y) << what << ", span " << i;
     EXPECT_EQ(got.depth, want.depth) << what << ", span " << i;
     EXPECT_EQ(got.entity, want.entity) << what << ", span " << i;
-    if (i < offset.uncut.size()) EXPECT_EQ(offset.uncut[i].depth, got.depth) << what << ", span " << i;
+    if (i < offset.uncut.size()) {
+      EXPECT_EQ(offset.uncut[i].depth, got.depth) << what << ", span " << i;
+    }
     if (i >= brute.spans.size()) continue;
     EXPECT_EQ(got.from.x, brute.spans[i].from.x) << what << ", span " << i;
     EXPECT_EQ(got.to.y, brute.spans[i].to.y) << what << ", span " << i;
