@@ -45,7 +45,9 @@ inline Comparison compare(const std::vector<Loop>& loops, const std::vector<Poin
     EXPECT_EQ(by_tree.element, slow.element) << "tree " << p.x << ' ' << p.y;
     EXPECT_EQ(by_tree.nearest.x, slow.nearest.x) << "tree " << p.x << ' ' << p.y;
     EXPECT_EQ(by_tree.nearest.y, slow.nearest.y) << "tree " << p.x << ' ' << p.y;
-    if (std::abs(slow.distance) >= 1e-9) EXPECT_EQ(by_tree.inside(), slow.inside()) << "tree " << p.x << ' ' << p.y;
+    if (std::abs(slow.distance) >= 1e-9) {
+      EXPECT_EQ(by_tree.inside(), slow.inside()) << "tree " << p.x << ' ' << p.y;
+    }
     if (result.points % 3 == 2 && elements > 0) hint = (result.points * 7919) % elements;
     const RegionQuery hinted = tree.nearest(p, hint);
     expect_same_nearest(hinted, by_tree, p, "hinted");

@@ -78,11 +78,12 @@ void expect_same_uncut(const std::vector<Segment>& segments, double radius, Mach
   }
   // With no span reported, brute force finds the whole drawing within reach
   // at a sample of its points.
-  if (tree.uncut.empty())
+  if (tree.uncut.empty()) {
     for (const Loop& loop : set.loops)
       for (std::size_t k = 0; k < loop.segments.size(); k += 7)
         EXPECT_LE(brute_force_gap(tree.loops, point_at(loop.segments[k], 0.5), radius), options.uncut_report_mm)
             << what;
+  }
 }
 
 std::string label(double radius, MachiningSide side) {
