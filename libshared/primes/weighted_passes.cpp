@@ -1,11 +1,6 @@
 /// @file weighted_passes.cpp
 #include "primes/weighted_passes.hpp"
 
-// GCC 12 warns inside its own AVX-512 intrinsics (their _mm512_undefined).
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#include <immintrin.h>
-
 #include <algorithm>
 
 #include "primes/cpu_features.hpp"
@@ -63,33 +58,17 @@ TK_INLINE std::int64_t balance_chains(std::int64_t* __restrict digit, const std:
   return carry[kChains - 1];
 }
 
-// The digits balanced in lanes, eight at a time, by passes that each move
-// every digit's excess over [-2^(s-1), 2^(s-1)) one digit up at once (the
-// carry a digit takes in is what its neighbour gave off before this
-// pass). Each pass divides the excess by about 2^s; passes run until no
-// carry exceeds `enough` (2^51 to 1 in three passes at s = 20), while the
-// scalar chain is bound by its add-and-shift latency. The value is the
-// same; returns the carry out of the last digit.
-// One such pass over the whole vectors of digits [begin, end): the first
-// takes no carry in (the caller adds it); `last_up` gets the carry out of
-// digit end - 1. Returns the largest carry moved.
-TK_WIDE TK_INLINE std::int64_t lanes_pass(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits,
-                                          std::size_t begin, std::size_t end, std::int64_t& last_up) {
-  const __m512i one = _mm512_set1_epi64(1);
-  __m512i before = _mm512_setzero_si512(), largest = _mm512_setzero_si512();
-  for (std::size_t j = begin; j < end; j += 8) {
-    const __m512i size = _mm512_cvtepu8_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(bits + j)));
-    const __m512i half = _mm512_sllv_epi64(one, _mm512_sub_epi64(size, one));
-    const __m512i total = _mm512_add_epi64(_mm512_loadu_si512(digit + j), half);
-    const __m512i up = _mm512_srav_epi64(total, size);
-    const __m512i kept = _mm512_sub_epi64(_mm512_sub_epi64(total, _mm512_sllv_epi64(up, size)), half);
-    // lane i takes lane i-1's carry; lane 0 the previous vector's last
-    _mm512_storeu_si512(digit + j, _mm512_add_epi64(kept, _mm512_alignr_epi64(up, before, 7)));
-    largest = _mm512_max_epi64(largest, _mm512_abs_epi64(up));
-    before = up;
-  }
-  last_up = end > begin ? static_cast<std::int64_t>(_mm512_mask_reduce_max_epi64(0x80, before)) : 0;
-  return static_cast<std::int64_t>(_mm512_reduce_max_epi64(largest));
+// One lane pass (balance_lanes below) over the whole vectors of digits
+// [begin, end), by CarryLanes, the step the fused passes also take: the
+// first vector takes no carry in (the caller adds it); `last_up` gets the
+// carry out of digit end - 1. Returns the largest carry moved.
+TK_INLINE std::int64_t lanes_pass(std::int64_t* __restrict digit, const std::uint8_t* __restrict bits,
+                                  std::size_t begin, std::size_t end, std::int64_t& last_up) {
+  carry_lanes::CarryLanes carry;
+  for (std::size_t j = begin; j < end; j += 8)
+    carry_lanes::store(digit + j, carry.carried(carry_lanes::load(digit + j), bits + j));
+  last_up = end > begin ? carry.last_up() : 0;
+  return carry.most();
 }
 
 // The same pass on the digits past the whole vectors, one at a time;

@@ -105,9 +105,7 @@ struct Rounder {
   // The vector where the low coefficients end: its first `low_lanes` to sum.
   TK_INLINE void add_split(const V& value, const std::uint64_t* __restrict rotation, std::int64_t* __restrict z,
                            std::size_t low_lanes) {
-    add_split_term(term(value, rotation, z), low_lanes);
-  }
-  TK_INLINE void add_split_term(const U& t, std::size_t low_lanes) {
+    const U t = term(value, rotation, z);
     U low{}, high{};
     for (std::size_t l = 0; l < kLanes; ++l) (l < low_lanes ? low : high)[l] = t[l];
     accumulate(sum, low);

@@ -94,21 +94,30 @@ bool WeightedSquaring::square_and_reduce_fused(unsigned long minus) {
   if (carried.high_largest > carry_enough())
     top_carry += balance_digits(z + m, bits + m, coefficients_ - m, carry_enough(), wide_);
   if (top_carry != 0) return false;
-  const std::int64_t c = form_.c;
-  const Upper upper = upper_part(z);
   const SplitK split{k_low_, k_high_, static_cast<unsigned>(max_digit_bits_)};
   std::int64_t* next = product_.data();
   std::int64_t carry = 0;
-  if (multiply_and_carry(z, next, bits, m, split, c < 0, -c * low_carry, carry) > kProductCarryEnough)
+  if (multiply_and_carry(z, next, bits, m, split, form_.c < 0, -form_.c * low_carry, carry) > kProductCarryEnough)
     carry += balance_digits(next, bits, m, kProductCarryEnough, wide_);
-  const i128 y = static_cast<i128>(upper) + carry + c * static_cast<i128>(minus);
+  return fold_product(carry, carried.rounded, low_carry, minus);
+}
+
+// The fused and the split squarings' end: product_ holds the carried low
+// digits of k*L - c*H (coefficient_, unchanged, the square's), `carry`
+// the carry out of them. Y folds; the top digits are written; product_
+// becomes the digits held, to be weighted by the next square.
+bool WeightedSquaring::fold_product(std::int64_t carry, const RoundedCoefficients& rounded, std::int64_t low_carry,
+                                    unsigned long minus) {
+  const std::int64_t c = form_.c;
+  const std::size_t m = low_digits_;
+  const i128 y = static_cast<i128>(upper_part(coefficient_.data())) + carry + c * static_cast<i128>(minus);
   std::int64_t a = 0, b = 0;
   if (!divide_by_k(y, form_.k, a, b)) return false;  // cannot happen for t held here; never fold a wrong value
-  const std::int64_t left = absorb_at_bottom(next, bits, m, -c * a);
-  write_top_digits(next, bits, m, digits_, b + left);
+  const std::int64_t left = absorb_at_bottom(product_.data(), bits_.data(), m, -c * a);
+  write_top_digits(product_.data(), bits_.data(), m, digits_, b + left);
   digit_.swap(product_);
   weights_pending_ = true;
-  update_residue(carried.rounded, low_carry, a, minus);
+  update_residue(rounded, low_carry, a, minus);
   return true;
 }
 

@@ -117,6 +117,9 @@ class WeightedSquaring {
   bool square_and_reduce_fused(unsigned long minus);
   /// The same, split over threads_ (weighted_squaring_split.cpp).
   bool square_and_reduce_split(unsigned long minus);
+  /// Those two's end, from the carried product in product_ (weighted_squaring.cpp).
+  bool fold_product(std::int64_t carry, const RoundedCoefficients& rounded, std::int64_t low_carry,
+                    unsigned long minus);
   /// The carries before the multiplication by k stop at this (the digits then multiply in 64 bits).
   std::int64_t carry_enough() const {
     return (std::int64_t{1} << digit_bound_bits_) - (std::int64_t{1} << (max_digit_bits_ - 1)) - 1;

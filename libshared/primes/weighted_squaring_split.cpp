@@ -152,15 +152,7 @@ bool WeightedSquaring::square_and_reduce_split(unsigned long minus) {
   });
   weights_pending_ = false;
   if (!checked || high_carry != 0) return false;
-  const i128 y = static_cast<i128>(upper_part(z)) + carry + c * static_cast<i128>(minus);
-  std::int64_t a = 0, b = 0;
-  if (!divide_by_k(y, form_.k, a, b)) return false;  // cannot happen for t held here; never fold a wrong value
-  const std::int64_t left = absorb_at_bottom(product, bits, m, -c * a);
-  write_top_digits(product, bits, m, digits_, b + left);
-  digit_.swap(product_);
-  weights_pending_ = true;  // at the next square's start, by every thread
-  update_residue(rounded, low_carry, a, minus);
-  return true;
+  return fold_product(carry, rounded, low_carry, minus);  // weighted at the next square's start, by every thread
 }
 
 }  // namespace tk::primes
