@@ -14,6 +14,7 @@
 #include <ctime>
 
 #include "cad/clipper_sweep.hpp"
+#include "cad/offset_polygons.hpp"
 #include "cad/region_uncut.hpp"
 #include "cad/region_union.hpp"
 #include "cad/segment_geometry.hpp"
@@ -298,16 +299,19 @@ class StageClock {
   double last_;
 };
 
-/// Clipper's round joins: chords within `tolerance`, or on a large part
-/// (OffsetOptions::coarse_joins_from) within R / 1000 (35 chords a half
-/// turn). Each spike tip of a gear turns half round: at R = 1 mm and the
-/// default 0.1 um that is 111 vertices, and Clipper's sweep visits every
-/// active edge at each of them.
-double join_tolerance(const ClipperLib::Paths& paths, const OffsetOptions& options) {
+/// Whether the polygon stage draws a large part's way (OffsetOptions::coarse_joins_from).
+bool large_part(const ClipperLib::Paths& paths, const OffsetOptions& options) {
   std::size_t vertices = 0;
   for (const ClipperLib::Path& path : paths) vertices += path.size();
-  if (vertices < options.coarse_joins_from) return options.tolerance;
-  return std::max(options.tolerance, options.tool_radius * kCoarseJoinSagitta);
+  return vertices >= options.coarse_joins_from;
+}
+
+/// Clipper's round joins: chords within `tolerance`, or on a large part
+/// within R / 1000 (35 chords a half turn). Each spike tip of a gear turns
+/// half round: at R = 1 mm and the default 0.1 um that is 111 vertices,
+/// and Clipper's sweep visits every active edge at each of them.
+double join_tolerance(bool large, const OffsetOptions& options) {
+  return large ? std::max(options.tolerance, options.tool_radius * kCoarseJoinSagitta) : options.tolerance;
 }
 
 }  // namespace
@@ -367,11 +371,11 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     for (const Loop& loop : drawn) outer.push_back(!loop.is_hole());
     even_odd_union(paths, outer);
     clock.add(&OffsetStageTimes::even_odd_union);
-    ClipperLib::ClipperOffset offsetter;
-    offsetter.ArcTolerance = join_tolerance(paths, options) / kClipperUnitMm;
-    offsetter.AddPaths(paths, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
     ClipperLib::PolyTree tree;
-    offsetter.Execute(tree, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm);
+    const bool large = large_part(paths, options);
+    offset_polygons(paths, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm,
+                    join_tolerance(large, options) / kClipperUnitMm, tree,
+                    large ? ConcaveCorners::crossing : ConcaveCorners::spikes);
     if (turned) quarter_turn_back(tree);
     clock.add(&OffsetStageTimes::clipper_offset);
     const DrawingFeatures features(drawn, index);
