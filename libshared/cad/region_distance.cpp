@@ -175,6 +175,7 @@ bool RegionIndex::Impl::locate(Point p, std::size_t& leaf, Point& leaf_centre) c
 RegionQuery RegionIndex::query(Point p) const {
   const Impl& m = *impl_;
   if (m.segments.empty()) return {kInf, p, 0};
+  impl_->ensure_grid();
   std::uint32_t best = 0;
   std::size_t leaf = 0;
   Point leaf_centre;
@@ -200,7 +201,7 @@ RegionQuery RegionIndex::nearest(Point p, std::size_t hint) const {
   std::uint32_t best = 0;
   std::size_t leaf = 0;
   Point leaf_centre;
-  if (m.locate(p, leaf, leaf_centre)) {
+  if (m.grid_ready.load(std::memory_order_acquire) && m.locate(p, leaf, leaf_centre)) {
     const double best2 = m.leaf_nearest(leaf, leaf_centre, p, best);  // sets best: not in answer()'s arguments
     return m.answer(p, best2, best, false);
   }

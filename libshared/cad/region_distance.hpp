@@ -22,10 +22,12 @@ struct RegionQuery {
 
 class RegionIndex {
  public:
-  /// grid: the box tree and the grid of candidate lists (fast queries, a
-  /// build of some 20 us per element); tree: the box tree alone, built in
-  /// well under a microsecond per element, for query-light uses (its
-  /// queries are several times slower unless nearest() gets a hint).
+  /// grid: the box tree, and the grid of candidate lists for fast queries
+  /// (a build of some 10 us per element), built by the first query() (once,
+  /// whichever thread asks first; nearest() uses it once it is there, the
+  /// tree until then); tree: the box tree alone, built in well under a
+  /// microsecond per element, for query-light uses (its queries are
+  /// several times slower unless nearest() gets a hint). Both answer the same.
   enum class Layout { grid, tree };
   /// The region is the even-odd union of the loops' interiors.
   explicit RegionIndex(const std::vector<Loop>& loops, Layout layout = Layout::grid);

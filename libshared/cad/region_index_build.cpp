@@ -320,7 +320,19 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops, Layout layout) : impl_(
   for (std::uint32_t i = 0; i < m.order.size(); ++i) m.order[i] = i;
   m.nodes.reserve(m.segments.size());
   m.build_node(0, static_cast<std::uint32_t>(m.order.size()));
-  if (layout == Layout::tree) return;  // no grid: every query uses the tree
+  m.grid_wanted = layout == Layout::grid;  // built by the first query() (Impl::ensure_grid)
+}
+
+void RegionIndex::Impl::ensure_grid() {
+  if (!grid_wanted) return;
+  std::call_once(grid_once, [this] {
+    build_grid_lists();
+    grid_ready.store(true, std::memory_order_release);
+  });
+}
+
+void RegionIndex::Impl::build_grid_lists() {
+  Impl& m = *this;
   m.build_grid();
   if (m.nx == 0) return;
   // Two threads where there is enough work (the machine has two cores):

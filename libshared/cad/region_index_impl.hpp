@@ -5,9 +5,11 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <mutex>
 #include <vector>
 
 #include "cad/region_distance.hpp"
@@ -250,6 +252,14 @@ struct RegionIndex::Impl {
   /// their reference points (as a query does from the reference point).
   void build_inside(Workspace& w, std::size_t row_begin, std::size_t row_end);
   bool chain_parity(Workspace& w, Point from, Point to, const std::vector<std::uint32_t>& elements) const;
+  /// The grid (Layout::grid) comes with the first signed-distance query:
+  /// a run that never asks one (dxf2region writing a region) never pays
+  /// for it, and nearest() uses it only once it is there.
+  bool grid_wanted = false;
+  std::once_flag grid_once;
+  std::atomic<bool> grid_ready{false};
+  void ensure_grid();
+  void build_grid_lists();
   double ox = 0, oy = 0, size = 1, inv_size = 1;
   double rounding = 0;  // beyond the rounding of any computed distance (as the boxes' padding)
   std::size_t nx = 0, ny = 0;

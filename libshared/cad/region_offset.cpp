@@ -77,7 +77,11 @@ class DrawingFeatures {
 
   /// The feature nearest to p; the offset curve through p at distance R.
   Feature classify(Point p) const {
-    const RegionQuery q = index_.nearest(p);
+    // Points come along the polygon: the last answer is a near element, a
+    // bound for the tree's search (the index's grid is built only for
+    // signed-distance queries; the answer is the same either way).
+    const RegionQuery q = index_.nearest(p, hint_);
+    hint_ = q.element;
     const Segment& s = index_.elements()[q.element];
     double t = 0;
     nearest_point(s, p, &t);
@@ -110,6 +114,7 @@ class DrawingFeatures {
  private:
   const RegionIndex& index_;
   std::vector<std::size_t> next_;
+  mutable std::size_t hint_ = SIZE_MAX;
 };
 
 /// Where two exact curves cross, nearest to `near`; nullopt when they do
@@ -260,12 +265,15 @@ std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const Drawi
   if (loop.segments.size() < 2) return std::nullopt;
   double polygon_length = 0, exact_length = 0;
   for (std::size_t i = 0; i < n; ++i) polygon_length += norm(polygon[(i + 1) % n] - polygon[i]);
+  std::size_t hint = SIZE_MAX;  // the last answer, near the next point
   for (std::size_t i = 0; i < loop.segments.size(); ++i) {
     Segment& s = loop.segments[i];
     s.end = loop.segments[(i + 1) % loop.segments.size()].start;  // exactly closed
     exact_length += segment_length(s);
     for (double t : {0.25, 0.5, 0.75}) {
-      const double d = index.nearest(point_at(s, t)).distance;
+      const RegionQuery q = index.nearest(point_at(s, t), hint);
+      const double d = q.distance;
+      hint = q.element;
       if (std::abs(d - radius) > std::max(10 * tolerance, 1e-9 * radius)) return std::nullopt;
     }
   }
