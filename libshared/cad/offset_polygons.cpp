@@ -7,6 +7,8 @@
 #include <numbers>
 #include <vector>
 
+#include "cad/region_union.hpp"
+
 namespace tk::cad {
 namespace {
 
@@ -30,18 +32,6 @@ Normal unit_normal(IntPoint a, IntPoint b) {
   const double f = 1 / std::sqrt(dx * dx + dy * dy);
   dx *= f, dy *= f;
   return {dy, -dx};
-}
-
-/// The path without consecutive repeats (nor a last point equal to the
-/// first); empty when fewer than three points are left.
-Path distinct_points(const Path& path) {
-  Path out;
-  std::size_t high = path.size();
-  while (high > 1 && path[high - 1] == path[0]) --high;
-  for (std::size_t i = 0; i < high; ++i)
-    if (out.empty() || out.back() != path[i]) out.push_back(path[i]);
-  if (out.size() < 3) out.clear();
-  return out;
 }
 
 class JoinDrawer {
@@ -134,8 +124,8 @@ void offset_polygons(const Paths& paths, double delta, double arc_tolerance, Cli
                      ConcaveCorners concave) {
   out.Clear();
   Paths sources;
-  for (const Path& path : paths)
-    if (Path clean = distinct_points(path); !clean.empty()) sources.push_back(std::move(clean));
+  for (const Path& path : paths)  // Clipper offsets a closed path of three distinct vertices or more
+    if (Path clean = without_repeats(path); clean.size() >= 3) sources.push_back(std::move(clean));
   // The path with the lowest point (largest y, then smallest x; the first
   // of equals) is an outer boundary: its orientation says which way is out.
   const Path* lowest = nullptr;

@@ -26,16 +26,6 @@ int orient_exact(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
 
 bool lexicographic_less(const IntPoint& a, const IntPoint& b) { return a.X != b.X ? a.X < b.X : a.Y < b.Y; }
 
-/// The path without consecutive repeats, nor a last vertex equal to the first.
-ClipperLib::Path without_repeats(const ClipperLib::Path& path) {
-  ClipperLib::Path distinct;
-  distinct.reserve(path.size());
-  for (const IntPoint& p : path)
-    if (distinct.empty() || !(distinct.back() == p)) distinct.push_back(p);
-  while (distinct.size() > 1 && distinct.back() == distinct.front()) distinct.pop_back();
-  return distinct;
-}
-
 /// One edge of a path; `left` is its lexicographically smaller end.
 struct SweepEdge {
   IntPoint left, right;
@@ -99,6 +89,15 @@ struct BelowAtSweep {
 };
 
 }  // namespace
+
+ClipperLib::Path without_repeats(const ClipperLib::Path& path) {
+  ClipperLib::Path distinct;
+  distinct.reserve(path.size());
+  for (const IntPoint& p : path)
+    if (distinct.empty() || !(distinct.back() == p)) distinct.push_back(p);
+  while (distinct.size() > 1 && distinct.back() == distinct.front()) distinct.pop_back();
+  return distinct;
+}
 
 bool simple_and_disjoint(const ClipperLib::Paths& paths) {
   std::vector<SweepEdge> edges;

@@ -21,6 +21,10 @@ namespace tk::cad {
 /// vertices are not simple. O(n log n) in the edges.
 bool simple_and_disjoint(const ClipperLib::Paths& paths);
 
+/// The path without consecutive repeats, nor a last vertex equal to the
+/// first: the vertices Clipper keeps of a closed path it is given.
+ClipperLib::Path without_repeats(const ClipperLib::Path& path);
+
 /// The path without repeated vertices (consecutive, or the last equal to
 /// the first) and without vertices on the line through their neighbours,
 /// as Clipper's output would leave it (repeated until none is left).

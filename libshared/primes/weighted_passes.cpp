@@ -125,25 +125,22 @@ TK_INLINE void multiply_body(std::int64_t* __restrict d, const std::uint8_t* __r
 }
 
 // In place: a vector's old digits are read before it is written.
-TK_INLINE void multiply_lanes_body(std::int64_t* __restrict d, const std::uint8_t* __restrict bits, std::size_t m,
-                                   const SplitK& k, bool add_upper) {
+TK_WIDE void multiply_lanes(std::int64_t* __restrict d, const std::uint8_t* __restrict bits, std::size_t m,
+                            const SplitK& k, bool add_upper) {
   const std::size_t whole = m / 8 * 8;
   const std::int64_t tail_previous = whole > 0 ? d[whole - 1] : 0;
   carry_lanes::ProductLanes products(k);
   for (std::size_t j = 0; j < whole; j += 8) carry_lanes::store(d + j, products.next(d, bits, j, m, add_upper));
   multiply_body(d, bits, whole, m, k, add_upper, tail_previous);
 }
-TK_WIDE void multiply_lanes(std::int64_t* d, const std::uint8_t* bits, std::size_t m, const SplitK& k, bool add_upper) {
-  multiply_lanes_body(d, bits, m, k, add_upper);
-}
 
 // multiply_lanes into `out`, each vector of products carried by the lane
 // pass before it is stored (tail_pass's serial form for the digits past
 // the whole vectors): multiply_low_by_k, then the first pass of
 // balance_lanes, in one sweep.
-TK_INLINE std::int64_t multiply_carry_body(const std::int64_t* __restrict d, std::int64_t* __restrict out,
-                                           const std::uint8_t* __restrict bits, std::size_t m, const SplitK& k,
-                                           bool add_upper, std::int64_t add_at_zero, std::int64_t& carry_out) {
+TK_WIDE std::int64_t multiply_carry_lanes(const std::int64_t* __restrict d, std::int64_t* __restrict out,
+                                          const std::uint8_t* __restrict bits, std::size_t m, const SplitK& k,
+                                          bool add_upper, std::int64_t add_at_zero, std::int64_t& carry_out) {
   const std::size_t whole = m / 8 * 8;
   carry_lanes::ProductLanes products(k);
   carry_lanes::CarryLanes carry;
@@ -163,11 +160,6 @@ TK_INLINE std::int64_t multiply_carry_body(const std::int64_t* __restrict d, std
   }
   carry_out = up;
   return largest;
-}
-TK_WIDE std::int64_t multiply_carry_lanes(const std::int64_t* d, std::int64_t* out, const std::uint8_t* bits,
-                                          std::size_t m, const SplitK& k, bool add_upper, std::int64_t add_at_zero,
-                                          std::int64_t& carry_out) {
-  return multiply_carry_body(d, out, bits, m, k, add_upper, add_at_zero, carry_out);
 }
 
 // The top digits hold only what carries in (`up`); the last takes what is
