@@ -57,16 +57,32 @@ std::vector<std::size_t> cluster_ends(const std::vector<Point>& ends, double tol
   for (std::size_t i = 0; i < ends.size(); ++i) sorted.emplace_back(cell_of(ends[i], cell), i);
   std::sort(sorted.begin(), sorted.end());
   UnionFind sets(ends.size());
-  for (const auto& [key, i] : sorted)
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const CellKey near{key.first + dx, key.second + dy};
-        auto it = std::lower_bound(sorted.begin(), sorted.end(), std::tuple<CellKey, std::size_t>{near, 0});
-        for (; it != sorted.end() && std::get<0>(*it) == near; ++it) {
-          const std::size_t j = std::get<1>(*it);
-          if (j > i && distance(ends[i], ends[j]) <= tolerance) sets.unite(i, j);
-        }
+  const auto key_at = [&](std::size_t k) { return std::get<0>(sorted[k]); };
+  const auto unite_near = [&](std::size_t a_begin, std::size_t a_end, std::size_t b_begin, std::size_t b_end) {
+    for (std::size_t a = a_begin; a < a_end; ++a)
+      for (std::size_t b = std::max(b_begin, a + 1); b < b_end; ++b) {
+        const std::size_t i = std::get<1>(sorted[a]), j = std::get<1>(sorted[b]);
+        if (distance(ends[i], ends[j]) <= tolerance) sets.unite(i, j);
       }
+  };
+  // Each pair of neighbouring cells once: a cell with itself, the one above
+  // it and the three in the next column. Cells come sorted by column, then
+  // row, so the next column's are found by one pointer moving forward.
+  std::size_t next_column = 0;
+  for (std::size_t begin = 0, end = 0; begin < sorted.size(); begin = end) {
+    const CellKey key = key_at(begin);
+    while (end < sorted.size() && key_at(end) == key) ++end;
+    unite_near(begin, end, begin, end);
+    std::size_t above = end;
+    while (above < sorted.size() && key_at(above) == CellKey{key.first, key.second + 1}) ++above;
+    unite_near(begin, end, end, above);
+    const CellKey low{key.first + 1, key.second - 1}, high{key.first + 1, key.second + 1};
+    next_column = std::max(next_column, end);
+    while (next_column < sorted.size() && key_at(next_column) < low) ++next_column;
+    std::size_t last = next_column;
+    while (last < sorted.size() && key_at(last) <= high) ++last;
+    unite_near(begin, end, next_column, last);
+  }
   std::vector<std::size_t> cluster(ends.size()), number(ends.size(), SIZE_MAX);
   count = 0;
   for (std::size_t i = 0; i < ends.size(); ++i) {

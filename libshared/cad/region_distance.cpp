@@ -213,6 +213,43 @@ RegionQuery RegionIndex::nearest(Point p, std::size_t hint) const {
   return m.answer(p, best2, best, false);
 }
 
+RegionIndex::Nearby::Nearby(const RegionIndex& index, Point centre, double spread, double reach)
+    : index_(&index), centre_(centre), spread_(spread), reach2_(reach * reach) {
+  const Impl& m = *index.impl_;
+  if (m.segments.empty() || !(spread >= 0 && reach >= 0 && std::isfinite(spread + reach))) {
+    reach2_ = -1;  // every point goes to nearest()
+    return;
+  }
+  // An element nearest to a point within `spread` of the centre, at most
+  // `reach` from it, is within reach + spread of the centre.
+  const double margin = m.rounding + 1e-12 * (reach + spread);
+  std::vector<std::uint32_t> found;
+  m.tree_within(centre, reach + spread + margin, found);
+  elements_.reserve(found.size());
+  for (const std::uint32_t e : found) elements_.push_back({std::sqrt(distance2(m.kernels[e], centre)) - margin, e});
+  std::sort(elements_.begin(), elements_.end(),
+            [](const Element& a, const Element& b) { return a.from_centre < b.from_centre; });
+}
+
+RegionQuery RegionIndex::Nearby::nearest(Point p) const {
+  const double dx = p.x - centre_.x, dy = p.y - centre_.y;
+  if (!(dx * dx + dy * dy <= spread_ * spread_)) return index_->nearest(p);
+  const Impl& m = *index_->impl_;
+  double best2 = kInf;
+  std::uint32_t best = UINT32_MAX;
+  for (const Element& e : elements_) {
+    // No nearer than its distance from the centre less p's: once that
+    // exceeds the best, so does every later one (strictly: an equally near
+    // element may have a lower index).
+    const double low = e.from_centre - spread_;
+    if (low > 0 && low * low > best2) break;
+    const double d2 = distance2(m.kernels[e.index], p);
+    if (nearer(d2, e.index, best2, best)) best2 = d2, best = e.index;
+  }
+  if (!(best2 <= reach2_)) return index_->nearest(p);  // farther than promised: the list may lack its nearest
+  return m.answer(p, best2, best, false);
+}
+
 RegionQuery brute_force_query(const std::vector<Loop>& loops, Point p) {
   double best2 = kInf;
   const Segment* nearest = nullptr;

@@ -40,6 +40,27 @@ class RegionIndex {
   /// nearest element and point are query()'s. `hint`, an element near p
   /// (the last answer along a path), speeds up the tree's search.
   RegionQuery nearest(Point p, std::size_t hint = SIZE_MAX) const;
+  /// nearest() for many points close together (a search closing in on one
+  /// spot): the elements that can be nearest anywhere within `spread` of
+  /// `centre`, for points at most `reach` from the boundary, listed once
+  /// and sorted by their distance from `centre`, so that each answer
+  /// looks at the first few. The same answers as nearest(), bit for bit;
+  /// a point outside those bounds gets nearest() itself.
+  class Nearby {
+   public:
+    Nearby(const RegionIndex& index, Point centre, double spread, double reach);
+    RegionQuery nearest(Point p) const;
+
+   private:
+    struct Element {
+      double from_centre;  // its distance from the centre, less a margin for rounding
+      std::uint32_t index;
+    };
+    const RegionIndex* index_;
+    Point centre_;
+    double spread_, reach2_;
+    std::vector<Element> elements_;
+  };
   /// Every loop's segments, loop after loop.
   const std::vector<Segment>& elements() const;
   /// Which loop an element belongs to.

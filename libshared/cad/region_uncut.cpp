@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <queue>
 
 #include "cad/segment_geometry.hpp"
@@ -44,14 +45,21 @@ double rounding_scale(const Segment& s) {
 class ExactGaps {
  public:
   ExactGaps(const RegionIndex* contour, double radius) : contour_(contour), radius_(radius) {}
-  double at(Point p, std::size_t& count) {
+  /// `nearby`: the contour's elements round p (RegionIndex::Nearby), the same answer sooner.
+  double at(Point p, std::size_t& count, const RegionIndex::Nearby* nearby = nullptr) {
     ++count;
     if (!contour_) return radius_ + 1;  // no contour: all is uncut
-    const RegionQuery q = contour_->nearest(p, hint_);
+    const RegionQuery q = nearby ? nearby->nearest(p) : contour_->nearest(p, hint_);
     hint_ = q.element;
     return q.distance - radius_;
   }
   std::size_t last_element() const { return hint_; }
+  /// The contour's elements that can be nearest within `spread` of
+  /// `centre` for gaps up to `gap` there; none without a contour.
+  std::optional<RegionIndex::Nearby> nearby(Point centre, double spread, double gap) const {
+    if (!contour_) return std::nullopt;
+    return RegionIndex::Nearby(*contour_, centre, spread, gap + radius_);
+  }
   /// The gap to one element of the contour alone: at least the exact gap,
   /// but for rounding (which the caller's margin covers).
   bool gap_to(std::size_t element, Point p, double& bound) const {
@@ -186,6 +194,16 @@ class GoldenSearch {
     size_ = std::min(size_ + 1, kKept);
   }
   double depth(double lo, double hi, double sampled_depth) {
+    // Every point asked lies within the bracket: list the contour's
+    // elements that can be nearest there once (bounded by the gaps known),
+    // so that each answer looks at a few of them, not down the tree.
+    const Point centre = point_at(s_, 0.5 * (lo + hi));
+    const double spread = segment_length(s_) * 0.5 * (hi - lo) * (1 + 1e-9) +
+                          1e-12 * (std::abs(centre.x) + std::abs(centre.y) + segment_length(s_));
+    double reach = HUGE_VAL;
+    for (std::size_t i = 0; i < size_; ++i)
+      reach = std::min(reach, known_[i].gap + slack_ + apart_by(known_[i].p, centre) + spread);
+    if (size_ > 0) nearby_ = gaps_.nearby(centre, spread, reach);
     const double golden = (std::sqrt(5.0) - 1) / 2;
     for (int k = 0; k < 40; ++k) {
       const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
@@ -229,7 +247,7 @@ class GoldenSearch {
     std::size_t closest = 0;
     const Range r = bounds(p, closest);
     if (r.exact) return r.low;
-    const double gap = gaps_.at(p, count_);
+    const double gap = gaps_.at(p, count_, nearby_ ? &*nearby_ : nullptr);
     know({p, gap, gaps_.last_element()});
     return gap;
   }
@@ -257,6 +275,7 @@ class GoldenSearch {
   std::size_t& count_;
   Known known_[kKept];
   std::size_t next_ = 0, size_ = 0;
+  std::optional<RegionIndex::Nearby> nearby_;
 };
 
 /// Joins the spans of one loop (from `first_of_loop` on) that meet at a

@@ -1,0 +1,98 @@
+/// @file test_region_nearby.cpp
+/// @brief RegionIndex::Nearby (the elements that can be nearest round one
+/// spot, listed once) answers as brute force does, bit for bit: the same
+/// element, distance and nearest point, ties to the lower element
+/// included; and a point outside its promise (farther from the centre
+/// than the spread, or from the boundary than the reach) still gets the
+/// right answer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "cad/loops.hpp"
+#include "cad/region_distance.hpp"
+#include "region_parts.hpp"
+#include "test_volume.hpp"
+
+namespace region_nearby_test {  // named: the unity build joins the tests' anonymous namespaces
+
+using namespace tk::cad;
+
+/// p's answer from `nearby` against brute force's.
+void expect_brute_force(const RegionIndex::Nearby& nearby, const std::vector<Loop>& loops, Point p, const char* what) {
+  const RegionQuery got = nearby.nearest(p), want = brute_force_query(loops, p);
+  ASSERT_EQ(got.element, want.element) << what << " at (" << p.x << ", " << p.y << ")";
+  ASSERT_EQ(got.distance, std::abs(want.distance)) << what << " at (" << p.x << ", " << p.y << ")";
+  ASSERT_EQ(got.nearest.x, want.nearest.x) << what;
+  ASSERT_EQ(got.nearest.y, want.nearest.y) << what;
+}
+
+Point around(std::mt19937_64& random, Point centre, double spread) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double angle = 2 * std::numbers::pi * unit(random), r = spread * std::sqrt(unit(random));
+  return {centre.x + r * std::cos(angle), centre.y + r * std::sin(angle)};
+}
+
+TEST(RegionNearby, AnswersAsBruteForceWithinItsSpreadAndOutside) {
+  std::mt19937_64 random(11);
+  const LoopSet set = build_loops(parts::random_star_with_hole(random, test_volume(400, 100)), 1e-9);
+  const RegionIndex index(set.loops, RegionIndex::Layout::tree);
+  std::uniform_real_distribution<double> coordinate(-45, 45), unit(0, 1);
+  for (int spot = 0; spot < test_volume(300, 40); ++spot) {
+    const Point centre{coordinate(random), coordinate(random)};
+    const double spread = 3 * unit(random) * unit(random);
+    // The tightest promise: the centre's distance plus the spread.
+    const double reach = index.nearest(centre).distance + spread;
+    const RegionIndex::Nearby nearby(index, centre, spread, reach);
+    expect_brute_force(nearby, set.loops, centre, "centre");
+    for (int i = 0; i < 20; ++i) expect_brute_force(nearby, set.loops, around(random, centre, spread), "within");
+    for (int i = 0; i < 5; ++i)  // beyond the spread: nearest() itself
+      expect_brute_force(nearby, set.loops, around(random, centre, 10 + 5 * spread), "beyond the spread");
+    // A reach promised too short: whatever the list lacks, the answer is right.
+    const RegionIndex::Nearby short_reach(index, centre, spread, 0.25 * reach);
+    for (int i = 0; i < 10; ++i)
+      expect_brute_force(short_reach, set.loops, around(random, centre, spread), "reach too short");
+  }
+}
+
+TEST(RegionNearby, NamesTheLowerOfEquallyNearElements) {
+  // A comb's slots: points on a slot's middle line are equally far from
+  // both walls (exactly, on these coordinates), and brute force names
+  // the lower element; the list's order by distance from the centre must
+  // not change that.
+  std::vector<Point> v;
+  for (int k = 0; k < 40; ++k) {
+    const double x = 2.0 * k;
+    v.insert(v.end(), {{x, 0}, {x, 10}, {x + 1, 10}, {x + 1, 0}});
+  }
+  v.insert(v.end(), {{80, -5}, {0, -5}});
+  std::vector<Segment> comb;
+  for (std::size_t i = 0; i < v.size(); ++i) comb.push_back({v[i], v[(i + 1) % v.size()], 0});
+  const LoopSet set = build_loops(comb, 1e-9);
+  const RegionIndex index(set.loops, RegionIndex::Layout::tree);
+  int ties = 0;
+  for (int slot = 0; slot < 39; ++slot) {
+    const Point centre{2.0 * slot + 1.5, 5};
+    const double spread = 4;
+    const RegionIndex::Nearby nearby(index, centre, spread, index.nearest(centre).distance + spread);
+    for (double y = 1; y <= 9; y += 0.5) {
+      const Point p{centre.x, y};
+      expect_brute_force(nearby, set.loops, p, "slot middle");
+      const RegionQuery a = brute_force_query(set.loops, p);
+      ties += std::abs(std::abs(a.distance) - 0.5) == 0;
+    }
+  }
+  EXPECT_GT(ties, 39 * 10);  // most of those points are ties: the rule was exercised
+}
+
+TEST(RegionNearby, EmptyIndexAnswersAsNearest) {
+  const RegionIndex index(std::vector<Loop>{}, RegionIndex::Layout::tree);
+  const RegionIndex::Nearby nearby(index, {0, 0}, 1, 1);
+  EXPECT_EQ(nearby.nearest({0.5, 0}).distance, index.nearest({0.5, 0}).distance);
+}
+
+}  // namespace region_nearby_test
