@@ -26,8 +26,9 @@ namespace {
 
 constexpr double kClipperUnitMm = 1e-6;  // 1 nm integers: ±4.6e12 mm fit Clipper's 62-bit range
 constexpr double kLargestCoordinateMm = 1e9;
-constexpr double kCoarseJoinSagitta = 1e-3;  // of the tool radius, on large parts (join_tolerance)
-constexpr double kLargestPartMm = 1e6;       // a kilometre: beyond it, the units are wrong, not the machine big
+// Of the tool radius, on large parts (join_tolerance): first try, and after a failed recovery.
+constexpr double kCoarseJoinSagitta = 1e-2, kFineJoinSagitta = 1e-3;
+constexpr double kLargestPartMm = 1e6;  // a kilometre: beyond it, the units are wrong, not the machine big
 
 Point operator+(Point a, Point b) { return {a.x + b.x, a.y + b.y}; }
 Point operator-(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
@@ -314,12 +315,40 @@ bool large_part(const ClipperLib::Paths& paths, const OffsetOptions& options) {
   return vertices >= options.coarse_joins_from;
 }
 
+enum class JoinCoarseness { coarse, fine };
+
 /// Clipper's round joins: chords within `tolerance`, or on a large part
-/// within R / 1000 (35 chords a half turn). Each spike tip of a gear turns
-/// half round: at R = 1 mm and the default 0.1 um that is 111 vertices,
-/// and Clipper's sweep visits every active edge at each of them.
-double join_tolerance(bool large, const OffsetOptions& options) {
-  return large ? std::max(options.tolerance, options.tool_radius * kCoarseJoinSagitta) : options.tolerance;
+/// within R / 100 (11 chords a half turn), R / 1000 (35) if that leaves a
+/// loop to the polygon. Each spike tip of a gear turns half round: at
+/// R = 1 mm and the default 0.1 um that is 111 vertices, and Clipper's
+/// sweep visits every active edge at each of them.
+double join_tolerance(bool large, JoinCoarseness joins, const OffsetOptions& options) {
+  if (!large) return options.tolerance;
+  return std::max(options.tolerance,
+                  options.tool_radius * (joins == JoinCoarseness::coarse ? kCoarseJoinSagitta : kFineJoinSagitta));
+}
+
+/// Walks Clipper's tree into `result.loops`, outer boundaries before their
+/// holes, depth from nesting, each loop exact where recover_exact() can.
+void recover_loops(const ClipperLib::PolyTree& tree, const DrawingFeatures& features, const RegionIndex& index,
+                   const OffsetOptions& options, RegionOffset& result) {
+  std::vector<std::pair<const ClipperLib::PolyNode*, int>> pending;
+  for (const ClipperLib::PolyNode* child : tree.Childs) pending.push_back({child, -1});
+  for (std::size_t i = 0; i < pending.size(); ++i) {
+    const auto [node, parent] = pending[i];
+    const std::vector<Point> polygon = from_clipper(node->Contour);
+    if (polygon.size() < 3) continue;
+    std::optional<Loop> exact = recover_exact(polygon, features, index, options.tool_radius, options.tolerance);
+    if (!exact) ++result.polygon_loops;
+    Loop loop = exact ? std::move(*exact) : polygon_loop(polygon);
+    loop.parent = parent;
+    loop.depth = parent < 0 ? 0 : result.loops[parent].depth + 1;
+    loop.area = signed_area(loop.segments);
+    if ((loop.area < 0) != loop.is_hole()) reverse(loop);
+    const int self = static_cast<int>(result.loops.size());
+    result.loops.push_back(std::move(loop));
+    for (const ClipperLib::PolyNode* child : node->Childs) pending.push_back({child, self});
+  }
 }
 
 }  // namespace
@@ -379,33 +408,24 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     for (const Loop& loop : drawn) outer.push_back(!loop.is_hole());
     even_odd_union(paths, outer);
     clock.add(&OffsetStageTimes::even_odd_union);
-    ClipperLib::PolyTree tree;
     const bool large = large_part(paths, options);
-    offset_polygons(paths, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm,
-                    join_tolerance(large, options) / kClipperUnitMm, tree,
-                    large ? ConcaveCorners::crossing : ConcaveCorners::spikes);
-    if (turned) quarter_turn_back(tree);
-    clock.add(&OffsetStageTimes::clipper_offset);
     const DrawingFeatures features(drawn, index);
-    // Walk the tree: outer boundaries before their holes, depth from nesting.
-    std::vector<std::pair<const ClipperLib::PolyNode*, int>> pending;
-    for (const ClipperLib::PolyNode* child : tree.Childs) pending.push_back({child, -1});
-    for (std::size_t i = 0; i < pending.size(); ++i) {
-      const auto [node, parent] = pending[i];
-      const std::vector<Point> polygon = from_clipper(node->Contour);
-      if (polygon.size() < 3) continue;
-      std::optional<Loop> exact = recover_exact(polygon, features, index, options.tool_radius, options.tolerance);
-      if (!exact) ++result.polygon_loops;
-      Loop loop = exact ? std::move(*exact) : polygon_loop(polygon);
-      loop.parent = parent;
-      loop.depth = parent < 0 ? 0 : result.loops[parent].depth + 1;
-      loop.area = signed_area(loop.segments);
-      if ((loop.area < 0) != loop.is_hole()) reverse(loop);
-      const int self = static_cast<int>(result.loops.size());
-      result.loops.push_back(std::move(loop));
-      for (const ClipperLib::PolyNode* child : node->Childs) pending.push_back({child, self});
+    // A large part's joins are drawn coarse first; should any loop fail the
+    // exact recovery, the polygon stage runs again with the finer joins, so
+    // that a loop left as a polygon is as close as before.
+    for (const JoinCoarseness joins : {JoinCoarseness::coarse, JoinCoarseness::fine}) {
+      result.loops.clear();
+      result.polygon_loops = 0;
+      ClipperLib::PolyTree tree;
+      offset_polygons(paths, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm,
+                      join_tolerance(large, joins, options) / kClipperUnitMm, tree,
+                      large ? ConcaveCorners::crossing : ConcaveCorners::spikes);
+      if (turned) quarter_turn_back(tree);
+      clock.add(&OffsetStageTimes::clipper_offset);
+      recover_loops(tree, features, index, options, result);
+      clock.add(&OffsetStageTimes::exact_recovery);
+      if (!large || result.polygon_loops == 0) break;
     }
-    clock.add(&OffsetStageTimes::exact_recovery);
   }
   // One index over the contour serves the uncut search here and the barrier points of guard_query.
   // The uncut search's queries follow the drawing, each hinted by the last

@@ -41,9 +41,10 @@ struct OffsetOptions {
   double max_vertices = 3e5;                // its time grows with them: a drawing estimated at 124,000 took 7 s
   OffsetStageTimes* stage_times = nullptr;  ///< filled when given
   /// The polygon stage's input vertices from which Clipper draws its round
-  /// joins coarser (chords within tool_radius / 1000 instead of
-  /// `tolerance`; the exact recovery turns them into true arcs either way):
-  /// on a large part its sweep over the joins' vertices dominates), and
+  /// joins coarser (chords within tool_radius / 100 instead of
+  /// `tolerance`, again within tool_radius / 1000 should a loop then fail
+  /// the exact recovery, which turns them into true arcs either way: on a
+  /// large part Clipper's sweep over the joins' vertices dominates), and
   /// draws concave corners as the crossing of their offset edges, not
   /// Clipper's spikes (offset_polygons.hpp: a 100,000-vertex ring's sweep
   /// held thousands of spikes). Below it the polygons stay Clipper's own.
