@@ -213,6 +213,10 @@ RegionQuery RegionIndex::nearest(Point p, std::size_t hint) const {
   return m.answer(p, best2, best, false);
 }
 
+double RegionIndex::distance_to(std::size_t element, Point p) const {
+  return std::sqrt(distance2(impl_->kernels.at(element), p));
+}
+
 RegionIndex::Nearby::Nearby(const RegionIndex& index, Point centre, double spread, double reach)
     : index_(&index), centre_(centre), spread_(spread), reach2_(reach * reach) {
   const Impl& m = *index.impl_;

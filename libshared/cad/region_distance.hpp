@@ -61,6 +61,9 @@ class RegionIndex {
     double spread_, reach2_;
     std::vector<Element> elements_;
   };
+  /// The distance from p to one element, as nearest() computes it (no
+  /// trigonometry: the element's frame is prepared).
+  double distance_to(std::size_t element, Point p) const;
   /// Every loop's segments, loop after loop.
   const std::vector<Segment>& elements() const;
   /// Which loop an element belongs to.

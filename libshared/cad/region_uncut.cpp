@@ -51,9 +51,12 @@ class ExactGaps {
     if (!contour_) return radius_ + 1;  // no contour: all is uncut
     const RegionQuery q = nearby ? nearby->nearest(p) : contour_->nearest(p, hint_);
     hint_ = q.element;
+    nearest_ = q.nearest;
     return q.distance - radius_;
   }
   std::size_t last_element() const { return hint_; }
+  /// The contour's point nearest to the last point asked.
+  Point last_nearest() const { return nearest_; }
   /// The contour's elements that can be nearest within `spread` of
   /// `centre` for gaps up to `gap` there; none without a contour.
   std::optional<RegionIndex::Nearby> nearby(Point centre, double spread, double gap) const {
@@ -64,7 +67,7 @@ class ExactGaps {
   /// but for rounding (which the caller's margin covers).
   bool gap_to(std::size_t element, Point p, double& bound) const {
     if (!contour_ || element >= contour_->elements().size()) return false;
-    bound = distance(nearest_point(contour_->elements()[element], p), p) - radius_;
+    bound = contour_->distance_to(element, p) - radius_;
     return true;
   }
 
@@ -72,6 +75,7 @@ class ExactGaps {
   const RegionIndex* contour_;
   double radius_;
   std::size_t hint_ = SIZE_MAX;
+  Point nearest_;
 };
 
 /// One element's samples: each gap exact or, where `exact` is 0, an upper
@@ -81,8 +85,10 @@ struct Samples {
   std::vector<double> gaps;
   std::vector<unsigned char> exact, uncut;
   std::vector<std::size_t> elements;  // the contour's nearest, where exact
+  std::vector<Point> nearest;         // and its nearest point
   void reset(std::size_t count) {
     elements.resize(count);
+    nearest.resize(count);
     points.resize(count);
     gaps.assign(count, 0);
     exact.assign(count, 0);
@@ -116,6 +122,7 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, Uncu
     at.gaps[i] = gaps.at(p, counts.sampling);
     at.exact[i] = 1;
     at.elements[i] = gaps.last_element();
+    at.nearest[i] = gaps.last_nearest();
     at.uncut[i] = at.gaps[i] > threshold;
     last_within_reach = !at.uncut[i];
     anchor = i;
@@ -127,13 +134,20 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, Uncu
 /// two exact samples l < r, spaced at most `spacing` apart along the
 /// element, no gap exceeds (g_l + g_r + (r - l) * spacing) / 2; a stretch
 /// whose bound (plus the margin) is below the best exact gap so far holds
-/// neither a deeper sample nor an equal one, so it is left unasked.
+/// neither a deeper sample nor an equal one, so it is left unasked. On a
+/// `straight` element a second bound is often much tighter (along a slot's
+/// wall the gap grows as fast as the Lipschitz bound allows, and that bound
+/// alone asked nearly every sample): a sample's gap is at most its
+/// distance to any point of the contour, less R, and the distance to l's
+/// or r's nearest point is convex along the line, so largest at the samples
+/// next to l and r.
 std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, ExactGaps& gaps, double spacing,
-                          double slack, UncutQueryCounts& counts) {
+                          double radius, bool straight, double slack, UncutQueryCounts& counts) {
   const auto ask = [&](std::size_t i) {
     at.gaps[i] = gaps.at(at.points[i], counts.deepest);
     at.exact[i] = 1;
     at.elements[i] = gaps.last_element();
+    at.nearest[i] = gaps.last_nearest();
   };
   for (const std::size_t end : {begin, last})
     if (!at.exact[end]) ask(end);
@@ -145,7 +159,13 @@ std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, Exac
   };
   std::priority_queue<Stretch> open;
   const auto bound = [&](std::size_t l, std::size_t r) {
-    return (at.gaps[l] + at.gaps[r] + static_cast<double>(r - l) * spacing) / 2 + slack;
+    double most = (at.gaps[l] + at.gaps[r] + static_cast<double>(r - l) * spacing) / 2;
+    if (straight)  // the samples between are no farther from the contour than from l's or r's nearest point
+      for (const std::size_t end : {l, r}) {
+        const Point a = at.nearest[end];
+        most = std::min(most, std::max(apart_by(at.points[l + 1], a), apart_by(at.points[r - 1], a)) - radius);
+      }
+    return most + slack;
   };
   const auto consider = [&](std::size_t l, std::size_t r) {
     if (r - l >= 2) open.push({bound(l, r), l, r});
@@ -194,16 +214,10 @@ class GoldenSearch {
     size_ = std::min(size_ + 1, kKept);
   }
   double depth(double lo, double hi, double sampled_depth) {
-    // Every point asked lies within the bracket: list the contour's
-    // elements that can be nearest there once (bounded by the gaps known),
-    // so that each answer looks at a few of them, not down the tree.
-    const Point centre = point_at(s_, 0.5 * (lo + hi));
-    const double spread = segment_length(s_) * 0.5 * (hi - lo) * (1 + 1e-9) +
-                          1e-12 * (std::abs(centre.x) + std::abs(centre.y) + segment_length(s_));
-    double reach = HUGE_VAL;
-    for (std::size_t i = 0; i < size_; ++i)
-      reach = std::min(reach, known_[i].gap + slack_ + apart_by(known_[i].p, centre) + spread);
-    if (size_ > 0) nearby_ = gaps_.nearby(centre, spread, reach);
+    // Every point asked lies within the bracket (centre_, spread_).
+    centre_ = point_at(s_, 0.5 * (lo + hi));
+    spread_ = segment_length(s_) * 0.5 * (hi - lo) * (1 + 1e-9) +
+              1e-12 * (std::abs(centre_.x) + std::abs(centre_.y) + segment_length(s_));
     const double golden = (std::sqrt(5.0) - 1) / 2;
     for (int k = 0; k < 40; ++k) {
       const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
@@ -218,6 +232,9 @@ class GoldenSearch {
 
  private:
   static constexpr std::size_t kKept = 6;  // the last few points asked: the search closes in on them
+  // Questions asked of the tree before the elements round the bracket are
+  // listed (a gear's searches mostly end within two; a comb's ask dozens).
+  static constexpr std::size_t kAskedAlone = 2;
   struct Range {
     double low, high;
     bool exact;  // the gap itself (low and high), a point asked before
@@ -247,6 +264,15 @@ class GoldenSearch {
     std::size_t closest = 0;
     const Range r = bounds(p, closest);
     if (r.exact) return r.low;
+    if (!nearby_ && ++asked_ > kAskedAlone && size_ > 0) {
+      // A search that keeps asking: list the contour's elements that can be
+      // nearest within the bracket once (bounded by the gaps known), so
+      // that each answer looks at a few of them, not down the tree.
+      double reach = HUGE_VAL;
+      for (std::size_t i = 0; i < size_; ++i)
+        reach = std::min(reach, known_[i].gap + slack_ + apart_by(known_[i].p, centre_) + spread_);
+      nearby_ = gaps_.nearby(centre_, spread_, reach);
+    }
     const double gap = gaps_.at(p, count_, nearby_ ? &*nearby_ : nullptr);
     know({p, gap, gaps_.last_element()});
     return gap;
@@ -276,6 +302,9 @@ class GoldenSearch {
   Known known_[kKept];
   std::size_t next_ = 0, size_ = 0;
   std::optional<RegionIndex::Nearby> nearby_;
+  Point centre_;
+  double spread_ = 0;
+  std::size_t asked_ = 0;
 };
 
 /// Joins the spans of one loop (from `first_of_loop` on) that meet at a
@@ -335,7 +364,7 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
         }
         const std::size_t begin = i;
         while (i <= samples && at.uncut[i]) ++i;
-        const std::size_t deepest = first_deepest(at, begin, i - 1, gaps, spacing, slack, counts);
+        const std::size_t deepest = first_deepest(at, begin, i - 1, gaps, spacing, radius, !is_arc(s), slack, counts);
         const double lo = static_cast<double>(deepest == 0 ? 0 : deepest - 1) / samples;
         const double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
         GoldenSearch search(s, gaps, slack, counts.refining);

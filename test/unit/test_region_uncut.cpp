@@ -180,6 +180,33 @@ TEST(RegionUncut, RandomPartsAsThePlainSearchFindsThem) {
   }
 }
 
+TEST(RegionUncut, CombsAsThePlainSearchFindsThem) {
+  // Slots narrower than the tool: each is uncut from wall to wall, deepest
+  // inside its straight bottom (the search's convexity bound on a line
+  // decides there), turned so that no line is axis-parallel.
+  for (const double turn : {0.0, 0.3}) {
+    const double c = std::cos(turn), s = std::sin(turn);
+    std::vector<Point> corners;
+    const int teeth = test_volume(12, 4);
+    for (int k = 0; k < teeth; ++k) {
+      const double x = 2.0 * k, width = 0.8 + 0.05 * (k % 5);
+      corners.insert(corners.end(), {{x, 0}, {x, 6}, {x + width, 6}, {x + width, 0}});
+    }
+    corners.insert(corners.end(), {{2.0 * teeth, -3}, {0, -3}});
+    std::vector<Segment> comb;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+      const Point a = corners[i], b = corners[(i + 1) % corners.size()];
+      comb.push_back({{c * a.x - s * a.y, s * a.x + c * a.y}, {c * b.x - s * b.y, s * b.x + c * b.y}, 0});
+    }
+    for (const double radius : {0.7, 1.0})
+      for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside}) {
+        const auto [asked, plain] = expect_plain_search_spans(
+            comb, radius, side, "comb turned " + std::to_string(turn) + ", " + label(radius, side));
+        EXPECT_GT(plain, 0u) << "no span to compare";
+      }
+  }
+}
+
 TEST(RegionUncut, SpikyStarsAsThePlainSearchFindsThem) {
   // Long thin spikes, arcs among them: spans of every length, deepest at
   // ends and inside, runs broken by a sample within reach.
