@@ -105,6 +105,11 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, Uncu
   std::size_t anchor = SIZE_MAX;  // the last sample whose gap is exact
   for (std::size_t i = 0; i < at.points.size(); ++i) {
     const Point p = at.points[i];
+    if (at.exact[i]) {  // known already (the element before ended here)
+      last_within_reach = !at.uncut[i];
+      anchor = i;
+      continue;
+    }
     if (anchor != SIZE_MAX) {
       const double step = apart_by(p, at.points[anchor]);
       const double upper = at.gaps[anchor] + step + slack;
@@ -350,6 +355,14 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
     for (const Segment& s : contour->elements()) magnitude = std::max(magnitude, rounding_scale(s));
   const double slack = 1e-12 * (1 + radius) + 3e-14 * magnitude;
   Samples at;
+  // The last sample's exact gap, if it was asked: the next element starts
+  // at the same point (the same question, the same answer).
+  struct Carried {
+    Point p, nearest;
+    double gap = 0;
+    std::size_t element = 0;
+    bool known = false;
+  } carried;
   for (const Loop& loop : drawn) {
     const std::size_t first_of_loop = spans.size();
     for (const Segment& s : loop.segments) {
@@ -358,6 +371,10 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
       at.reset(samples + 1);
       for (std::size_t i = 0; i <= samples; ++i) at.points[i] = point_at(s, static_cast<double>(i) / samples);
       counts.samples += samples + 1;
+      if (carried.known && at.points[0].x == carried.p.x && at.points[0].y == carried.p.y) {
+        at.gaps[0] = carried.gap, at.exact[0] = 1, at.uncut[0] = carried.gap > threshold;
+        at.elements[0] = carried.element, at.nearest[0] = carried.nearest;
+      }
       classify(at, gaps, threshold, slack, counts);
       const double spacing = length / static_cast<double>(samples) * (1 + 1e-12);
       for (std::size_t i = 0; i <= samples;) {
@@ -377,6 +394,8 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
         spans.push_back({point_at(s, static_cast<double>(begin) / samples),
                          point_at(s, static_cast<double>(i - 1) / samples), depth, s.entity, s.source_line});
       }
+      carried = {at.points[samples], at.nearest[samples], at.gaps[samples], at.elements[samples],
+                 at.exact[samples] != 0};
     }
     join_at_corners(spans, first_of_loop);
   }
