@@ -424,7 +424,9 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
       clock.add(&OffsetStageTimes::clipper_offset);
       recover_loops(tree, features, index, options, result);
       clock.add(&OffsetStageTimes::exact_recovery);
-      if (!large || result.polygon_loops == 0) break;
+      if (result.polygon_loops == 0 || join_tolerance(large, JoinCoarseness::coarse, options) ==
+                                           join_tolerance(large, JoinCoarseness::fine, options))
+        break;  // all exact, or the finer joins would be the same
     }
   }
   // One index over the contour serves the uncut search here and the barrier points of guard_query.

@@ -48,7 +48,10 @@ class ExactGaps {
   /// `nearby`: the contour's elements round p (RegionIndex::Nearby), the same answer sooner.
   double at(Point p, std::size_t& count, const RegionIndex::Nearby* nearby = nullptr) {
     ++count;
-    if (!contour_) return radius_ + 1;  // no contour: all is uncut
+    if (!contour_) {  // no contour: all is uncut, and no point of it bounds a gap
+      nearest_ = {HUGE_VAL, HUGE_VAL};
+      return radius_ + 1;
+    }
     const RegionQuery q = nearby ? nearby->nearest(p) : contour_->nearest(p, hint_);
     hint_ = q.element;
     nearest_ = q.nearest;

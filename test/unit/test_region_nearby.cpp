@@ -4,7 +4,8 @@
 /// element, distance and nearest point, ties to the lower element
 /// included; and a point outside its promise (farther from the centre
 /// than the spread, or from the boundary than the reach) still gets the
-/// right answer.
+/// right answer. RegionIndex::distance_to, the uncut search's bound,
+/// against the segment's own nearest point.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +16,7 @@
 
 #include "cad/loops.hpp"
 #include "cad/region_distance.hpp"
+#include "cad/segment_geometry.hpp"
 #include "region_parts.hpp"
 #include "test_volume.hpp"
 
@@ -87,6 +89,22 @@ TEST(RegionNearby, NamesTheLowerOfEquallyNearElements) {
     }
   }
   EXPECT_GT(ties, 39 * 10);  // most of those points are ties: the rule was exercised
+}
+
+TEST(RegionNearby, DistanceToOneElementAsTheSegmentsOwn) {
+  // distance_to() (the index's prepared kernel) against the segment's own
+  // nearest point, lines and arcs, near and far.
+  std::mt19937_64 random(5);
+  const LoopSet set = build_loops(parts::random_star_with_hole(random, 60), 1e-9);
+  const RegionIndex index(set.loops, RegionIndex::Layout::tree);
+  std::uniform_real_distribution<double> coordinate(-80, 80);
+  for (int i = 0; i < 2000; ++i) {
+    const Point p{coordinate(random), coordinate(random)};
+    const std::size_t e = static_cast<std::size_t>(i) % index.elements().size();
+    const Segment& s = index.elements()[e];
+    const double want = distance(nearest_point(s, p), p);
+    ASSERT_NEAR(index.distance_to(e, p), want, 1e-12 * (1 + want)) << "element " << e;
+  }
 }
 
 TEST(RegionNearby, EmptyIndexAnswersAsNearest) {
