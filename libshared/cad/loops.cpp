@@ -35,14 +35,19 @@ CellKey cell_of(Point p, double cell) {
 
 /// Something (an end, a segment) in a cell.
 using CellEntry = std::tuple<CellKey, std::size_t>;
+constexpr std::size_t kRadixSortFrom = 4096;  // entries
 
-/// Sorts by cell, then by what is in it (the entries come in that order
-/// within each cell). Where the cells' rows times columns fit in 64 bits (a
-/// part of any sensible size) each cell is one integer and the sort is a
-/// stable radix sort of 16-bit digits, a few passes: std::sort of the
-/// tuples was most of build_loops' time on a 100,000-element comb.
+/// Sorts by cell, then by what is in it. Requires the entries of each cell
+/// to come in ascending order of what is in them (both callers add them so):
+/// where the cells' rows times columns fit in 64 bits (a part of any
+/// sensible size) each cell is one integer and the sort is a stable radix
+/// sort of 16-bit digits, a few passes. std::sort of the tuples was most of
+/// build_loops' time on a 100,000-element comb.
 void sort_cells(std::vector<CellEntry>& entries) {
-  if (entries.empty()) return;
+  if (entries.size() < kRadixSortFrom) {  // not worth its table of counts
+    std::sort(entries.begin(), entries.end());
+    return;
+  }
   std::int64_t min_x = INT64_MAX, min_y = INT64_MAX, max_x = INT64_MIN, max_y = INT64_MIN;
   for (const auto& [key, item] : entries) {
     min_x = std::min(min_x, key.first), max_x = std::max(max_x, key.first);
@@ -121,15 +126,15 @@ std::vector<std::size_t> cluster_ends(const std::vector<Point>& ends, double tol
     const CellKey key = key_at(begin);
     while (end < sorted.size() && key_at(end) == key) ++end;
     unite_near(begin, end, begin, end);
-    std::size_t above = end;
-    while (above < sorted.size() && key_at(above) == CellKey{key.first, key.second + 1}) ++above;
-    unite_near(begin, end, end, above);
+    std::size_t above_end = end;
+    while (above_end < sorted.size() && key_at(above_end) == CellKey{key.first, key.second + 1}) ++above_end;
+    unite_near(begin, end, end, above_end);
     const CellKey low{key.first + 1, key.second - 1}, high{key.first + 1, key.second + 1};
     next_column = std::max(next_column, end);
     while (next_column < sorted.size() && key_at(next_column) < low) ++next_column;
-    std::size_t last = next_column;
-    while (last < sorted.size() && key_at(last) <= high) ++last;
-    unite_near(begin, end, next_column, last);
+    std::size_t next_column_end = next_column;
+    while (next_column_end < sorted.size() && key_at(next_column_end) <= high) ++next_column_end;
+    unite_near(begin, end, next_column, next_column_end);
   }
   std::vector<std::size_t> cluster(ends.size()), number(ends.size(), SIZE_MAX);
   count = 0;

@@ -130,10 +130,7 @@ double RegionIndex::Impl::leaf_nearest(std::size_t leaf, Point centre, Point p, 
   // |p - e| >= |c - e| - |p - c|: nothing further down the list can win,
   // nor tie (less a rounding margin, so that an element whose computed
   // distance ties with the best is still examined for the tie rule).
-  const auto ruled_out = [&](double key) {
-    const double lower = key - from_centre - rounding;
-    return lower > 0 && lower * lower > best2;
-  };
+  const auto ruled_out = [&](double key) { return cannot_win(key - from_centre - rounding, best2); };
   const auto beaten = [&](const Candidate& c) { return ruled_out(double(c.key)); };
   const auto try_element = [&](std::uint32_t e) {
     const double d2 = distance2(kernels[e], p);
@@ -242,11 +239,9 @@ RegionQuery RegionIndex::Nearby::nearest(Point p) const {
   double best2 = kInf;
   std::uint32_t best = UINT32_MAX;
   for (const Element& e : elements_) {
-    // No nearer than its distance from the centre less p's: once that
-    // exceeds the best, so does every later one (strictly: an equally near
-    // element may have a lower index).
-    const double low = e.from_centre - spread_;
-    if (low > 0 && low * low > best2) break;
+    // No nearer than its distance from the centre less p's (the margin is
+    // in from_centre): once that rules it out, it rules out every later one.
+    if (cannot_win(e.from_centre - spread_, best2)) break;
     const double d2 = distance2(m.kernels[e.index], p);
     if (nearer(d2, e.index, best2, best)) best2 = d2, best = e.index;
   }

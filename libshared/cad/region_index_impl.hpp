@@ -171,6 +171,12 @@ inline bool nearer(double d2, std::uint32_t e, double best2, std::uint32_t best)
   return d2 < best2 || (d2 == best2 && e < best);
 }
 
+/// Whether an element no nearer than `lower` (a lower bound on its
+/// distance, less the rounding margin) can neither beat the best nor tie
+/// with it; strictly, so that an equally near one is still examined for
+/// the tie rule.
+inline bool cannot_win(double lower, double best2) { return lower > 0 && lower * lower > best2; }
+
 inline Box merge(const Box& a, const Box& b) {
   return {std::min(a.min_x, b.min_x), std::min(a.min_y, b.min_y), std::max(a.max_x, b.max_x),
           std::max(a.max_y, b.max_y)};

@@ -413,6 +413,8 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     // A large part's joins are drawn coarse first; should any loop fail the
     // exact recovery, the polygon stage runs again with the finer joins, so
     // that a loop left as a polygon is as close as before.
+    const bool finer_differs =
+        join_tolerance(large, JoinCoarseness::coarse, options) != join_tolerance(large, JoinCoarseness::fine, options);
     for (const JoinCoarseness joins : {JoinCoarseness::coarse, JoinCoarseness::fine}) {
       result.loops.clear();
       result.polygon_loops = 0;
@@ -424,9 +426,7 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
       clock.add(&OffsetStageTimes::clipper_offset);
       recover_loops(tree, features, index, options, result);
       clock.add(&OffsetStageTimes::exact_recovery);
-      if (result.polygon_loops == 0 || join_tolerance(large, JoinCoarseness::coarse, options) ==
-                                           join_tolerance(large, JoinCoarseness::fine, options))
-        break;  // all exact, or the finer joins would be the same
+      if (result.polygon_loops == 0 || !finer_differs) break;
     }
   }
   // One index over the contour serves the uncut search here and the barrier points of guard_query.

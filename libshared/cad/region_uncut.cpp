@@ -54,17 +54,17 @@ class ExactGaps {
     }
     const RegionQuery q = nearby ? nearby->nearest(p) : contour_->nearest(p, hint_);
     hint_ = q.element;
-    nearest_ = q.nearest;
+    nearest_ = std::isfinite(q.distance) ? q.nearest : Point{HUGE_VAL, HUGE_VAL};  // an empty contour: none
     return q.distance - radius_;
   }
   std::size_t last_element() const { return hint_; }
   /// The contour's point nearest to the last point asked.
   Point last_nearest() const { return nearest_; }
   /// The contour's elements that can be nearest within `spread` of
-  /// `centre` for gaps up to `gap` there; none without a contour.
-  std::optional<RegionIndex::Nearby> nearby(Point centre, double spread, double gap) const {
+  /// `centre` for points whose gap is at most `largest_gap`; none without a contour.
+  std::optional<RegionIndex::Nearby> nearby(Point centre, double spread, double largest_gap) const {
     if (!contour_) return std::nullopt;
-    return RegionIndex::Nearby(*contour_, centre, spread, gap + radius_);
+    return RegionIndex::Nearby(*contour_, centre, spread, largest_gap + radius_);
   }
   /// The gap to one element of the contour alone: at least the exact gap,
   /// but for rounding (which the caller's margin covers).
@@ -279,10 +279,10 @@ class GoldenSearch {
       // A search that keeps asking: list the contour's elements that can be
       // nearest within the bracket once (bounded by the gaps known), so
       // that each answer looks at a few of them, not down the tree.
-      double reach = HUGE_VAL;
+      double largest_gap = HUGE_VAL;  // in the bracket, by the Lipschitz bound from each known point
       for (std::size_t i = 0; i < size_; ++i)
-        reach = std::min(reach, known_[i].gap + slack_ + apart_by(known_[i].p, centre_) + spread_);
-      nearby_ = gaps_.nearby(centre_, spread_, reach);
+        largest_gap = std::min(largest_gap, known_[i].gap + slack_ + apart_by(known_[i].p, centre_) + spread_);
+      nearby_ = gaps_.nearby(centre_, spread_, largest_gap);
     }
     const double gap = gaps_.at(p, count_, nearby_ ? &*nearby_ : nullptr);
     know({p, gap, gaps_.last_element()});

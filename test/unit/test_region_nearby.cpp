@@ -33,9 +33,10 @@ void expect_brute_force(const RegionIndex::Nearby& nearby, const std::vector<Loo
   ASSERT_EQ(got.nearest.y, want.nearest.y) << what;
 }
 
-Point around(std::mt19937_64& random, Point centre, double spread) {
+/// A random point between `from` and `to` away from the centre.
+Point around(std::mt19937_64& random, Point centre, double from, double to) {
   std::uniform_real_distribution<double> unit(0, 1);
-  const double angle = 2 * std::numbers::pi * unit(random), r = spread * std::sqrt(unit(random));
+  const double angle = 2 * std::numbers::pi * unit(random), r = from + (to - from) * std::sqrt(unit(random));
   return {centre.x + r * std::cos(angle), centre.y + r * std::sin(angle)};
 }
 
@@ -51,13 +52,14 @@ TEST(RegionNearby, AnswersAsBruteForceWithinItsSpreadAndOutside) {
     const double reach = index.nearest(centre).distance + spread;
     const RegionIndex::Nearby nearby(index, centre, spread, reach);
     expect_brute_force(nearby, set.loops, centre, "centre");
-    for (int i = 0; i < 20; ++i) expect_brute_force(nearby, set.loops, around(random, centre, spread), "within");
+    for (int i = 0; i < 20; ++i) expect_brute_force(nearby, set.loops, around(random, centre, 0, spread), "within");
     for (int i = 0; i < 5; ++i)  // beyond the spread: nearest() itself
-      expect_brute_force(nearby, set.loops, around(random, centre, 10 + 5 * spread), "beyond the spread");
+      expect_brute_force(nearby, set.loops, around(random, centre, 1.01 * spread + 0.01, 10 + 5 * spread),
+                         "beyond the spread");
     // A reach promised too short: whatever the list lacks, the answer is right.
     const RegionIndex::Nearby short_reach(index, centre, spread, 0.25 * reach);
     for (int i = 0; i < 10; ++i)
-      expect_brute_force(short_reach, set.loops, around(random, centre, spread), "reach too short");
+      expect_brute_force(short_reach, set.loops, around(random, centre, 0, spread), "reach too short");
   }
 }
 
@@ -84,8 +86,15 @@ TEST(RegionNearby, NamesTheLowerOfEquallyNearElements) {
     for (double y = 1; y <= 9; y += 0.5) {
       const Point p{centre.x, y};
       expect_brute_force(nearby, set.loops, p, "slot middle");
-      const RegionQuery a = brute_force_query(set.loops, p);
-      ties += std::abs(std::abs(a.distance) - 0.5) == 0;
+      // A tie: another element exactly as near, and the answer the lower.
+      const RegionQuery got = nearby.nearest(p);
+      std::size_t equally_near = 0, lowest = SIZE_MAX;
+      for (std::size_t e = 0; e < index.elements().size(); ++e)
+        if (index.distance_to(e, p) == got.distance) ++equally_near, lowest = std::min(lowest, e);
+      if (equally_near >= 2) {
+        ++ties;
+        EXPECT_EQ(got.element, lowest) << "slot middle at (" << p.x << ", " << p.y << ")";
+      }
     }
   }
   EXPECT_GT(ties, 39 * 10);  // most of those points are ties: the rule was exercised
@@ -110,7 +119,12 @@ TEST(RegionNearby, DistanceToOneElementAsTheSegmentsOwn) {
 TEST(RegionNearby, EmptyIndexAnswersAsNearest) {
   const RegionIndex index(std::vector<Loop>{}, RegionIndex::Layout::tree);
   const RegionIndex::Nearby nearby(index, {0, 0}, 1, 1);
-  EXPECT_EQ(nearby.nearest({0.5, 0}).distance, index.nearest({0.5, 0}).distance);
+  const RegionQuery got = nearby.nearest({0.5, 0}), want = index.nearest({0.5, 0});
+  EXPECT_TRUE(std::isinf(got.distance));
+  EXPECT_EQ(got.distance, want.distance);
+  EXPECT_EQ(got.element, want.element);
+  EXPECT_EQ(got.nearest.x, 0.5);
+  EXPECT_EQ(got.nearest.y, 0.0);
 }
 
 }  // namespace region_nearby_test
