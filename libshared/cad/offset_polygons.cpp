@@ -25,11 +25,13 @@ struct Normal {
   double x = 0, y = 0;
 };
 
-/// The unit normal to the right of a -> b (outward for a counter-clockwise polygon).
-Normal unit_normal(IntPoint a, IntPoint b) {
+/// The unit normal to the right of a -> b (outward for a counter-clockwise
+/// polygon), as Clipper computes it, and the edge's length on the way.
+Normal unit_normal(IntPoint a, IntPoint b, double& length) {
   double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
-  if (dx == 0 && dy == 0) return {};
-  const double f = 1 / std::sqrt(dx * dx + dy * dy);
+  length = std::sqrt(dx * dx + dy * dy);
+  if (length == 0) return {};
+  const double f = 1 / length;
   dx *= f, dy *= f;
   return {dy, -dx};
 }
@@ -55,8 +57,7 @@ class JoinDrawer {
     std::vector<double> lengths(n);
     for (std::size_t j = 0; j < n; ++j) {
       const IntPoint a = source[j], b = source[(j + 1) % n];
-      normals[j] = unit_normal(a, b);
-      lengths[j] = std::hypot(double(b.X - a.X), double(b.Y - a.Y));
+      normals[j] = unit_normal(a, b, lengths[j]);
     }
     Path out;
     out.reserve(2 * n);

@@ -315,17 +315,13 @@ bool large_part(const ClipperLib::Paths& paths, const OffsetOptions& options) {
   return vertices >= options.coarse_joins_from;
 }
 
-enum class JoinCoarseness { coarse, fine };
-
 /// Clipper's round joins: chords within `tolerance`, or on a large part
 /// within R / 100 (11 chords a half turn), R / 1000 (35) if that leaves a
 /// loop to the polygon. Each spike tip of a gear turns half round: at
 /// R = 1 mm and the default 0.1 um that is 111 vertices, and Clipper's
 /// sweep visits every active edge at each of them.
-double join_tolerance(bool large, JoinCoarseness joins, const OffsetOptions& options) {
-  if (!large) return options.tolerance;
-  return std::max(options.tolerance,
-                  options.tool_radius * (joins == JoinCoarseness::coarse ? kCoarseJoinSagitta : kFineJoinSagitta));
+double join_tolerance(bool large, double sagitta, const OffsetOptions& options) {
+  return large ? std::max(options.tolerance, options.tool_radius * sagitta) : options.tolerance;
 }
 
 /// Walks Clipper's tree into `result.loops`, outer boundaries before their
@@ -414,13 +410,13 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     // exact recovery, the polygon stage runs again with the finer joins, so
     // that a loop left as a polygon is as close as before.
     const bool finer_differs =
-        join_tolerance(large, JoinCoarseness::coarse, options) != join_tolerance(large, JoinCoarseness::fine, options);
-    for (const JoinCoarseness joins : {JoinCoarseness::coarse, JoinCoarseness::fine}) {
+        join_tolerance(large, kCoarseJoinSagitta, options) != join_tolerance(large, kFineJoinSagitta, options);
+    for (const double sagitta : {kCoarseJoinSagitta, kFineJoinSagitta}) {
       result.loops.clear();
       result.polygon_loops = 0;
       ClipperLib::PolyTree tree;
       offset_polygons(paths, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm,
-                      join_tolerance(large, joins, options) / kClipperUnitMm, tree,
+                      join_tolerance(large, sagitta, options) / kClipperUnitMm, tree,
                       large ? ConcaveCorners::crossing : ConcaveCorners::spikes);
       if (turned) quarter_turn_back(tree);
       clock.add(&OffsetStageTimes::clipper_offset);

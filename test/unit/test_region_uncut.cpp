@@ -93,9 +93,12 @@ PlainSearch plain_search(const std::vector<Loop>& drawn, Gap gap_at, double radi
 /// distances (each the minimum over the elements as the index computes
 /// them); and as with brute force's (computed apart, they may differ in
 /// the last bit: depths to 1e-12). Returns the number of exact gaps
-/// find_uncut asked and the plain search's least number.
-std::pair<std::size_t, std::size_t> expect_plain_search_spans(const std::vector<Segment>& segments, double radius,
-                                                              MachiningSide side, const std::string& what) {
+/// find_uncut asked, the plain search's least number, and the spans found.
+struct Compared {
+  std::size_t asked, plain, spans;
+};
+Compared expect_plain_search_spans(const std::vector<Segment>& segments, double radius, MachiningSide side,
+                                   const std::string& what) {
   const LoopSet set = build_loops(segments, 1e-6);
   const OffsetOptions options{.tool_radius = radius, .side = side};
   const RegionOffset offset = offset_region(set.loops, RegionIndex(set.loops), options);
@@ -128,7 +131,7 @@ std::pair<std::size_t, std::size_t> expect_plain_search_spans(const std::vector<
     EXPECT_EQ(got.to.y, brute.spans[i].to.y) << what << ", span " << i;
     EXPECT_NEAR(got.depth, brute.spans[i].depth, 1e-12 * (1 + radius)) << what << ", span " << i;
   }
-  return {counts.sampling + counts.deepest + counts.refining, expected.questions};
+  return {counts.sampling + counts.deepest + counts.refining, expected.questions, found.size()};
 }
 
 std::string label(double radius, MachiningSide side) {
@@ -147,7 +150,7 @@ TEST(RegionUncut, GearsAsThePlainSearchFindsThem) {
       for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside}) {
         const std::vector<Segment> gear = parts::gear(teeth, side == MachiningSide::inside ? 3 : 5, 0.5, bulge);
         const std::string what = label(radius, side) + ", bulge " + std::to_string(bulge);
-        const auto [asked, plain] = expect_plain_search_spans(gear, radius, side, what);
+        const auto [asked, plain, spans] = expect_plain_search_spans(gear, radius, side, what);
         // Nearly all of a gear's flanks is left uncut: the plain search asks
         // every sample there, the bounds settle most of them. (The sanitizers'
         // 12-tooth gear, inside at R = 1, has flanks too short for a third:
@@ -163,10 +166,10 @@ TEST(RegionUncut, GearsAsThePlainSearchFindsThem) {
 TEST(RegionUncut, FarFromTheOriginAsThePlainSearchFindsThem) {
   // Coordinates in the thousands: the bounds' margin grows with them.
   for (const double radius : {0.3, 1.0}) {
-    const auto [asked, plain] =
+    const Compared compared =
         expect_plain_search_spans(moved(parts::gear(test_volume(24, 8), 4, 0.5, 0.1), 4998.25, -3001.5), radius,
                                   MachiningSide::outside, label(radius, MachiningSide::outside) + ", moved");
-    EXPECT_GT(plain, 0u) << "no span to compare";
+    EXPECT_GT(compared.spans, 0u) << "no span to compare";
   }
 }
 
@@ -200,9 +203,9 @@ TEST(RegionUncut, CombsAsThePlainSearchFindsThem) {
     }
     for (const double radius : {0.7, 1.0})
       for (const MachiningSide side : {MachiningSide::outside, MachiningSide::inside}) {
-        const auto [asked, plain] = expect_plain_search_spans(
+        const Compared compared = expect_plain_search_spans(
             comb, radius, side, "comb turned " + std::to_string(turn) + ", " + label(radius, side));
-        EXPECT_GT(plain, 0u) << "no span to compare";
+        EXPECT_GT(compared.spans, 0u) << "no span to compare";
       }
   }
 }
