@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "cad/offset_notches.hpp"
 #include "cad/region_union.hpp"
 
 namespace tk::cad {
@@ -18,6 +19,7 @@ using ClipperLib::Path;
 using ClipperLib::Paths;
 
 constexpr double kDefaultArcTolerance = 0.25;  // Clipper's, in its units
+constexpr double kFillWorth = 0.25;            // of the offset: shallower fills save too little
 
 cInt round_half_away(double v) { return static_cast<cInt>(v < 0 ? v - 0.5 : v + 0.5); }
 
@@ -41,9 +43,10 @@ class JoinDrawer {
   JoinDrawer(double delta, double arc_tolerance, ConcaveCorners concave)
       : delta_(delta), crossing_(concave == ConcaveCorners::crossing) {
     const double magnitude = std::abs(delta);
-    const double tolerance = arc_tolerance <= 0                                 ? kDefaultArcTolerance
-                             : arc_tolerance > magnitude * kDefaultArcTolerance ? magnitude * kDefaultArcTolerance
-                                                                                : arc_tolerance;
+    const double tolerance = tolerance_ = arc_tolerance <= 0 ? kDefaultArcTolerance
+                                          : arc_tolerance > magnitude * kDefaultArcTolerance
+                                              ? magnitude * kDefaultArcTolerance
+                                              : arc_tolerance;
     double steps = std::numbers::pi / std::acos(1 - tolerance / magnitude);
     steps = std::min(steps, magnitude * std::numbers::pi);  // no more chords than units of length
     sin_ = std::sin(2 * std::numbers::pi / steps), cos_ = std::cos(2 * std::numbers::pi / steps);
@@ -67,6 +70,9 @@ class JoinDrawer {
       if (corner(source[j], normals[k], normals[j], std::min(lengths[k], lengths[j]), out)) k = j;
     return out;
   }
+
+  /// The chords' largest distance from their arcs (Clipper units).
+  double tolerance() const { return tolerance_; }
 
  private:
   IntPoint along(IntPoint p, Normal n) const {
@@ -116,13 +122,14 @@ class JoinDrawer {
 
   double delta_;
   bool crossing_;
+  double tolerance_ = 0;
   double sin_ = 0, cos_ = 1, steps_per_radian_ = 0;
 };
 
 }  // namespace
 
 void offset_polygons(const Paths& paths, double delta, double arc_tolerance, ClipperLib::PolyTree& out,
-                     ConcaveCorners concave) {
+                     ConcaveCorners concave, Notches notches) {
   out.Clear();
   Paths sources;
   for (const Path& path : paths)  // Clipper offsets a closed path of three distinct vertices or more
@@ -141,7 +148,16 @@ void offset_polygons(const Paths& paths, double delta, double arc_tolerance, Cli
     offsets = sources;
   } else {
     const JoinDrawer drawer(delta, arc_tolerance, concave);
-    for (const Path& path : sources) offsets.push_back(drawer.offset(path));
+    const Paths* drawn = &sources;
+    Paths filled_paths;
+    if (notches == Notches::filled) {
+      std::size_t filled = 0;
+      for (const Path& path : sources)
+        filled_paths.push_back(fill_notches(path, delta, drawer.tolerance(), kFillWorth * std::abs(delta), filled));
+      // A path reaching into another's notch would now cross it: then none is filled.
+      if (filled > 0 && simple_and_disjoint(filled_paths)) drawn = &filled_paths;
+    }
+    for (const Path& path : *drawn) offsets.push_back(drawer.offset(path));
   }
   ClipperLib::Clipper clipper;
   clipper.AddPaths(offsets, ClipperLib::ptSubject, true);

@@ -32,7 +32,11 @@ enum class ConcaveCorners {
   crossing,  ///< where the offset edges cross, where that is safe (above)
   spikes     ///< always Clipper 6.4.2's spike: its own polygons, point for point
 };
+enum class Notches {
+  kept,   ///< every path as it is
+  filled  ///< the notches the tool cannot enter filled first (offset_notches.hpp): the same region
+};
 void offset_polygons(const ClipperLib::Paths& paths, double delta, double arc_tolerance, ClipperLib::PolyTree& out,
-                     ConcaveCorners concave = ConcaveCorners::crossing);
+                     ConcaveCorners concave = ConcaveCorners::crossing, Notches notches = Notches::kept);
 
 }  // namespace tk::cad

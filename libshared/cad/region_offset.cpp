@@ -406,23 +406,23 @@ RegionOffset offset_region(const std::vector<Loop>& drawn, const RegionIndex& in
     clock.add(&OffsetStageTimes::even_odd_union);
     const bool large = large_part(paths, options);
     const DrawingFeatures features(drawn, index);
-    // A large part's joins are drawn coarse first; should any loop fail the
-    // exact recovery, the polygon stage runs again with the finer joins, so
-    // that a loop left as a polygon is as close as before.
-    const bool finer_differs =
-        join_tolerance(large, kCoarseJoinSagitta, options) != join_tolerance(large, kFineJoinSagitta, options);
+    // A large part's joins are drawn coarse first, and the notches the tool
+    // cannot enter filled (offset_notches.hpp); should any loop fail the
+    // exact recovery, the polygon stage runs again with the finer joins and
+    // nothing filled, so that a loop left as a polygon is as close as before.
     for (const double sagitta : {kCoarseJoinSagitta, kFineJoinSagitta}) {
       result.loops.clear();
       result.polygon_loops = 0;
       ClipperLib::PolyTree tree;
       offset_polygons(paths, (inside ? -options.tool_radius : options.tool_radius) / kClipperUnitMm,
                       join_tolerance(large, sagitta, options) / kClipperUnitMm, tree,
-                      large ? ConcaveCorners::crossing : ConcaveCorners::spikes);
+                      large ? ConcaveCorners::crossing : ConcaveCorners::spikes,
+                      large && sagitta == kCoarseJoinSagitta ? Notches::filled : Notches::kept);
       if (turned) quarter_turn_back(tree);
       clock.add(&OffsetStageTimes::clipper_offset);
       recover_loops(tree, features, index, options, result);
       clock.add(&OffsetStageTimes::exact_recovery);
-      if (result.polygon_loops == 0 || !finer_differs) break;
+      if (result.polygon_loops == 0 || !large) break;  // (a small part's first run is its only way)
     }
   }
   // One index over the contour serves the uncut search here and the barrier points of guard_query.

@@ -5,6 +5,9 @@
 /// rounding along the edges, nowhere by a whole piece), on random star
 /// polygons (concave corners of every sharpness, short edges), finely
 /// divided wavy rings, a comb and a frame with holes, grown and shrunk.
+/// With the notches the tool cannot enter filled first (offset_notches.hpp):
+/// the region ClipperOffset draws from the unfilled paths, on gears, combs
+/// and notches the tool does enter (wide, or widening inside a narrow neck).
 #include <gtest/gtest.h>
 
 #include <polyclipping/clipper.hpp>
@@ -16,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "cad/offset_notches.hpp"
 #include "cad/offset_polygons.hpp"
 #include "test_volume.hpp"
 
@@ -114,11 +118,14 @@ double perimeter_of(const Paths& paths) {
   return sum;
 }
 
-void expect_like_clipper(const Paths& paths, double delta, double arc_tolerance, const std::string& what) {
+/// With Notches::filled, the polygons differ (round joins start from other
+/// edges) by the joins' chords: `slack` units of width, times the perimeter.
+void expect_like_clipper(const Paths& paths, double delta, double arc_tolerance, const std::string& what,
+                         Notches notches = Notches::kept, double slack = 4) {
   ClipperLib::PolyTree theirs, spikes, crossing;
   clipper_offset(paths, delta, arc_tolerance, theirs);
   offset_polygons(paths, delta, arc_tolerance, spikes, ConcaveCorners::spikes);
-  offset_polygons(paths, delta, arc_tolerance, crossing);
+  offset_polygons(paths, delta, arc_tolerance, crossing, ConcaveCorners::crossing, notches);
   std::vector<std::pair<int, Path>> a, b, c;
   flatten(theirs, 0, a), flatten(spikes, 0, b), flatten(crossing, 0, c);
   ASSERT_FALSE(a.empty()) << what;
@@ -134,7 +141,7 @@ void expect_like_clipper(const Paths& paths, double delta, double arc_tolerance,
   xor_of.AddPaths(ours_paths, ClipperLib::ptSubject, true);
   xor_of.AddPaths(their_paths, ClipperLib::ptClip, true);
   xor_of.Execute(ClipperLib::ctXor, difference, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  const double apart = std::abs(area_of(difference)), allowed = 4 * perimeter_of(their_paths);
+  const double apart = std::abs(area_of(difference)), allowed = slack * perimeter_of(their_paths);
   EXPECT_LE(apart, allowed) << what << ": regions differ by " << apart << " square units";
   EXPECT_GT(std::abs(area_of(their_paths)), 1e3 * allowed) << what << ": the bound must be small beside the region";
 }
@@ -162,6 +169,82 @@ TEST(OffsetPolygons, CombAndFrameWithHoles) {
     expect_like_clipper({comb(test_volume(200, 40))}, mm * kScale, 1e-4 * kScale, "comb by " + std::to_string(mm));
     expect_like_clipper(frame_with_holes(), mm * kScale, 1e-4 * kScale, "frame by " + std::to_string(mm));
   }
+}
+
+/// Spikes `height` mm tall standing `pitch` mm apart at the root, as bench_region_build's gear.
+Path gear(int spikes, double pitch, double height) {
+  const double root = spikes * pitch / (2 * kPi);
+  Path p;
+  for (int i = 0; i < spikes; ++i) {
+    p.push_back(polar(root, 2 * kPi * i / spikes));
+    p.push_back(polar(root + height, 2 * kPi * (i + 0.5) / spikes));
+  }
+  return p;
+}
+
+std::size_t notches_filled(const Path& path, double delta, double arc_tolerance) {
+  std::size_t filled = 0;
+  const Path out = fill_notches(path, delta, arc_tolerance, 0.25 * std::abs(delta), filled);
+  EXPECT_LE(out.size(), path.size());
+  return filled;
+}
+
+// A filled notch that the tool could reach into by its sag (R - sqrt(R^2 -
+// W^2 / 4), 0.03 mm for a gear's 0.5 mm mouth and R = 1) would grow the
+// region by about 0.01 mm^2 a notch, against a slack
+// of one chord tolerance (100 square units a unit of perimeter, about
+// 0.0003 mm^2 a notch): the chords of a join that starts elsewhere.
+constexpr double kTolerance = 1e-4 * kScale, kFilledSlack = kTolerance;
+
+TEST(OffsetPolygons, NotchesTheToolCannotEnterFilledForTheSameRegion) {
+  const Path spiky = gear(test_volume(120, 40), 0.5, 5);
+  for (const double mm : {1.0, 0.5, -1.0, -0.5}) {
+    EXPECT_EQ(notches_filled(spiky, mm * kScale, kTolerance), std::size_t(test_volume(120, 40)));
+    expect_like_clipper({spiky}, mm * kScale, kTolerance, "gear by " + std::to_string(mm), Notches::filled,
+                        kFilledSlack);
+  }
+  // Slots 1 mm wide: filled for a tool of 1 mm radius, not for one of 0.4 mm.
+  const Path slots = comb(test_volume(60, 20));
+  EXPECT_EQ(notches_filled(slots, 1.0 * kScale, kTolerance), std::size_t(test_volume(60, 20) - 1));
+  EXPECT_EQ(notches_filled(slots, 0.4 * kScale, kTolerance), 0u);
+  for (const double mm : {1.0, 0.6, 0.4, -0.4})
+    expect_like_clipper({slots}, mm * kScale, kTolerance, "comb by " + std::to_string(mm), Notches::filled,
+                        kFilledSlack);
+  // A gear-shaped hole in a square: its notches turn the other way.
+  const Path frame{{cInt(-30 * kScale), cInt(-30 * kScale)},
+                   {cInt(30 * kScale), cInt(-30 * kScale)},
+                   {cInt(30 * kScale), cInt(30 * kScale)},
+                   {cInt(-30 * kScale), cInt(30 * kScale)}};
+  const Path hole(spiky.rbegin(), spiky.rend());
+  EXPECT_EQ(notches_filled(hole, 1.0 * kScale, kTolerance), std::size_t(test_volume(120, 40)));
+  EXPECT_EQ(notches_filled(hole, -0.5 * kScale, kTolerance), std::size_t(test_volume(120, 40)));
+  EXPECT_EQ(notches_filled(hole, -0.3 * kScale, kTolerance), 0u);  // mouths 0.76 mm wide
+  for (const double mm : {1.0, -0.5, -0.3})
+    expect_like_clipper({frame, hole}, mm * kScale, kTolerance, "gear hole by " + std::to_string(mm), Notches::filled,
+                        kFilledSlack);
+}
+
+TEST(OffsetPolygons, NotchesTheToolEntersKept) {
+  // Wide V's: the mouth wider than the tool.
+  EXPECT_EQ(notches_filled(gear(60, 3, 5), 1.0 * kScale, kTolerance), 0u);
+  expect_like_clipper({gear(60, 3, 5)}, 1.0 * kScale, kTolerance, "wide gear", Notches::filled, kFilledSlack);
+  // A narrow neck (0.8 mm) into a belly 3 mm wide that the tool reaches:
+  // the belly's corners at the neck open wider than 90 degrees.
+  Path bottle{{0, 0}, {cInt(20 * kScale), 0}, {cInt(20 * kScale), cInt(10 * kScale)}};
+  for (const auto& [x, y] :
+       {std::pair{10.4, 10.0}, {10.4, 9.5}, {11.5, 9.0}, {11.5, 5.0}, {8.5, 5.0}, {8.5, 9.0}, {9.6, 9.5}, {9.6, 10.0}})
+    bottle.push_back({cInt(x * kScale), cInt(y * kScale)});
+  bottle.push_back({0, cInt(10 * kScale)});
+  ASSERT_TRUE(ClipperLib::Orientation(bottle));
+  EXPECT_EQ(notches_filled(bottle, 1.0 * kScale, kTolerance), 0u);
+  expect_like_clipper({bottle}, 1.0 * kScale, kTolerance, "bottle", Notches::filled, kFilledSlack);
+  // An island reaching into a slot: the region is still Clipper's.
+  const Path slots = comb(8);
+  const Path island{{cInt(2.3 * kScale), cInt(8 * kScale)},
+                    {cInt(2.7 * kScale), cInt(8 * kScale)},
+                    {cInt(2.7 * kScale), cInt(14 * kScale)},
+                    {cInt(2.3 * kScale), cInt(14 * kScale)}};
+  expect_like_clipper({slots, island}, 1.0 * kScale, kTolerance, "comb with an island", Notches::filled, kFilledSlack);
 }
 
 }  // namespace offset_polygons_test

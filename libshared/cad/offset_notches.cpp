@@ -1,0 +1,132 @@
+/// @file offset_notches.cpp
+/// @brief Filling the notches a round tool cannot enter (see offset_notches.hpp).
+#include "cad/offset_notches.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+
+namespace tk::cad {
+namespace {
+
+using ClipperLib::cInt;
+using ClipperLib::IntPoint;
+using ClipperLib::Path;
+__extension__ typedef __int128 WideInt;  // products of coordinate differences (< 2^63 each) fit
+
+/// The sign of the turn a -> b -> c: > 0 counter-clockwise.
+int turn_sign(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
+  const WideInt turn = WideInt(b.X - a.X) * WideInt(c.Y - b.Y) - WideInt(b.Y - a.Y) * WideInt(c.X - b.X);
+  return (turn > 0) - (turn < 0);
+}
+
+WideInt dot_exact(const IntPoint& from, const IntPoint& to, const IntPoint& from2, const IntPoint& to2) {
+  return WideInt(to.X - from.X) * WideInt(to2.X - from2.X) + WideInt(to.Y - from.Y) * WideInt(to2.Y - from2.Y);
+}
+
+double distance(const IntPoint& a, const IntPoint& b) { return std::hypot(double(b.X - a.X), double(b.Y - a.Y)); }
+
+cInt round_half_away(double v) { return static_cast<cInt>(v < 0 ? v - 0.5 : v + 0.5); }
+
+/// The angle turned at b on the way a -> b -> c, in [0, pi].
+double turn_angle(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
+  const double ux = double(b.X - a.X), uy = double(b.Y - a.Y), vx = double(c.X - b.X), vy = double(c.Y - b.Y);
+  return std::abs(std::atan2(ux * vy - uy * vx, ux * vx + uy * vy));
+}
+
+/// One path's notches, filled into `out` as the path is walked.
+class NotchFiller {
+ public:
+  NotchFiller(const Path& path, double delta, double join_tolerance, double worth)
+      : path_(path),
+        radius_(std::abs(delta)),
+        notch_turn_(delta > 0 ? -1 : 1),
+        margin_(2 * join_tolerance + 4),
+        worth_(worth) {}
+
+  Path fill(std::size_t& filled) {
+    const std::size_t n = path_.size();
+    if (n < 4 || radius_ == 0) return path_;
+    std::vector<char> notch(n);
+    for (std::size_t i = 0; i < n; ++i)
+      notch[i] = turn_sign(path_[(i + n - 1) % n], path_[i], path_[(i + 1) % n]) == notch_turn_;
+    std::size_t start = 0;
+    while (start < n && notch[start]) ++start;
+    if (start == n) return path_;  // all one way: a convex hole, nothing between two mouth corners
+    for (std::size_t step = 0; step < n;) {
+      const std::size_t i = (start + step) % n;
+      if (!notch[i]) {
+        out_.push_back(path_[i]);
+        ++step;
+        continue;
+      }
+      std::size_t run = 0;  // the notch's corners, i ... i + run - 1, end before a vertex that is not one
+      while (notch[(i + run) % n]) ++run;
+      if (fill_run(i, run)) {
+        ++filled;
+      } else {
+        for (std::size_t k = 0; k < run; ++k) out_.push_back(corner(i, k));
+      }
+      step += run;
+    }
+    return out_;
+  }
+
+ private:
+  const IntPoint& corner(std::size_t first, std::size_t k) const { return path_[(first + k) % path_.size()]; }
+
+  /// Fills the notch of corners first ... first + run - 1 if it qualifies (see the header).
+  bool fill_run(std::size_t first, std::size_t run) {
+    const std::size_t n = path_.size();
+    const IntPoint& a = path_[(first + n - 1) % n];
+    const IntPoint& b = path_[(first + run) % n];
+    const double width = distance(a, b);
+    if (!(width < 2 * radius_ * (1 - 1e-9)) || width == 0) return false;
+    // M convex: turning the same way at the mouth's corners, once round in all.
+    const IntPoint &v1 = corner(first, 0), &vk = corner(first, run - 1);
+    if (turn_sign(vk, b, a) != notch_turn_ || turn_sign(b, a, v1) != notch_turn_) return false;
+    const auto m_corner = [&](std::size_t k) -> const IntPoint& {  // M's corners: a, v1 ... vk, b
+      return k == 0 ? a : k <= run ? corner(first, k - 1) : b;
+    };
+    double turned = 0;
+    for (std::size_t k = 0; k < run + 2; ++k)
+      turned += turn_angle(m_corner((k + run + 1) % (run + 2)), m_corner(k), m_corner((k + 1) % (run + 2)));
+    if (turned > 3 * std::numbers::pi) return false;
+    // At most 90 degrees at a and b: M lies in the strip across the mouth.
+    if (dot_exact(a, v1, a, b) < 0 || dot_exact(b, vk, b, a) < 0) return false;
+    const double ux = double(b.X - a.X) / width, uy = double(b.Y - a.Y) / width;
+    const auto depth = [&](const IntPoint& p) { return ux * double(p.Y - a.Y) - uy * double(p.X - a.X); };
+    double deepest = 0;  // signed: the corners all lie on one side of the mouth (M is convex)
+    for (std::size_t k = 0; k < run; ++k) {
+      const double d = depth(corner(first, k));
+      if (std::abs(d) > std::abs(deepest)) deepest = d;
+    }
+    // The new corner: under the mouth's middle, past where the tangents at a and b to the disc resting on both meet.
+    const double half = width / 2;
+    const double below = half * half / std::sqrt(radius_ * radius_ - half * half) + margin_;
+    if (std::abs(deepest) < below + worth_) return false;
+    const double inward = deepest > 0 ? 1 : -1;
+    const IntPoint t{round_half_away(double(a.X + b.X) / 2 - inward * uy * below),
+                     round_half_away(double(a.Y + b.Y) / 2 + inward * ux * below)};
+    // t inside M (strictly), so that a -> t -> b stays in the notch.
+    if (turn_sign(b, a, t) != notch_turn_) return false;
+    for (std::size_t k = 0; k <= run; ++k)
+      if (turn_sign(m_corner(k), m_corner(k + 1), t) != notch_turn_) return false;
+    out_.push_back(t);
+    return true;
+  }
+
+  const Path& path_;
+  const double radius_;
+  const int notch_turn_;
+  const double margin_, worth_;
+  Path out_;
+};
+
+}  // namespace
+
+Path fill_notches(const Path& path, double delta, double join_tolerance, double worth, std::size_t& filled) {
+  return NotchFiller(path, delta, join_tolerance, worth).fill(filled);
+}
+
+}  // namespace tk::cad
