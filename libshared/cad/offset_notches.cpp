@@ -2,7 +2,9 @@
 /// @brief Filling the notches a round tool cannot enter (see offset_notches.hpp).
 #include "cad/offset_notches.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <numbers>
 
@@ -41,7 +43,7 @@ class NotchFiller {
       : path_(path),
         radius_(std::abs(delta)),
         notch_turn_(delta > 0 ? -1 : 1),
-        margin_(2 * join_tolerance + 4),
+        margin_(2.5 * join_tolerance + 2),
         worth_(worth) {}
 
   Path fill(std::size_t& filled) {
@@ -52,23 +54,33 @@ class NotchFiller {
       notch[i] = turn_sign(path_[(i + n - 1) % n], path_[i], path_[(i + 1) % n]) == notch_turn_;
     std::size_t start = 0;
     while (start < n && notch[start]) ++start;
-    if (start == n) return path_;  // all one way: a convex hole, nothing between two mouth corners
+    if (start == n) return path_;         // all one way: a convex hole, nothing between two mouth corners
+    std::size_t here = 0, first_out = 0;  // notches filled; where vertex 0 (or what took its place) went
     for (std::size_t step = 0; step < n;) {
       const std::size_t i = (start + step) % n;
       if (!notch[i]) {
+        if (i == 0) first_out = out_.size();
         out_.push_back(path_[i]);
         ++step;
         continue;
       }
       std::size_t run = 0;  // the notch's corners, i ... i + run - 1, end before a vertex that is not one
       while (notch[(i + run) % n]) ++run;
+      if (i == 0 || i + run > n) first_out = out_.size();
       if (fill_run(i, run)) {
-        ++filled;
+        ++here;
       } else {
-        for (std::size_t k = 0; k < run; ++k) out_.push_back(corner(i, k));
+        for (std::size_t k = 0; k < run; ++k) {
+          if ((i + k) % n == 0) first_out = out_.size();
+          out_.push_back(corner(i, k));
+        }
       }
       step += run;
     }
+    if (here == 0) return path_;
+    filled += here;
+    // From where the path started, so that the offset's polygons start where they would unfilled.
+    std::rotate(out_.begin(), out_.begin() + std::ptrdiff_t(first_out), out_.end());
     return out_;
   }
 
@@ -101,9 +113,14 @@ class NotchFiller {
       const double d = depth(corner(first, k));
       if (std::abs(d) > std::abs(deepest)) deepest = d;
     }
-    // The new corner: under the mouth's middle, past where the tangents at a and b to the disc resting on both meet.
-    const double half = width / 2;
-    const double below = half * half / std::sqrt(radius_ * radius_ - half * half) + margin_;
+    // The new corner t under the mouth's middle, where a -> t and t -> b
+    // dip at angle g: at sin g = W / 2R they are the tangents to the disc
+    // resting on a and b. Steeper, so that the offset of a -> t starts
+    // inside b's circle by the margin (it starts at a + R n, whose distance
+    // from b is sqrt(W^2 - 2 W R sin g + R^2)), and a unit for rounding t.
+    const double sin_dip = (width * width + 2 * radius_ * margin_ - margin_ * margin_) / (2 * width * radius_);
+    if (!(sin_dip < 1)) return false;
+    const double below = width / 2 * sin_dip / std::sqrt(1 - sin_dip * sin_dip) + 1;
     if (std::abs(deepest) < below + worth_) return false;
     const double inward = deepest > 0 ? 1 : -1;
     const IntPoint t{round_half_away(double(a.X + b.X) / 2 - inward * uy * below),

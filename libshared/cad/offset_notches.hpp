@@ -22,9 +22,17 @@
 ///    and b (centre c, R - sqrt(R^2 - W^2 / 4) past the line at most).
 /// So M outside that resting disc is in C(A), and in particular M below the
 /// tangents to it at a and b, which meet W^2 / (4 sqrt(R^2 - W^2 / 4))
-/// under the mouth's middle. The run is replaced by one corner t a margin
-/// below that point (twice the joins' chord tolerance, and a few units for
-/// rounding): a -> t -> b.
+/// under the mouth's middle. The run is replaced by one corner t a little
+/// deeper: a -> t -> b.
+///
+/// How much deeper: the offset of a -> t starts at a + R n (n its unit
+/// normal), on a's circle; it should start inside b's circle by a margin e
+/// beyond the chords of b's round join (2.5 chord tolerances, for a last
+/// chord of up to 1.5 steps, and 2 units), so that it hides under them.
+/// Its distance from b is sqrt(W^2 - 2 W R sin g + R^2), where g is the
+/// angle a -> t dips below the mouth; so sin g = (W^2 + 2 R e - e^2) /
+/// (2 W R), and t is (W / 2) tan g deep, and a unit for rounding. Where
+/// that would need sin g >= 1 (a mouth nearly 2R wide) the notch is kept.
 ///
 /// Why there: the offset of a -> t starts on a's circle just past c, where
 /// the circles round a and b cross (the valley of the grown set), and runs

@@ -21,6 +21,7 @@
 
 #include "cad/offset_notches.hpp"
 #include "cad/offset_polygons.hpp"
+#include "cad/region_union.hpp"
 #include "test_volume.hpp"
 
 namespace offset_polygons_test {  // named: the unity build joins the tests' anonymous namespaces
@@ -197,9 +198,11 @@ std::size_t notches_filled(const Path& path, double delta, double arc_tolerance)
 constexpr double kTolerance = 1e-4 * kScale, kFilledSlack = kTolerance;
 
 TEST(OffsetPolygons, NotchesTheToolCannotEnterFilledForTheSameRegion) {
-  const Path spiky = gear(test_volume(120, 40), 0.5, 5);
-  for (const double mm : {1.0, 0.5, -1.0, -0.5}) {
-    EXPECT_EQ(notches_filled(spiky, mm * kScale, kTolerance), std::size_t(test_volume(120, 40)));
+  // 120 spikes: mouths 0.76 mm wide at the tips (fewer spikes, on a smaller
+  // circle, would open wider).
+  const Path spiky = gear(120, 0.5, 5);
+  for (const double mm : {1.0, 0.5, 0.42, -1.0, -0.5}) {  // 0.42: the mouths 0.9 of the tool's width
+    EXPECT_EQ(notches_filled(spiky, mm * kScale, kTolerance), 120u);
     expect_like_clipper({spiky}, mm * kScale, kTolerance, "gear by " + std::to_string(mm), Notches::filled,
                         kFilledSlack);
   }
@@ -216,8 +219,8 @@ TEST(OffsetPolygons, NotchesTheToolCannotEnterFilledForTheSameRegion) {
                    {cInt(30 * kScale), cInt(30 * kScale)},
                    {cInt(-30 * kScale), cInt(30 * kScale)}};
   const Path hole(spiky.rbegin(), spiky.rend());
-  EXPECT_EQ(notches_filled(hole, 1.0 * kScale, kTolerance), std::size_t(test_volume(120, 40)));
-  EXPECT_EQ(notches_filled(hole, -0.5 * kScale, kTolerance), std::size_t(test_volume(120, 40)));
+  EXPECT_EQ(notches_filled(hole, 1.0 * kScale, kTolerance), 120u);
+  EXPECT_EQ(notches_filled(hole, -0.5 * kScale, kTolerance), 120u);
   EXPECT_EQ(notches_filled(hole, -0.3 * kScale, kTolerance), 0u);  // mouths 0.76 mm wide
   for (const double mm : {1.0, -0.5, -0.3})
     expect_like_clipper({frame, hole}, mm * kScale, kTolerance, "gear hole by " + std::to_string(mm), Notches::filled,
@@ -238,12 +241,17 @@ TEST(OffsetPolygons, NotchesTheToolEntersKept) {
   ASSERT_TRUE(ClipperLib::Orientation(bottle));
   EXPECT_EQ(notches_filled(bottle, 1.0 * kScale, kTolerance), 0u);
   expect_like_clipper({bottle}, 1.0 * kScale, kTolerance, "bottle", Notches::filled, kFilledSlack);
-  // An island reaching into a slot: the region is still Clipper's.
+  // An island reaching into a slot across its mouth: the filled slot would
+  // cross it, so nothing is filled, and the region is Clipper's.
   const Path slots = comb(8);
-  const Path island{{cInt(2.3 * kScale), cInt(8 * kScale)},
-                    {cInt(2.7 * kScale), cInt(8 * kScale)},
-                    {cInt(2.7 * kScale), cInt(14 * kScale)},
-                    {cInt(2.3 * kScale), cInt(14 * kScale)}};
+  const Path island{{cInt(3.3 * kScale), cInt(8 * kScale)},
+                    {cInt(3.7 * kScale), cInt(8 * kScale)},
+                    {cInt(3.7 * kScale), cInt(14 * kScale)},
+                    {cInt(3.3 * kScale), cInt(14 * kScale)}};
+  std::size_t filled = 0;
+  EXPECT_FALSE(simple_and_disjoint({fill_notches(slots, kScale, kTolerance, 0.25 * kScale, filled), island}));
+  EXPECT_EQ(filled, 7u);
+  EXPECT_TRUE(simple_and_disjoint({slots, island}));
   expect_like_clipper({slots, island}, 1.0 * kScale, kTolerance, "comb with an island", Notches::filled, kFilledSlack);
 }
 
