@@ -227,6 +227,23 @@ TEST(OffsetPolygons, NotchesTheToolCannotEnterFilledForTheSameRegion) {
                         kFilledSlack);
 }
 
+TEST(OffsetPolygons, NotchesOfRandomStarsFilledForTheSameRegion) {
+  // Notches of every shape: runs of concave corners, mouths narrow and
+  // wide, sides long and short, some convex, some not.
+  std::mt19937_64 random(2411);
+  std::size_t filled = 0;
+  const int stars = test_volume(30, 6);
+  for (int i = 0; i < stars; ++i) {
+    const Path p = star(random, 12 + 9 * (i % 11));
+    for (const double mm : {1.5, 4.0, 9.0, -1.5, -4.0}) {
+      filled += notches_filled(p, mm * kScale, kTolerance);
+      expect_like_clipper({p}, mm * kScale, kTolerance, "star " + std::to_string(i) + " by " + std::to_string(mm),
+                          Notches::filled, kFilledSlack);
+    }
+  }
+  EXPECT_GT(filled, std::size_t(stars));  // the test reaches the fills
+}
+
 TEST(OffsetPolygons, NotchesTheToolEntersKept) {
   // Wide V's: the mouth wider than the tool.
   EXPECT_EQ(notches_filled(gear(60, 3, 5), 1.0 * kScale, kTolerance), 0u);
