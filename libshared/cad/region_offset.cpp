@@ -204,8 +204,10 @@ Loop polygon_loop(const std::vector<Point>& polygon) {
 }
 
 /// Clipper's polygon as exact lines and arcs, or nullopt when the pieces do
-/// not check out (each piece's middle at distance R from the drawing, and
-/// the length close to the polygon's).
+/// not check out (each piece's start and middle at distance R from the
+/// drawing, and the length close to the polygon's). A feature whose piece
+/// the polygon's chords pass over is put back where the joint of its
+/// neighbours falls inside its band.
 std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const DrawingFeatures& features,
                                   const RegionIndex& index, double radius, double tolerance) {
   const std::size_t n = polygon.size();
@@ -243,16 +245,57 @@ std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const Drawi
       run.prim = features.primitive(run.feature, 0.5 * (polygon[middle_edge] + polygon[(middle_edge + 1) % n]), radius);
     }
     // Run r starts at the vertex where edge run.first_edge starts.
-    std::vector<Point> joints(runs.size());
-    for (std::size_t r = 0; r < runs.size(); ++r) {
-      const Primitive& before = runs[(r + runs.size() - 1) % runs.size()].prim;
-      const Point vertex = polygon[runs[r].first_edge];
-      const Point on_before = before.project(vertex), on_after = runs[r].prim.project(vertex);
+    const auto joint = [&](const Primitive& before, const Primitive& after, Point vertex) {
+      const Point on_before = before.project(vertex), on_after = after.project(vertex);
       std::optional<Point> crossing;
-      if (norm(on_before - on_after) > 1e-9) crossing = crossing_near(before, runs[r].prim, vertex);
-      joints[r] = crossing && norm(*crossing - vertex) < 1e3 * tolerance + 0.1 * radius ? *crossing
-                                                                                        : 0.5 * (on_before + on_after);
+      if (norm(on_before - on_after) > 1e-9) crossing = crossing_near(before, after, vertex);
+      return crossing && norm(*crossing - vertex) < 1e3 * tolerance + 0.1 * radius ? *crossing
+                                                                                   : 0.5 * (on_before + on_after);
+    };
+    // A feature whose piece is shorter than the polygon's chords (a few um
+    // of a flank, in the valley between two tips' arcs) can fall between two
+    // edges' middles: then the pieces either side of it meet nearer than R
+    // to it. It goes in between them, met where the curves cross. A joint
+    // still off the tool radius by more than the checks allow fails the recovery.
+    const double allowed = std::max(10 * tolerance, 1e-9 * radius);
+    std::size_t hint = SIZE_MAX;
+    const auto off_by = [&](Point at) {
+      const RegionQuery q = index.nearest(at, hint);
+      hint = q.element;
+      return q.distance - radius;
+    };
+    std::vector<Run> kept{runs.front()};
+    std::vector<Point> joints{Point{}};  // joints[k] starts kept[k]; the first is settled last
+    // The joint from kept.back() into `next`, after the features missed between them.
+    const auto join = [&](const Run& next) -> std::optional<Point> {
+      const Point vertex = polygon[next.first_edge];
+      Point at = joint(kept.back().prim, next.prim, vertex);
+      for (int put_back = 0;; ++put_back) {
+        const double off = off_by(at);
+        if (std::abs(off) <= 1e-9 * radius + 1e-12 * (std::abs(at.x) + std::abs(at.y))) return at;
+        const Feature missed = features.classify(at);
+        if (off > 0 || missed == kept.back().feature || missed == next.feature || put_back == 4) {
+          if (std::abs(off) > allowed) return std::nullopt;
+          return at;
+        }
+        const Run added{missed, next.first_edge, 0, features.primitive(missed, at, radius)};
+        const Point into = joint(kept.back().prim, added.prim, at);
+        if (std::abs(off_by(into)) > allowed) return std::nullopt;
+        kept.push_back(added);
+        joints.push_back(into);
+        at = joint(added.prim, next.prim, at);
+      }
+    };
+    for (std::size_t r = 1; r < runs.size(); ++r) {
+      const std::optional<Point> at = join(runs[r]);
+      if (!at) return std::nullopt;
+      kept.push_back(runs[r]);
+      joints.push_back(*at);
     }
+    const std::optional<Point> first = join(runs.front());  // round the loop, into the first run
+    if (!first) return std::nullopt;
+    joints.front() = *first;
+    runs = std::move(kept);
     for (std::size_t r = 0; r < runs.size(); ++r) {
       const Point from = joints[r], to = joints[(r + 1) % runs.size()];
       if (norm(to - from) < 1e-9) continue;
@@ -271,7 +314,7 @@ std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const Drawi
     Segment& s = loop.segments[i];
     s.end = loop.segments[(i + 1) % loop.segments.size()].start;  // exactly closed
     exact_length += segment_length(s);
-    for (double t : {0.25, 0.5, 0.75}) {
+    for (double t : {0.25, 0.5, 0.75}) {  // (the starts were checked above, as the joints)
       const RegionQuery q = index.nearest(point_at(s, t), hint);
       const double d = q.distance;
       hint = q.element;
