@@ -266,24 +266,38 @@ std::optional<Loop> recover_exact(const std::vector<Point>& polygon, const Drawi
     };
     std::vector<Run> kept{runs.front()};
     std::vector<Point> joints{Point{}};  // joints[k] starts kept[k]; the first is settled last
-    // The joint from kept.back() into `next`, after the features missed between them.
+    // The joint from kept.back() into `next`, after the features missed
+    // between them; should putting one back not check out (a joint off the
+    // radius, a piece against the polygon's way round), the joint is left
+    // as it was, if that passes the checks.
     const auto join = [&](const Run& next) -> std::optional<Point> {
-      const Point vertex = polygon[next.first_edge];
-      Point at = joint(kept.back().prim, next.prim, vertex);
+      const std::size_t v = next.first_edge;
+      const Point vertex = polygon[v], way = polygon[(v + 1) % n] - polygon[(v + n - 1) % n];
+      const Point first = joint(kept.back().prim, next.prim, vertex);
+      const double first_off = off_by(first);
+      const std::size_t kept_before = kept.size();
+      const auto as_it_was = [&]() -> std::optional<Point> {
+        kept.resize(kept_before), joints.resize(kept_before);
+        if (std::abs(first_off) > allowed) return std::nullopt;
+        return first;
+      };
+      Point at = first;
+      double off = first_off;
       for (int put_back = 0;; ++put_back) {
-        const double off = off_by(at);
-        if (std::abs(off) <= 1e-9 * radius + 1e-12 * (std::abs(at.x) + std::abs(at.y))) return at;
+        const double scale = std::max({radius, kept.back().prim.radius, next.prim.radius});
+        if (std::abs(off) <= 1e-9 * scale + 1e-12 * (std::abs(at.x) + std::abs(at.y))) return at;
         const Feature missed = features.classify(at);
         if (off > 0 || missed == kept.back().feature || missed == next.feature || put_back == 4) {
-          if (std::abs(off) > allowed) return std::nullopt;
+          if (std::abs(off) > allowed) return as_it_was();
           return at;
         }
         const Run added{missed, next.first_edge, 0, features.primitive(missed, at, radius)};
-        const Point into = joint(kept.back().prim, added.prim, at);
-        if (std::abs(off_by(into)) > allowed) return std::nullopt;
+        const Point into = joint(kept.back().prim, added.prim, at), out_of = joint(added.prim, next.prim, at);
+        if (dot(out_of - into, way) < 0 || std::abs(off_by(into)) > allowed) return as_it_was();
         kept.push_back(added);
         joints.push_back(into);
-        at = joint(added.prim, next.prim, at);
+        at = out_of;
+        off = off_by(at);
       }
     };
     for (std::size_t r = 1; r < runs.size(); ++r) {
