@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdlib>
 #include <numbers>
+
+#include "cad/region_union.hpp"
 
 namespace tk::cad {
 namespace {
@@ -15,12 +16,6 @@ using ClipperLib::cInt;
 using ClipperLib::IntPoint;
 using ClipperLib::Path;
 __extension__ typedef __int128 WideInt;  // products of coordinate differences (< 2^63 each) fit
-
-/// The sign of the turn a -> b -> c: > 0 counter-clockwise.
-int turn_sign(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
-  const WideInt turn = WideInt(b.X - a.X) * WideInt(c.Y - b.Y) - WideInt(b.Y - a.Y) * WideInt(c.X - b.X);
-  return (turn > 0) - (turn < 0);
-}
 
 WideInt dot_exact(const IntPoint& from, const IntPoint& to, const IntPoint& from2, const IntPoint& to2) {
   return WideInt(to.X - from.X) * WideInt(to2.X - from2.X) + WideInt(to.Y - from.Y) * WideInt(to2.Y - from2.Y);
@@ -51,7 +46,7 @@ class NotchFiller {
     if (n < 4 || radius_ == 0) return path_;
     std::vector<char> notch(n);
     for (std::size_t i = 0; i < n; ++i)
-      notch[i] = turn_sign(path_[(i + n - 1) % n], path_[i], path_[(i + 1) % n]) == notch_turn_;
+      notch[i] = orient_exact(path_[(i + n - 1) % n], path_[i], path_[(i + 1) % n]) == notch_turn_;
     std::size_t start = 0;
     while (start < n && notch[start]) ++start;
     if (start == n) return path_;         // all one way: a convex hole, nothing between two mouth corners
@@ -96,7 +91,7 @@ class NotchFiller {
     if (!(width < 2 * radius_ * (1 - 1e-9)) || width == 0) return false;
     // M convex: turning the same way at the mouth's corners, once round in all.
     const IntPoint &v1 = corner(first, 0), &vk = corner(first, run - 1);
-    if (turn_sign(vk, b, a) != notch_turn_ || turn_sign(b, a, v1) != notch_turn_) return false;
+    if (orient_exact(vk, b, a) != notch_turn_ || orient_exact(b, a, v1) != notch_turn_) return false;
     const auto m_corner = [&](std::size_t k) -> const IntPoint& {  // M's corners: a, v1 ... vk, b
       return k == 0 ? a : k <= run ? corner(first, k - 1) : b;
     };
@@ -126,9 +121,9 @@ class NotchFiller {
     const IntPoint t{round_half_away(double(a.X + b.X) / 2 - inward * uy * below),
                      round_half_away(double(a.Y + b.Y) / 2 + inward * ux * below)};
     // t inside M (strictly), so that a -> t -> b stays in the notch.
-    if (turn_sign(b, a, t) != notch_turn_) return false;
+    if (orient_exact(b, a, t) != notch_turn_) return false;
     for (std::size_t k = 0; k <= run; ++k)
-      if (turn_sign(m_corner(k), m_corner(k + 1), t) != notch_turn_) return false;
+      if (orient_exact(m_corner(k), m_corner(k + 1), t) != notch_turn_) return false;
     out_.push_back(t);
     return true;
   }

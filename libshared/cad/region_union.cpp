@@ -19,10 +19,13 @@ __extension__ typedef __int128 WideInt;  // products of coordinate differences (
 
 int sign_of(WideInt v) { return (v > 0) - (v < 0); }
 
-/// > 0 when c lies left of the line a -> b, 0 on it.
+}  // namespace
+
 int orient_exact(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
   return sign_of(WideInt(b.X - a.X) * WideInt(c.Y - a.Y) - WideInt(b.Y - a.Y) * WideInt(c.X - a.X));
 }
+
+namespace {
 
 bool lexicographic_less(const IntPoint& a, const IntPoint& b) { return a.X != b.X ? a.X < b.X : a.Y < b.Y; }
 

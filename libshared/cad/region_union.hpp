@@ -15,6 +15,10 @@
 
 namespace tk::cad {
 
+/// > 0 when c lies left of the line a -> b (the turn a -> b -> c is
+/// counter-clockwise), < 0 right of it, 0 on it; exact on Clipper's integers.
+int orient_exact(const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b, const ClipperLib::IntPoint& c);
+
 /// Whether no two edges of the closed `paths` meet, but consecutive edges
 /// of one path at their shared vertex (without doubling back over each
 /// other). Exact on Clipper's integers; paths of fewer than 3 distinct
