@@ -19,11 +19,14 @@
 ///    runs off a capped list finishes in a box tree over the elements,
 ///    as do queries outside the grid;
 ///  - a reference point clear of the boundary, whether it is inside (by
-///    the same ray test as brute force at the first leaf of each row of
-///    cells, then from leaf to leaf by the crossing test below), and the
-///    elements that may touch
-///    the leaf: the query's inside flag is the reference point's, flipped
-///    once per crossing of the short segment from there to the query point.
+///    the same ray test as brute force at the first leaf of its tile, then
+///    from leaf to leaf by the crossing test below), and the elements that
+///    may touch the leaf: the query's inside flag is the reference point's,
+///    flipped once per crossing of the short segment from there to the
+///    query point.
+/// Cells come in tiles of 8 x 8, each built whole by the first query that
+/// lands in it (a tile depends on the boundary alone, so the answers do not
+/// depend on which tiles are built, nor in what order).
 /// The crossing tests share their conventions and their left_of() calls
 /// with the ray test, so the two agree exactly wherever the query point is.
 #include "cad/region_distance.hpp"
@@ -120,8 +123,9 @@ bool RegionIndex::Impl::tree_ray_parity(Point p) const {
   return odd;
 }
 
-double RegionIndex::Impl::leaf_nearest(std::size_t leaf, Point centre, Point p, std::uint32_t& best) const {
-  const Leaf& l = leaves[leaf];
+double RegionIndex::Impl::leaf_nearest(const Tile& t, std::size_t leaf, Point centre, Point p,
+                                       std::uint32_t& best) const {
+  const Leaf& l = t.leaves[leaf];
   const double from_centre = std::sqrt((p.x - centre.x) * (p.x - centre.x) + (p.y - centre.y) * (p.y - centre.y));
   // Start from a bound the nearest element beats: |p - e| <= |c - e| + |p - c|.
   const double bound = (double(l.nearest) + from_centre) * (1 + 1e-12);
@@ -138,10 +142,12 @@ double RegionIndex::Impl::leaf_nearest(std::size_t leaf, Point centre, Point p, 
   };
   bool done = false;
   for (std::size_t i = 0; i < kHead && !(done = beaten(l.head[i])); ++i) try_element(l.head[i].element);
-  const Candidate* it = candidates.data() + l.candidates;
-  const Candidate* const end = candidates.data() + leaves[leaf + 1].candidates;
+  const Candidate* it = t.candidates.data() + l.candidates;
+  const Candidate* const end = t.candidates.data() + t.leaves[leaf + 1].candidates;
   for (; !done && it != end && !(done = beaten(*it)); ++it) try_element(it->element);
-  if (!done && !ruled_out(double(l.complete))) tree_nearest(p, best2, best);
+  // A wide leaf (no list) or one whose list ran out: the tree, searched
+  // within the bound (which spares it most of the boundary far off).
+  if (best == UINT32_MAX || (!done && !ruled_out(double(l.complete)))) tree_nearest(p, best2, best);
   if (best == UINT32_MAX) best2 = kInf, tree_nearest(p, best2, best);  // not reached; rounding guard
   return best2;
 }
@@ -153,18 +159,24 @@ RegionIndex& RegionIndex::operator=(RegionIndex&&) noexcept = default;
 const std::vector<Segment>& RegionIndex::elements() const { return impl_->segments; }
 std::size_t RegionIndex::loop_of(std::size_t element) const { return impl_->loop_of.at(element); }
 
-bool RegionIndex::Impl::locate(Point p, std::size_t& leaf, Point& leaf_centre) const {
+bool RegionIndex::Impl::locate(Point p, bool build, const Tile*& tile, std::size_t& leaf, Point& leaf_centre) const {
   const double fx = (p.x - ox) * inv_size, fy = (p.y - oy) * inv_size;
   if (!(fx >= 0 && fy >= 0 && fx < double(nx) && fy < double(ny))) return false;
   const auto ix = static_cast<std::size_t>(fx), iy = static_cast<std::size_t>(fy);
-  const std::size_t cell = iy * nx + ix;
-  const std::uint32_t split = coarse[cell].split;
+  const std::size_t tx = ix / kBlockCells, ty = iy / kBlockCells;
+  tile = tiles[ty * tiles_x + tx].load(std::memory_order_acquire);
+  if (!tile) {
+    if (!build) return false;
+    tile = &tile_at(tx, ty);
+  }
+  const Coarse& coarse = tile->coarse[(iy - ty * kBlockCells) * kBlockCells + (ix - tx * kBlockCells)];
+  const std::uint32_t split = coarse.split;
   std::uint32_t sx = 0, sy = 0;
   if (split > 1) {
     sx = std::min(split - 1, static_cast<std::uint32_t>((fx - double(ix)) * split));
     sy = std::min(split - 1, static_cast<std::uint32_t>((fy - double(iy)) * split));
   }
-  leaf = coarse[cell].first_leaf + sy * split + sx;
+  leaf = coarse.first_leaf + sy * split + sx;
   leaf_centre = centre(ix, iy, split, sx, sy);
   return true;
 }
@@ -174,18 +186,19 @@ RegionQuery RegionIndex::query(Point p) const {
   if (m.segments.empty()) return {kInf, p, 0};
   impl_->ensure_grid();
   std::uint32_t best = 0;
+  const Impl::Tile* tile = nullptr;
   std::size_t leaf = 0;
   Point leaf_centre;
-  if (!m.locate(p, leaf, leaf_centre)) {
+  if (!m.locate(p, true, tile, leaf, leaf_centre)) {
     double best2 = kInf;
     m.tree_nearest(p, best2, best);
     return m.answer(p, best2, best, m.tree_ray_parity(p));
   }
-  const double best2 = m.leaf_nearest(leaf, leaf_centre, p, best);
-  const Impl::Leaf& l = m.leaves[leaf];
+  const double best2 = m.leaf_nearest(*tile, leaf, leaf_centre, p, best);
+  const Impl::Leaf& l = tile->leaves[leaf];
   bool inside = l.inside;
-  for (std::uint32_t i = l.covers; i < m.leaves[leaf + 1].covers; ++i) {
-    const Impl::Cover& c = m.covers[i];
+  for (std::uint32_t i = l.covers; i < tile->leaves[leaf + 1].covers; ++i) {
+    const Impl::Cover& c = tile->covers[i];
     inside ^= segment_parity(m.kernels[c.packed & Impl::kElementBits], c.start, c.end, c.packed & Impl::kArc,
                              c.packed & Impl::kCcw, l.ref, p, c.packed & Impl::kRefLeft, c.packed & Impl::kRefLens);
   }
@@ -196,10 +209,11 @@ RegionQuery RegionIndex::nearest(Point p, std::size_t hint) const {
   const Impl& m = *impl_;
   if (m.segments.empty()) return {kInf, p, 0};
   std::uint32_t best = 0;
+  const Impl::Tile* tile = nullptr;
   std::size_t leaf = 0;
   Point leaf_centre;
-  if (m.grid_ready.load(std::memory_order_acquire) && m.locate(p, leaf, leaf_centre)) {
-    const double best2 = m.leaf_nearest(leaf, leaf_centre, p, best);  // sets best: not in answer()'s arguments
+  if (m.grid_ready.load(std::memory_order_acquire) && m.locate(p, false, tile, leaf, leaf_centre)) {
+    const double best2 = m.leaf_nearest(*tile, leaf, leaf_centre, p, best);  // sets best: not in answer()'s arguments
     return m.answer(p, best2, best, false);
   }
   // The hint's own distance bounds the search from the start; the tie rule

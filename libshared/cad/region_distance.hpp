@@ -22,10 +22,11 @@ struct RegionQuery {
 
 class RegionIndex {
  public:
-  /// grid: the box tree, and the grid of candidate lists for fast queries
-  /// (a build of some 10 us per element), built by the first query() (once,
-  /// whichever thread asks first; nearest() uses it once it is there, the
-  /// tree until then); tree: the box tree alone, built in well under a
+  /// grid: the box tree, and a grid of candidate lists for fast queries,
+  /// laid out by the first query() and built tile by tile (8 x 8 cells, some
+  /// 64 elements' worth, about a millisecond) by the first query() landing
+  /// in each, whichever thread asks first; nearest() uses the tiles built,
+  /// the tree elsewhere. tree: the box tree alone, built in well under a
   /// microsecond per element, for query-light uses (its queries are
   /// several times slower unless nearest() gets a hint). Both answer the same.
   enum class Layout { grid, tree };
@@ -36,6 +37,9 @@ class RegionIndex {
   RegionIndex& operator=(RegionIndex&&) noexcept;
 
   RegionQuery query(Point p) const;
+  /// Builds every tile of the grid now rather than as queries arrive (for
+  /// an even pace from the first query on, or to time the whole build).
+  void prepare() const;
   /// query() without the inside test: the distance is never negative; the
   /// nearest element and point are query()'s. `hint`, an element near p
   /// (the last answer along a path), speeds up the tree's search.

@@ -34,9 +34,9 @@ double RegionIndex::Impl::prune(Workspace& w, Point c, double half, const std::u
 
 /// Cells [x0, x0 + span) x [y0, y0 + span) from `list`, their block's window.
 void RegionIndex::Impl::split_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span,
-                                    std::vector<std::uint32_t>& list, double nearest) {
+                                    std::vector<std::uint32_t>& list, double nearest) const {
   if (span == 1) {
-    CellWindow& window = windows[y0 * nx + x0];
+    CellWindow& window = w.windows[w.local(x0, y0)];
     window.first = static_cast<std::uint32_t>(w.window_elements.size());
     window.count = static_cast<std::uint32_t>(list.size());
     window.nearest = nearest;
@@ -57,7 +57,7 @@ void RegionIndex::Impl::split_block(Workspace& w, std::size_t x0, std::size_t y0
 }
 
 /// The block's window from the tree; quartered when too wide.
-void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span) {
+void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span) const {
   if (x0 >= nx || y0 >= ny) return;
   const Point c{ox + (double(x0) + double(span) / 2) * size, oy + (double(y0) + double(span) / 2) * size};
   double best2 = kInf;
@@ -73,25 +73,20 @@ void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, 
     for (std::size_t dy = 0; dy < 2; ++dy)
       for (std::size_t dx = 0; dx < 2; ++dx) ask_block(w, x0 + dx * half_span, y0 + dy * half_span, half_span);
   } else {
-    CellWindow& window = windows[y0 * nx + x0];
+    CellWindow& window = w.windows[w.local(x0, y0)];
     window.wide = true, window.nearest = nearest;
   }
 }
 
-void RegionIndex::Impl::build_windows(Workspace& w, std::size_t row_begin, std::size_t row_end) {
-  for (std::size_t y = row_begin * kBlockCells; y < std::min(ny, row_end * kBlockCells); y += kBlockCells)
-    for (std::size_t x = 0; x < nx; x += kBlockCells) ask_block(w, x, y, kBlockCells);
-}
-
-/// The elements of `window` (the list of the square round c of half side
-/// `half` inside `cell`, pruned at that square) that may be nearest to a
-/// point of it, refined by quartering; sorted by distance from c (left in
-/// near[]). Empty for a wide cell.
-std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(Workspace& w, std::size_t cell, Point c, double half,
-                                                          const std::uint32_t* window, std::size_t count) const {
+/// The elements of `list` (the list of the square round c of half side
+/// `half`, pruned at that square, in a cell whose window is `window`) that
+/// may be nearest to a point of it, refined by quartering; sorted by
+/// distance from c (left in near[]). Empty for a wide cell.
+std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(Workspace& w, const CellWindow& window, Point c, double half,
+                                                          const std::uint32_t* list, std::size_t count) const {
   std::vector<std::uint32_t> listed;
-  if (windows[cell].wide) return listed;
-  w.scratch.assign(window, window + count);
+  if (window.wide) return listed;
+  w.scratch.assign(list, list + count);
   ++w.mark;
   refine(w, c, half, 0, w.scratch.size(), 0, listed, true);
   std::vector<double>& near = w.near;
@@ -119,30 +114,32 @@ bool RegionIndex::Impl::chain_parity(Workspace& w, Point from, Point to,
   return odd;
 }
 
-void RegionIndex::Impl::build_inside(Workspace& w, std::size_t row_begin, std::size_t row_end) {
+void RegionIndex::Impl::build_inside(Workspace& w, Tile& t) const {
   std::vector<std::uint32_t> elements;
-  const auto add_cell = [&](std::size_t cell) {
-    elements.insert(elements.end(), cell_touches.begin() + cell_touch_first[cell],
-                    cell_touches.begin() + cell_touch_first[cell + 1]);
+  const auto add_cell = [&](std::size_t x, std::size_t y) {
+    for (std::size_t k = touch_first[y * nx + x]; k < touch_first[y * nx + x + 1]; ++k)
+      elements.push_back(touches[k].element);
   };
   const auto add_leaf = [&](std::size_t leaf) {
-    for (std::uint32_t m = leaf_cover_first[leaf]; m < leaf_cover_first[leaf + 1]; ++m)
-      elements.push_back(covers[m].packed & kElementBits);
+    for (std::uint32_t m = t.leaves[leaf].covers; m < t.leaves[leaf + 1].covers; ++m)
+      elements.push_back(t.covers[m].packed & kElementBits);
   };
   // Two neighbouring squares of one size make a rectangle: the segment
   // joining points of theirs stays in it, so only their elements can cross it.
   const auto follow = [&](std::size_t from, std::size_t to) {
-    leaves[to].inside = leaves[from].inside != chain_parity(w, leaves[from].ref, leaves[to].ref, elements);
+    t.leaves[to].inside = t.leaves[from].inside != chain_parity(w, t.leaves[from].ref, t.leaves[to].ref, elements);
   };
-  for (std::size_t y = row_begin; y < row_end; ++y)
-    for (std::size_t x = 0; x < nx; ++x) {
-      const std::size_t cell = y * nx + x, first = coarse[cell].first_leaf, split = coarse[cell].split;
-      if (x == 0) {
-        leaves[first].inside = tree_ray_parity(leaves[first].ref);
-      } else {
+  const auto first_leaf = [&](std::size_t x, std::size_t y) { return t.coarse[w.local(x, y)].first_leaf; };
+  for (std::size_t y = w.y0; y < std::min(ny, w.y0 + kBlockCells); ++y)
+    for (std::size_t x = w.x0; x < std::min(nx, w.x0 + kBlockCells); ++x) {
+      const std::size_t first = first_leaf(x, y), split = t.coarse[w.local(x, y)].split;
+      if (x == w.x0 && y == w.y0) {
+        t.leaves[first].inside = tree_ray_parity(t.leaves[first].ref);
+      } else {  // from the cell to the left, or, in the tile's first column, the one below
+        const std::size_t from_x = x > w.x0 ? x - 1 : x, from_y = x > w.x0 ? y : y - 1;
         elements.clear();
-        add_cell(cell - 1), add_cell(cell);
-        follow(coarse[cell - 1].first_leaf, first);
+        add_cell(from_x, from_y), add_cell(x, y);
+        follow(first_leaf(from_x, from_y), first);
       }
       for (std::size_t j = 0; j < split; ++j)
         for (std::size_t i = j == 0 ? 1 : 0; i < split; ++i) {

@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -74,7 +76,7 @@ inline void to_local(const Kernel& k, Point p, double& u, double& v) {
 /// Is the direction from the arc's centre to local (u, v) within its sweep?
 inline bool in_sweep(const Kernel& k, double u, double v) { return k.k1 * (k.k0 - std::abs(u)) - v * k.k0 >= 0; }
 
-inline double distance2(const Kernel& k, Point p) {
+[[gnu::always_inline]] inline double distance2(const Kernel& k, Point p) {
   if (k.side == 0) {
     const double px = p.x - k.x, py = p.y - k.y;
     const double t = std::clamp((px * k.dx + py * k.dy) * k.k0, 0.0, 1.0);
@@ -224,51 +226,69 @@ struct RegionIndex::Impl {
   std::vector<Box> boxes;
   std::vector<Node> nodes;
   std::vector<std::uint32_t> order;
-  std::vector<Coarse> coarse;
-  std::vector<Leaf> leaves;
-  std::vector<Candidate> candidates;
-  std::vector<Cover> covers;
-  struct CellWindow {  // while building: the elements that may be nearest in a cell (region_index_cells.cpp)
+
+  /// The grid's cells, kBlockCells a side to a tile, each tile built whole
+  /// by the first query that lands in it: a check along a tool path builds
+  /// the tiles it passes and waits for no others.
+  struct Tile {
+    Coarse coarse[kBlockCells * kBlockCells];  // cell (x0 + i, y0 + j) at j * kBlockCells + i
+    std::vector<Leaf> leaves;                  // and one past the last, whose offsets end the last's lists
+    std::vector<Candidate> candidates;
+    std::vector<Cover> covers;
+  };
+  /// A piece [t0, t1] of an element whose padded box may touch a cell;
+  /// listed cell by cell (cell c's from touch_first[c]), each cell's in element order.
+  struct Touch {
+    std::uint32_t element;
+    double t0, t1;
+  };
+  std::vector<Touch> touches;
+  std::vector<std::uint32_t> touch_first;
+  std::unique_ptr<std::atomic<Tile*>[]> tiles;  // owned; null until built
+  std::size_t tiles_x = 0, tiles_y = 0;
+  struct CellWindow {  // while building a tile: the elements that may be nearest in a cell (region_index_cells.cpp)
     std::uint32_t first = 0, count = 0;
     double nearest = 0;  // the cell centre's distance to the boundary
     bool wide = false;   // too many: the cell's leaves keep no list
   };
-  std::vector<CellWindow> windows;
-  std::vector<std::uint32_t> window_elements;
-  std::vector<std::uint32_t> cell_touches, cell_touch_first;  // while building: the elements that may touch each cell
-  // While building: each leaf's first cover, apart from its inside flag
-  // (the same word), which another thread may be setting.
-  std::vector<std::uint32_t> leaf_cover_first;
-  /// One building thread's scratch and output: a mark per element,
-  /// distances from a centre, refine()'s lists (each square's after its
-  /// parent's), a cell's leaves' windows, and the windows' and leaves'
-  /// lists it built, offsets relative to its own (joined in order later).
+  /// One building thread's scratch: a mark per element, distances from a
+  /// centre, refine()'s lists (each square's after its parent's), a cell's
+  /// leaves' lists, and the tile being built (origin x0, y0 in cells) with
+  /// its cells' windows.
   struct Workspace {
     std::vector<std::uint32_t> stamp;
     std::uint32_t mark = 0;
     std::vector<double> near, far2;
     std::vector<std::uint32_t> scratch;
     std::vector<std::vector<std::uint32_t>> leaf_lists;
+    std::size_t x0 = 0, y0 = 0;
+    CellWindow windows[kBlockCells * kBlockCells];
     std::vector<std::uint32_t> window_elements;
-    std::vector<Candidate> candidates;
     explicit Workspace(std::size_t elements) : stamp(elements, 0), near(elements) {}
+    std::size_t local(std::size_t x, std::size_t y) const { return (y - y0) * kBlockCells + (x - x0); }
   };
-  /// Each leaf's inside flag: the ray test at the first leaf of each row of
-  /// cells, then from leaf to leaf by the crossings of the segments joining
-  /// their reference points (as a query does from the reference point).
-  void build_inside(Workspace& w, std::size_t row_begin, std::size_t row_end);
-  bool chain_parity(Workspace& w, Point from, Point to, const std::vector<std::uint32_t>& elements) const;
-  /// The grid (Layout::grid) comes with the first signed-distance query:
-  /// a run that never asks one (dxf2region writing a region) never pays
-  /// for it, and nearest() uses it only once it is there.
+  /// Workspaces between tile builds (each as large as the boundary).
+  mutable std::mutex spare_mutex;
+  mutable std::vector<std::unique_ptr<Workspace>> spare;
+
+  /// The grid's layout and the touches come with the first query() (not
+  /// with Layout::tree, nor with nearest(), which uses the tiles built).
   bool grid_wanted = false;
   std::once_flag grid_once;
   std::atomic<bool> grid_ready{false};
   void ensure_grid();
-  void build_grid_lists();
+  void build_grid();
+  void build_touches();
   double ox = 0, oy = 0, size = 1, inv_size = 1;
   double rounding = 0;  // beyond the rounding of any computed distance (as the boxes' padding)
   std::size_t nx = 0, ny = 0;
+
+  Impl() = default;
+  Impl(const Impl&) = delete;
+  Impl& operator=(const Impl&) = delete;
+  ~Impl() {
+    for (std::size_t i = 0; tiles && i < tiles_x * tiles_y; ++i) delete tiles[i].load();
+  }
 
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);
   void tree_nearest(Point p, double& best2, std::uint32_t& best) const;
@@ -276,36 +296,47 @@ struct RegionIndex::Impl {
   /// false (out unfinished) as soon as there are more than `cap`.
   bool tree_within(Point p, double radius, std::vector<std::uint32_t>& out, std::size_t cap = SIZE_MAX) const;
   bool tree_ray_parity(Point p) const;
-  void build_grid();
-  /// The windows of the blocks of cells in rows [row_begin, row_end) of blocks.
-  void build_windows(Workspace& w, std::size_t row_begin, std::size_t row_end);
-  void ask_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span);
+
+  /// Tile (tx, ty), built now if no thread has built it yet.
+  const Tile& tile_at(std::size_t tx, std::size_t ty) const;
+  void build_tile(Workspace& w, Tile& t) const;
+  /// The windows of block [x0, x0 + span)^2 of cells (in w's tile), from the tree.
+  void ask_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span) const;
   void split_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span, std::vector<std::uint32_t>& list,
-                   double nearest);
+                   double nearest) const;
   /// Appends to `out` the elements of `in` that may be nearest to a point of
   /// the square round c of half side `half`; returns c's distance to the nearest of them.
   double prune(Workspace& w, Point c, double half, const std::uint32_t* in, std::size_t count,
                std::vector<std::uint32_t>& out) const;
-  std::vector<std::uint32_t> leaf_window(Workspace& w, std::size_t cell, Point c, double half,
-                                         const std::uint32_t* window, std::size_t count) const;
-  void build_covers();
-  /// The lists of cells [cell_begin, cell_end)'s leaves, into w.candidates.
-  void build_lists(Workspace& w, std::size_t cell_begin, std::size_t cell_end);
-  void build_leaves(Workspace& w, std::size_t cell, std::uint32_t x0, std::uint32_t y0, std::uint32_t span,
-                    const std::vector<std::uint32_t>& list);
-  void build_leaf(Workspace& w, std::size_t cell, std::uint32_t x, std::uint32_t y,
-                  const std::vector<std::uint32_t>& list);
-  /// Reference points of cells [cell_begin, cell_end)'s leaves (their lists complete).
-  void build_refs(std::size_t cell_begin, std::size_t cell_end);
+  std::vector<std::uint32_t> leaf_window(Workspace& w, const CellWindow& window, Point c, double half,
+                                         const std::uint32_t* list, std::size_t count) const;
+  /// The tile's leaves and which elements may touch each.
+  void build_covers(Workspace& w, Tile& t) const;
+  void build_lists(Workspace& w, Tile& t) const;
+  void build_leaves(Workspace& w, const Tile& t, std::size_t x, std::size_t y, std::uint32_t x0, std::uint32_t y0,
+                    std::uint32_t span, const std::vector<std::uint32_t>& list) const;
+  void build_leaf(Workspace& w, Tile& t, std::size_t x, std::size_t y, std::uint32_t lx, std::uint32_t ly,
+                  const std::vector<std::uint32_t>& list) const;
+  /// Reference points of the tile's leaves (their lists complete).
+  void build_refs(Workspace& w, Tile& t) const;
+  /// Each leaf's inside flag: the ray test at the tile's first leaf, then
+  /// from leaf to leaf by the crossings of the segments joining their
+  /// reference points (as a query does from the reference point).
+  void build_inside(Workspace& w, Tile& t) const;
+  bool chain_parity(Workspace& w, Point from, Point to, const std::vector<std::uint32_t>& elements) const;
   void refine(Workspace& w, Point q, double half, std::size_t begin, std::size_t end, int depth,
               std::vector<std::uint32_t>& out, bool pruned = false) const;
 
-  double leaf_nearest(std::size_t leaf, Point centre, Point p, std::uint32_t& best) const;
-  /// The leaf p falls in and its centre; false outside the grid (or without one).
-  bool locate(Point p, std::size_t& leaf, Point& leaf_centre) const;
+  double leaf_nearest(const Tile& t, std::size_t leaf, Point centre, Point p, std::uint32_t& best) const;
+  /// The tile and leaf p falls in and its centre; false outside the grid
+  /// (or without one), or in a tile not built unless `build`.
+  bool locate(Point p, bool build, const Tile*& tile, std::size_t& leaf, Point& leaf_centre) const;
   /// Centre of leaf (x, y) of cell (ix, iy), the same point for building and querying.
   Point centre(std::size_t ix, std::size_t iy, std::uint32_t split, std::uint32_t x, std::uint32_t y) const {
-    return {ox + (double(ix) + (x + 0.5) / split) * size, oy + (double(iy) + (y + 0.5) / split) * size};
+    // split is a power of two up to 32: times its inverse is the same as over it, to the bit.
+    static constexpr double kInverse[6] = {1, 0.5, 0.25, 0.125, 0.0625, 0.03125};
+    const double inverse = kInverse[std::countr_zero(split)];
+    return {ox + (double(ix) + (x + 0.5) * inverse) * size, oy + (double(iy) + (y + 0.5) * inverse) * size};
   }
   RegionQuery answer(Point p, double best2, std::uint32_t best, bool inside) const {
     const double d = std::sqrt(best2);

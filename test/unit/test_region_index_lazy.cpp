@@ -1,8 +1,11 @@
 /// @file test_region_index_lazy.cpp
-/// @brief RegionIndex's grid comes with the first query(): nearest()
-/// before it (the tree) and after it (the grid) names the same element at
-/// the same distance as brute force, and two threads asking their first
-/// queries at once both get brute force's answers (the grid built once).
+/// @brief RegionIndex's grid is laid out by the first query() and built
+/// tile by tile where queries land: nearest() before it (the tree) and
+/// after it (built tiles, the tree elsewhere) names the same element at
+/// the same distance as brute force; threads asking at once, in the same
+/// tiles or in others, all get brute force's answers (a tile two of them
+/// build at once is kept once); and an index built whole by prepare()
+/// answers as one built lazily, to the bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -43,6 +46,18 @@ std::vector<Expected> brute_force(const std::vector<Loop>& loops, const std::vec
   return out;
 }
 
+/// How many of query()'s answers differ from brute force's, asking from point `first` on, round to it.
+std::size_t wrong_answers(const RegionIndex& index, const std::vector<Point>& points,
+                          const std::vector<Expected>& expected, std::size_t first) {
+  std::size_t wrong = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const std::size_t i = (first + k) % points.size();
+    const RegionQuery q = index.query(points[i]);
+    wrong += q.element != expected[i].element || q.distance != expected[i].distance;
+  }
+  return wrong;
+}
+
 TEST(RegionIndexLazyGrid, NearestBeforeAndAfterTheFirstQueryAgreeWithBruteForce) {
   std::mt19937_64 random(7);
   const LoopSet set = build_loops(random_star_with_hole(random, test_volume(600, 150)), 1e-9);
@@ -64,26 +79,42 @@ TEST(RegionIndexLazyGrid, NearestBeforeAndAfterTheFirstQueryAgreeWithBruteForce)
   }
 }
 
-TEST(RegionIndexLazyGrid, TwoThreadsAskingFirstBothGetBruteForcesAnswers) {
+TEST(RegionIndexLazyGrid, ThreadsAskingAtOnceGetBruteForcesAnswers) {
   std::mt19937_64 random(11);
   for (int round = 0; round < test_volume(8, 2); ++round) {
     const LoopSet set = build_loops(random_star_with_hole(random, test_volume(3000, 600)), 1e-9);
     const std::vector<Point> points = random_points(random, test_volume(2000, 300));
     const std::vector<Expected> expected = brute_force(set.loops, points);
-    const RegionIndex index(set.loops);
-    const auto ask = [&](std::size_t first) {
-      std::size_t wrong = 0;
-      for (std::size_t k = 0; k < points.size(); ++k) {
-        const std::size_t i = (first + k) % points.size();
-        const RegionQuery q = index.query(points[i]);
-        wrong += q.element != expected[i].element || q.distance != expected[i].distance;
-      }
-      return wrong;
-    };
-    auto other = std::async(std::launch::async, ask, points.size() / 2);
-    EXPECT_EQ(ask(0), 0u) << "round " << round;
-    EXPECT_EQ(other.get(), 0u) << "round " << round;
+    // Two threads from opposite ends of the list (mostly other tiles), then
+    // four in the same order (each tile asked for by all at about once).
+    for (const std::size_t threads : {2, 4}) {
+      const RegionIndex index(set.loops);
+      const auto ask = [&](std::size_t first) { return wrong_answers(index, points, expected, first); };
+      std::vector<std::future<std::size_t>> others;
+      for (std::size_t t = 1; t < threads; ++t)
+        others.push_back(std::async(std::launch::async, ask, threads == 2 ? points.size() / 2 : 0));
+      EXPECT_EQ(ask(0), 0u) << "round " << round << ", " << threads << " threads";
+      for (auto& other : others) EXPECT_EQ(other.get(), 0u) << "round " << round << ", " << threads << " threads";
+    }
   }
+}
+
+TEST(RegionIndexLazyGrid, PreparedWholeAnswersAsBuiltTileByTile) {
+  std::mt19937_64 random(17);
+  const LoopSet set = build_loops(random_star_with_hole(random, test_volume(2000, 400)), 1e-9);
+  const std::vector<Point> points = random_points(random, test_volume(4000, 500));
+  const RegionIndex whole(set.loops), lazy(set.loops);
+  whole.prepare();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const RegionQuery a = whole.query(points[i]), b = lazy.query(points[i]);
+    ASSERT_EQ(a.element, b.element) << "point " << i;
+    ASSERT_EQ(a.distance, b.distance) << "point " << i;
+    ASSERT_EQ(a.nearest.x, b.nearest.x) << "point " << i;
+    ASSERT_EQ(a.nearest.y, b.nearest.y) << "point " << i;
+  }
+  const RegionQuery answer = brute_force_query(set.loops, points[0]);
+  EXPECT_EQ(whole.query(points[0]).distance, answer.distance);
+  RegionIndex(std::vector<Loop>{}).prepare();  // nothing to build
 }
 
 }  // namespace region_index_lazy_test
