@@ -4,12 +4,13 @@
 /// The index is a two-level grid over the boundary's box, enlarged by a
 /// quarter on each side: about one cell per element, each cell split into
 /// leaves (a power of two a side) until about one element touches a leaf
-/// and few may be nearest to its points. Each leaf keeps
+/// and few may be nearest to its points (up to 4 x 4 leaves for that). Each
+/// leaf keeps
 ///  - the elements that may be nearest to one of its points: those within
-///    the centre's nearest distance plus a leaf diagonal, pruned by the
-///    same test on quarters of the leaf, once (not where it stops
-///    pruning), which leaves little more than the elements whose Voronoi
-///    regions meet the leaf. The lists come top down (see
+///    the centre's nearest distance plus a leaf diagonal, which is close to
+///    the elements whose Voronoi regions meet the leaf once leaves are
+///    small (rather than pruning a larger leaf's list again at its
+///    quarters, which cost more to build). The lists come top down (see
 ///    region_index_cells.cpp) so the build grows as about n log n; a cell
 ///    with too many candidates (deep inside a finely divided outline)
 ///    keeps none, and its queries use the tree.
@@ -160,9 +161,10 @@ const std::vector<Segment>& RegionIndex::elements() const { return impl_->segmen
 std::size_t RegionIndex::loop_of(std::size_t element) const { return impl_->loop_of.at(element); }
 
 bool RegionIndex::Impl::locate(Point p, bool build, const Tile*& tile, std::size_t& leaf, Point& leaf_centre) const {
+  // Signed conversions: the unsigned ones cost a branch each (the grid has under 2^23 cells a side).
   const double fx = (p.x - ox) * inv_size, fy = (p.y - oy) * inv_size;
-  if (!(fx >= 0 && fy >= 0 && fx < double(nx) && fy < double(ny))) return false;
-  const auto ix = static_cast<std::size_t>(fx), iy = static_cast<std::size_t>(fy);
+  if (!(fx >= 0 && fy >= 0 && fx < double(std::int64_t(nx)) && fy < double(std::int64_t(ny)))) return false;
+  const auto ix = std::size_t(static_cast<std::int64_t>(fx)), iy = std::size_t(static_cast<std::int64_t>(fy));
   const std::size_t tx = ix / kBlockCells, ty = iy / kBlockCells;
   tile = tiles[ty * tiles_x + tx].load(std::memory_order_acquire);
   if (!tile) {
@@ -173,8 +175,8 @@ bool RegionIndex::Impl::locate(Point p, bool build, const Tile*& tile, std::size
   const std::uint32_t split = coarse.split;
   std::uint32_t sx = 0, sy = 0;
   if (split > 1) {
-    sx = std::min(split - 1, static_cast<std::uint32_t>((fx - double(ix)) * split));
-    sy = std::min(split - 1, static_cast<std::uint32_t>((fy - double(iy)) * split));
+    sx = std::min(split - 1, std::uint32_t(static_cast<std::int32_t>((fx - double(std::int64_t(ix))) * split)));
+    sy = std::min(split - 1, std::uint32_t(static_cast<std::int32_t>((fy - double(std::int64_t(iy))) * split)));
   }
   leaf = coarse.first_leaf + sy * split + sx;
   leaf_centre = centre(ix, iy, split, sx, sy);
@@ -184,7 +186,7 @@ bool RegionIndex::Impl::locate(Point p, bool build, const Tile*& tile, std::size
 RegionQuery RegionIndex::query(Point p) const {
   const Impl& m = *impl_;
   if (m.segments.empty()) return {kInf, p, 0};
-  impl_->ensure_grid();
+  if (!m.grid_ready.load(std::memory_order_acquire)) impl_->ensure_grid();
   std::uint32_t best = 0;
   const Impl::Tile* tile = nullptr;
   std::size_t leaf = 0;

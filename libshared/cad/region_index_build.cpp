@@ -118,8 +118,7 @@ void RegionIndex::Impl::build_covers(Workspace& w, Tile& t) const {
       const CellWindow& window = w.windows[w.local(x, y)];
       const double by_covers = std::sqrt(double(distinct) / kLeafCovers);
       // The cell's window is pruned at the cell's square already, so that is
-      // what may win there (refining it again was a costly no-op: a list
-      // that keeps over kStuckShare of itself is not quartered).
+      // what may win there.
       const double may_win = double(window.count);
       const double wanted = std::max(by_covers, std::min(may_win / kLeafCandidates, kMaxListSplit));
       // A power of two (the nearer, in ratio), so that leaves' lists come down by quarters.
@@ -159,44 +158,6 @@ void RegionIndex::Impl::build_covers(Workspace& w, Tile& t) const {
   for (std::size_t i = 0; i < leaf_count; ++i) t.leaves[i + 1].covers += t.leaves[i].covers;
 }
 
-/// Adds to `out` (once, by mark) the elements of `window` that may be the
-/// nearest to some point of the square round q of half side `half`: those
-/// within the nearest distance from q plus a diagonal. A square with more
-/// than one is quartered, down to kRefineDepth, so the list comes close to
-/// the elements whose Voronoi regions meet the square.
-void RegionIndex::Impl::refine(Workspace& w, Point q, double half, std::size_t begin, std::size_t end, int depth,
-                               std::vector<std::uint32_t>& out, bool pruned) const {
-  std::vector<std::uint32_t>& scratch = w.scratch;
-  std::vector<double>& far2 = w.far2;
-  // A list pruned by this very test already (the leaf's, from its cell's
-  // by quarters) is taken as it is: the test would keep all of it.
-  std::size_t first = begin, last = end;
-  if (!pruned) {
-    double nearest2 = kInf;
-    if (far2.size() < end) far2.resize(end);
-    for (std::size_t i = begin; i < end; ++i)
-      nearest2 = std::min(nearest2, far2[i] = distance2(kernels[scratch[i]], q));
-    const double reach = (std::sqrt(nearest2) + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
-    first = scratch.size();
-    for (std::size_t i = begin; i < end; ++i)
-      if (far2[i] <= reach * reach) scratch.push_back(scratch[i]);
-    last = scratch.size();
-  }
-  // Stop at one element, at the depth limit, or where quartering prunes
-  // little (many nearly equidistant, as round the centre of a fine circle):
-  // each level costs four times the last.
-  const bool stuck = !pruned && depth > 0 && double(last - first) > kStuckShare * double(end - begin);
-  if (last - first <= 1 || depth == kRefineDepth || stuck || last - first > kRefineLimit) {
-    for (std::size_t i = first; i < last; ++i)
-      if (w.stamp[scratch[i]] != w.mark) w.stamp[scratch[i]] = w.mark, out.push_back(scratch[i]);
-  } else {
-    for (double dy : {-0.5, 0.5})
-      for (double dx : {-0.5, 0.5})
-        refine(w, {q.x + dx * half, q.y + dy * half}, half / 2, first, last, depth + 1, out);
-  }
-  if (!pruned) scratch.resize(first);
-}
-
 /// The lists of the leaves of block [x0, x0 + span)^2 (in leaves) of cell
 /// (x, y) into leaf_lists, each quarter's pruned from the block's.
 void RegionIndex::Impl::build_leaves(Workspace& w, const Tile& t, std::size_t x, std::size_t y, std::uint32_t x0,
@@ -227,13 +188,12 @@ void RegionIndex::Impl::build_leaf(Workspace& w, Tile& t, std::size_t x, std::si
                                    std::uint32_t ly, const std::vector<std::uint32_t>& list) const {
   const Coarse& coarse = t.coarse[w.local(x, y)];
   Leaf& leaf = t.leaves[coarse.first_leaf + ly * coarse.split + lx];
-  const double leaf_size = size / coarse.split;
   const Point c = centre(x, y, coarse.split, lx, ly);
   const CellWindow& window = w.windows[w.local(x, y)];
   const Point middle = centre(x, y, 1, 0, 0);
   // A wide cell's leaves: no list, and a bound on the centre's distance for a start.
   const double from_middle = std::hypot(c.x - middle.x, c.y - middle.y);
-  const std::vector<std::uint32_t> listed = leaf_window(w, window, c, leaf_size / 2, list.data(), list.size());
+  const std::vector<std::uint32_t> listed = leaf_window(w, window, c, list.data(), list.size());
   const std::vector<double>& near = w.near;
   const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaf.nearest = float_above(nearest);

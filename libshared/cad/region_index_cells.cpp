@@ -78,17 +78,13 @@ void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, 
   }
 }
 
-/// The elements of `list` (the list of the square round c of half side
-/// `half`, pruned at that square, in a cell whose window is `window`) that
-/// may be nearest to a point of it, refined by quartering; sorted by
-/// distance from c (left in near[]). Empty for a wide cell.
-std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(Workspace& w, const CellWindow& window, Point c, double half,
+/// A leaf's list (its cell's window pruned at the leaf's square, round c),
+/// sorted by distance from c (left in near[]). Empty for a wide cell.
+std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(Workspace& w, const CellWindow& window, Point c,
                                                           const std::uint32_t* list, std::size_t count) const {
   std::vector<std::uint32_t> listed;
   if (window.wide) return listed;
-  w.scratch.assign(list, list + count);
-  ++w.mark;
-  refine(w, c, half, 0, w.scratch.size(), 0, listed, true);
+  listed.assign(list, list + count);
   std::vector<double>& near = w.near;
   for (std::uint32_t e : listed) near[e] = std::sqrt(distance2(kernels[e], c));
   std::sort(listed.begin(), listed.end(), [&](std::uint32_t a, std::uint32_t b) {
