@@ -58,6 +58,7 @@ void RegionIndex::Impl::build_grid() {
   inv_size = 1 / size;
   tiles_x = (nx + kBlockCells - 1) / kBlockCells, tiles_y = (ny + kBlockCells - 1) / kBlockCells;
   tiles = std::make_unique<std::atomic<Tile*>[]>(tiles_x * tiles_y);
+  tile_once = std::make_unique<std::once_flag[]>(tiles_x * tiles_y);
   for (std::size_t i = 0; i < tiles_x * tiles_y; ++i) tiles[i].store(nullptr, std::memory_order_relaxed);
   build_touches();
 }
@@ -297,25 +298,23 @@ void RegionIndex::Impl::ensure_grid() {
 const RegionIndex::Impl::Tile& RegionIndex::Impl::tile_at(std::size_t tx, std::size_t ty) const {
   std::atomic<Tile*>& slot = tiles[ty * tiles_x + tx];
   if (const Tile* built = slot.load(std::memory_order_acquire)) return *built;
-  std::unique_ptr<Workspace> w;
-  {
-    const std::lock_guard lock(spare_mutex);
-    if (!spare.empty()) w = std::move(spare.back()), spare.pop_back();
-  }
-  if (!w) w = std::make_unique<Workspace>(segments.size());
-  auto tile = std::make_unique<Tile>();
-  w->x0 = tx * kBlockCells, w->y0 = ty * kBlockCells;
-  build_tile(*w, *tile);
-  {
+  std::call_once(tile_once[ty * tiles_x + tx], [&] {
+    std::unique_ptr<Workspace> w;
+    {
+      const std::lock_guard lock(spare_mutex);
+      if (!spare.empty()) w = std::move(spare.back()), spare.pop_back();
+    }
+    if (!w) w = std::make_unique<Workspace>(segments.size());
+    auto tile = std::make_unique<Tile>();
+    w->x0 = tx * kBlockCells, w->y0 = ty * kBlockCells;
+    build_tile(*w, *tile);
+    slot.store(tile.release(), std::memory_order_release);
     const std::lock_guard lock(spare_mutex);
     spare.push_back(std::move(w));
-  }
-  // Two threads may build the same tile at once: the first stored is kept
-  // (the same tile: a tile depends on the boundary alone).
-  Tile* expected = nullptr;
-  if (slot.compare_exchange_strong(expected, tile.get(), std::memory_order_acq_rel, std::memory_order_acquire))
-    return *tile.release();
-  return *expected;
+    // The last tile built: no builder is left to need the touches or a workspace.
+    if (tiles_built.fetch_add(1) + 1 == tiles_x * tiles_y) touches = {}, touch_first = {}, spare.clear();
+  });
+  return *slot.load(std::memory_order_acquire);
 }
 
 void RegionIndex::prepare() const {

@@ -241,9 +241,12 @@ struct RegionIndex::Impl {
     std::uint32_t element;
     double t0, t1;
   };
-  std::vector<Touch> touches;
-  std::vector<std::uint32_t> touch_first;
+  // Released (mutable for that) once the last tile is built.
+  mutable std::vector<Touch> touches;
+  mutable std::vector<std::uint32_t> touch_first;
   std::unique_ptr<std::atomic<Tile*>[]> tiles;  // owned; null until built
+  std::unique_ptr<std::once_flag[]> tile_once;  // one builder a tile; others asking meanwhile wait
+  mutable std::atomic<std::size_t> tiles_built{0};
   std::size_t tiles_x = 0, tiles_y = 0;
   struct CellWindow {  // while building a tile: the elements that may be nearest in a cell (region_index_cells.cpp)
     std::uint32_t first = 0, count = 0;

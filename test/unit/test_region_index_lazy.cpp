@@ -3,8 +3,8 @@
 /// tile by tile where queries land: nearest() before it (the tree) and
 /// after it (built tiles, the tree elsewhere) names the same element at
 /// the same distance as brute force; threads asking at once, in the same
-/// tiles or in others, all get brute force's answers (a tile two of them
-/// build at once is kept once); and an index built whole by prepare()
+/// tiles or in others, all get brute force's answers (a tile asked for by
+/// several at once is built by one, the others waiting); and an index built whole by prepare()
 /// answers as one built lazily, to the bit.
 #include <gtest/gtest.h>
 
