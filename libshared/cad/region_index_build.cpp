@@ -177,16 +177,15 @@ void RegionIndex::Impl::build_leaves(Workspace& w, const Tile& t, std::size_t x,
       const std::uint32_t lx = x0 + dx * half_span, ly = y0 + dy * half_span;
       const Point c{ox + double(x) * size + (lx + half_span / 2.0) * step,
                     oy + double(y) * size + (ly + half_span / 2.0) * step};
-      quarter.clear();
-      if (!w.windows[w.local(x, y)].wide)
-        prune(w, c, half_span * step / 2 * (1 + 1e-9), list.data(), list.size(), quarter);
+      quarter.clear();  // (a wide cell's list is empty: so are its quarters')
+      prune(w, c, half_span * step / 2 * (1 + 1e-9), list.data(), list.size(), quarter);
       build_leaves(w, t, x, y, lx, ly, half_span, quarter);
     }
 }
 
 /// Leaf (lx, ly) of cell (x, y): its candidates, capped, after the last leaf's.
 void RegionIndex::Impl::build_leaf(Workspace& w, Tile& t, std::size_t x, std::size_t y, std::uint32_t lx,
-                                   std::uint32_t ly, const std::vector<std::uint32_t>& list) const {
+                                   std::uint32_t ly, std::vector<std::uint32_t>& listed) const {
   const Coarse& coarse = t.coarse[w.local(x, y)];
   Leaf& leaf = t.leaves[coarse.first_leaf + ly * coarse.split + lx];
   const Point c = centre(x, y, coarse.split, lx, ly);
@@ -194,8 +193,13 @@ void RegionIndex::Impl::build_leaf(Workspace& w, Tile& t, std::size_t x, std::si
   const Point middle = centre(x, y, 1, 0, 0);
   // A wide cell's leaves: no list, and a bound on the centre's distance for a start.
   const double from_middle = std::hypot(c.x - middle.x, c.y - middle.y);
-  const std::vector<std::uint32_t> listed = leaf_window(w, window, c, list.data(), list.size());
-  const std::vector<double>& near = w.near;
+  // The list (its cell's window pruned at the leaf's square; empty in a
+  // wide cell), sorted by distance from the centre.
+  std::vector<double>& near = w.near;
+  for (const std::uint32_t e : listed) near[e] = std::sqrt(distance2(kernels[e], c));
+  std::sort(listed.begin(), listed.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::pair{near[a], a} < std::pair{near[b], b};
+  });
   const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaf.nearest = float_above(nearest);
   leaf.complete = window.wide                      ? 0

@@ -78,21 +78,6 @@ void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, 
   }
 }
 
-/// A leaf's list (its cell's window pruned at the leaf's square, round c),
-/// sorted by distance from c (left in near[]). Empty for a wide cell.
-std::vector<std::uint32_t> RegionIndex::Impl::leaf_window(Workspace& w, const CellWindow& window, Point c,
-                                                          const std::uint32_t* list, std::size_t count) const {
-  std::vector<std::uint32_t> listed;
-  if (window.wide) return listed;
-  listed.assign(list, list + count);
-  std::vector<double>& near = w.near;
-  for (std::uint32_t e : listed) near[e] = std::sqrt(distance2(kernels[e], c));
-  std::sort(listed.begin(), listed.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return std::pair{near[a], a} < std::pair{near[b], b};
-  });
-  return listed;
-}
-
 /// Crossing parity of the segment from `from` to `to` with `elements`
 /// (each counted once): the query's test, with `from` as the reference point.
 bool RegionIndex::Impl::chain_parity(Workspace& w, Point from, Point to,

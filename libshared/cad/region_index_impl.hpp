@@ -29,7 +29,8 @@ constexpr double kLeafCandidates = 6;  // elements that may be nearest in a leaf
 // own square, not again at its quarters): bench_region_query's queries
 // 15 % fewer instructions than with two and one quartering (the random
 // rate 3.5 against 3.1 million a second, the path's 9.3 against 7.3), its
-// whole grid built in about 1.3 times the time; eight saved 9 % more
+// whole grid built in about 1.4 times the time (the 10k parts of
+// bench_region_build's about the same); eight saved 10 % more
 // instructions for 1.6 times again and no faster random queries.
 constexpr double kMaxListSplit = 4;
 constexpr std::size_t kMaxCandidates = 64;               // elements listed per leaf, at most
@@ -308,15 +309,14 @@ struct RegionIndex::Impl {
   /// the square round c of half side `half`; returns c's distance to the nearest of them.
   double prune(Workspace& w, Point c, double half, const std::uint32_t* in, std::size_t count,
                std::vector<std::uint32_t>& out) const;
-  std::vector<std::uint32_t> leaf_window(Workspace& w, const CellWindow& window, Point c, const std::uint32_t* list,
-                                         std::size_t count) const;
   /// The tile's leaves and which elements may touch each.
   void build_covers(Workspace& w, Tile& t) const;
   void build_lists(Workspace& w, Tile& t) const;
   void build_leaves(Workspace& w, const Tile& t, std::size_t x, std::size_t y, std::uint32_t x0, std::uint32_t y0,
                     std::uint32_t span, const std::vector<std::uint32_t>& list) const;
+  /// Leaf (lx, ly) of cell (x, y), from its list (sorted here, in place).
   void build_leaf(Workspace& w, Tile& t, std::size_t x, std::size_t y, std::uint32_t lx, std::uint32_t ly,
-                  const std::vector<std::uint32_t>& list) const;
+                  std::vector<std::uint32_t>& listed) const;
   /// Reference points of the tile's leaves (their lists complete).
   void build_refs(Workspace& w, Tile& t) const;
   /// Each leaf's inside flag: the ray test at the tile's first leaf, then
