@@ -4,13 +4,15 @@
 /// after it (built tiles, the tree elsewhere) names the same element at
 /// the same distance as brute force; threads asking at once, in the same
 /// tiles or in others, all get brute force's answers (a tile asked for by
-/// several at once is built by one, the others waiting); and an index built whole by prepare()
-/// answers as one built lazily, to the bit.
+/// several at once is built by one, the others waiting); and an index built
+/// whole by prepare() and one built tile by tile both give brute force's
+/// element, distance and nearest point, to the bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstddef>
 #include <future>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -99,22 +101,26 @@ TEST(RegionIndexLazyGrid, ThreadsAskingAtOnceGetBruteForcesAnswers) {
   }
 }
 
-TEST(RegionIndexLazyGrid, PreparedWholeAnswersAsBuiltTileByTile) {
+TEST(RegionIndexLazyGrid, PreparedWholeAndBuiltTileByTileBothAnswerAsBruteForce) {
   std::mt19937_64 random(17);
   const LoopSet set = build_loops(random_star_with_hole(random, test_volume(2000, 400)), 1e-9);
   const std::vector<Point> points = random_points(random, test_volume(4000, 500));
   const RegionIndex whole(set.loops), lazy(set.loops);
   whole.prepare();
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const RegionQuery a = whole.query(points[i]), b = lazy.query(points[i]);
-    ASSERT_EQ(a.element, b.element) << "point " << i;
-    ASSERT_EQ(a.distance, b.distance) << "point " << i;
-    ASSERT_EQ(a.nearest.x, b.nearest.x) << "point " << i;
-    ASSERT_EQ(a.nearest.y, b.nearest.y) << "point " << i;
+    const RegionQuery want = brute_force_query(set.loops, points[i]);
+    for (const RegionIndex* index : {&whole, &lazy}) {
+      const RegionQuery got = index->query(points[i]);
+      const char* which = index == &whole ? "prepared, point " : "tile by tile, point ";
+      ASSERT_EQ(got.element, want.element) << which << i;
+      ASSERT_EQ(got.distance, want.distance) << which << i;
+      ASSERT_EQ(got.nearest.x, want.nearest.x) << which << i;
+      ASSERT_EQ(got.nearest.y, want.nearest.y) << which << i;
+    }
   }
-  const RegionQuery answer = brute_force_query(set.loops, points[0]);
-  EXPECT_EQ(whole.query(points[0]).distance, answer.distance);
-  RegionIndex(std::vector<Loop>{}).prepare();  // nothing to build
+  const RegionIndex empty(std::vector<Loop>{});
+  empty.prepare();  // nothing to build
+  EXPECT_EQ(empty.query({1, 2}).distance, std::numeric_limits<double>::infinity());
 }
 
 }  // namespace region_index_lazy_test
