@@ -11,9 +11,14 @@
 ///    the elements whose Voronoi regions meet the leaf once leaves are
 ///    small (rather than pruning a larger leaf's list again at its
 ///    quarters, which cost more to build). The lists come top down (see
-///    region_index_cells.cpp) so the build grows as about n log n; a cell
-///    with too many candidates (deep inside a finely divided outline)
-///    keeps none, and its queries use the tree.
+///    region_index_cells.cpp) so the build grows as about n log n. Each
+///    cell's list, and a leaf's longer than 16, then drops the elements
+///    dominated over its square: farther from each of its points than the
+///    point of the centre's nearest element nearest the centre (the test
+///    asks four corners; see Dominance). A cell with too many candidates
+///    by distance (far from the boundary) takes its list from the tree
+///    less the dominated; one with too many still (deep inside a finely
+///    divided outline) keeps none, and its queries use the tree.
 ///    They are sorted by distance from the centre, the first four kept in
 ///    the leaf's own cache line, and a query stops once the triangle
 ///    inequality rules out the rest. Lists are capped; a query that

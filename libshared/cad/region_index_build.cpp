@@ -121,7 +121,8 @@ void RegionIndex::Impl::build_covers(Workspace& w, Tile& t) const {
       // The cell's window is pruned at the cell's square already, so that is
       // what may win there.
       const double may_win = double(window.count);
-      const double wanted = std::max(by_covers, std::min(may_win / kLeafCandidates, kMaxListSplit));
+      const double wanted =
+          window.sparse ? by_covers : std::max(by_covers, std::min(may_win / kLeafCandidates, kMaxListSplit));
       // A power of two (the nearer, in ratio), so that leaves' lists come down by quarters.
       const double clamped = std::clamp(std::ceil(wanted), 1.0, 32.0);
       std::uint32_t split = 1;
@@ -200,6 +201,8 @@ void RegionIndex::Impl::build_leaf(Workspace& w, Tile& t, std::size_t x, std::si
   std::sort(listed.begin(), listed.end(), [&](std::uint32_t a, std::uint32_t b) {
     return std::pair{near[a], a} < std::pair{near[b], b};
   });
+  if (listed.size() > kLeafDominance && !window.sparse)
+    drop_dominated(listed, 1, c, size / coarse.split / 2, {near[listed[0]], listed[0]});
   const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaf.nearest = float_above(nearest);
   leaf.complete = window.wide                      ? 0

@@ -7,11 +7,14 @@
 /// <= d(p) + sqrt(2) h <= d(c) + 2 sqrt(2) h). Applied to a block of cells
 /// with the box tree, then to its quarters with the block's list only (the
 /// nearest to a quarter's centre is in it), down to the cells, each element
-/// is examined a few times per level instead of once per cell. A block
-/// whose window holds more than kWideWindow elements (deep inside a finely
-/// divided outline, where many are nearly equidistant) is asked again
-/// quarter by quarter; a cell that still has that many is wide: its
-/// leaves keep no list and their queries use the tree.
+/// is examined a few times per level instead of once per cell; each
+/// cell's window then drops the elements dominated over the cell. A block
+/// whose window holds more than kWideWindow elements (far from the
+/// boundary, or deep inside a finely divided outline, where many are
+/// nearly equidistant) is asked again quarter by quarter; a cell that
+/// still has that many asks the tree for those not dominated over it, and
+/// past kUndominatedWindow of them (or kUndominatedVisits of the tree's
+/// nodes) is wide: its leaves keep no list and their queries use the tree.
 #include <algorithm>
 #include <cmath>
 
@@ -19,27 +22,34 @@
 
 namespace tk::cad {
 
-double RegionIndex::Impl::prune(Workspace& w, Point c, double half, const std::uint32_t* in, std::size_t count,
-                                std::vector<std::uint32_t>& out) const {
+RegionIndex::Impl::Nearest RegionIndex::Impl::prune(Workspace& w, Point c, double half, const std::uint32_t* in,
+                                                    std::size_t count, std::vector<std::uint32_t>& out) const {
   std::vector<double>& far2 = w.far2;
   if (far2.size() < count) far2.resize(count);
   double nearest2 = kInf;
-  for (std::size_t i = 0; i < count; ++i) nearest2 = std::min(nearest2, far2[i] = distance2(kernels[in[i]], c));
+  std::uint32_t nearest_element = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    far2[i] = distance2(kernels[in[i]], c);
+    if (nearer(far2[i], in[i], nearest2, nearest_element)) nearest2 = far2[i], nearest_element = in[i];
+  }
   const double nearest = std::sqrt(nearest2);
   const double reach = (nearest + 2 * std::sqrt(2.0) * half) * (1 + 1e-9);
   for (std::size_t i = 0; i < count; ++i)
     if (far2[i] <= reach * reach) out.push_back(in[i]);
-  return nearest;
+  return {nearest, nearest_element};
 }
 
 /// Cells [x0, x0 + span) x [y0, y0 + span) from `list`, their block's window.
 void RegionIndex::Impl::split_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span,
-                                    std::vector<std::uint32_t>& list, double nearest) const {
+                                    std::vector<std::uint32_t>& list, Nearest nearest) const {
   if (span == 1) {
+    // Less those that cannot win anywhere in the cell: cheap once a cell,
+    // and it spares every leaf's list and the leaves themselves.
+    if (list.size() > 1) drop_dominated(list, 0, cell_centre(x0, y0), size / 2, nearest);
     CellWindow& window = w.windows[w.local(x0, y0)];
     window.first = static_cast<std::uint32_t>(w.window_elements.size());
     window.count = static_cast<std::uint32_t>(list.size());
-    window.nearest = nearest;
+    window.nearest = nearest.distance;
     w.window_elements.insert(w.window_elements.end(), list.begin(), list.end());
     return;
   }
@@ -51,8 +61,8 @@ void RegionIndex::Impl::split_block(Workspace& w, std::size_t x0, std::size_t y0
       if (x >= nx || y >= ny) continue;
       quarter.clear();
       const Point c{ox + (double(x) + double(half_span) / 2) * size, oy + (double(y) + double(half_span) / 2) * size};
-      const double d = prune(w, c, double(half_span) * size / 2, list.data(), list.size(), quarter);
-      split_block(w, x, y, half_span, quarter, d);
+      split_block(w, x, y, half_span, quarter,
+                  prune(w, c, double(half_span) * size / 2, list.data(), list.size(), quarter));
     }
 }
 
@@ -67,13 +77,25 @@ void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, 
   const double reach = (nearest + std::sqrt(2.0) * double(span) * size) * (1 + 1e-9);
   std::vector<std::uint32_t> list;
   if (tree_within(c, reach, list, kWideWindow)) {
-    split_block(w, x0, y0, span, list, nearest);
-  } else if (span > 1) {
+    split_block(w, x0, y0, span, list, {nearest, best});
+    return;
+  }
+  if (span > 1) {
     const std::size_t half_span = span / 2;
     for (std::size_t dy = 0; dy < 2; ++dy)
       for (std::size_t dx = 0; dx < 2; ++dx) ask_block(w, x0 + dx * half_span, y0 + dy * half_span, half_span);
+    return;
+  }
+  // A cell with too many near enough (far from the boundary, or deep inside
+  // a finely divided outline): the tree again, less the elements dominated over the cell.
+  CellWindow& window = w.windows[w.local(x0, y0)];
+  list.clear();
+  if (tree_undominated(c, reach, dominance(c, size / 2, {nearest, best}), list, kUndominatedWindow)) {
+    window.first = static_cast<std::uint32_t>(w.window_elements.size());
+    window.count = static_cast<std::uint32_t>(list.size());
+    window.nearest = nearest, window.sparse = true;
+    w.window_elements.insert(w.window_elements.end(), list.begin(), list.end());
   } else {
-    CellWindow& window = w.windows[w.local(x0, y0)];
     window.wide = true, window.nearest = nearest;
   }
 }

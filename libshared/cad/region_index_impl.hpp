@@ -35,7 +35,15 @@ constexpr double kLeafCandidates = 6;  // elements that may be nearest in a leaf
 constexpr double kMaxListSplit = 4;
 constexpr std::size_t kMaxCandidates = 64;               // elements listed per leaf, at most
 constexpr std::size_t kBlockCells = 8;                   // side of the blocks first asked of the tree, in cells
-constexpr std::size_t kWideWindow = 4 * kMaxCandidates;  // a cell with a longer window keeps no lists
+constexpr std::size_t kWideWindow = 4 * kMaxCandidates;  // a longer window is asked again less the dominated
+// A cell whose window, less the elements dominated over it, is still
+// longer than this keeps no lists (nor when the tree's search for them
+// visits more nodes than kUndominatedVisits): its queries use the tree.
+constexpr std::size_t kUndominatedWindow = kMaxCandidates;
+constexpr std::size_t kUndominatedVisits = 200;
+// A leaf's list longer than this is pruned again by dominance at the leaf
+// (shorter ones are cheaper scanned by a query than pruned).
+constexpr std::size_t kLeafDominance = 16;
 
 /// An element prepared for queries. Arcs live in their chord frame as in
 /// segment_geometry.cpp: local u along the chord from its midpoint, v
@@ -179,6 +187,44 @@ inline bool nearer(double d2, std::uint32_t e, double best2, std::uint32_t best)
 /// the tie rule.
 inline bool cannot_win(double lower, double best2) { return lower > 0 && lower * lower > best2; }
 
+struct Square {  // a leaf's or a block's, as a box that is all its points
+  double x0, y0, x1, y1;
+};
+
+/// Whether an element (or every element within a box) is farther from each
+/// point of a square than q is, by more than a margin: then, q being a
+/// point of another element, it is nearest to none of them, and a list
+/// for the square can leave it out.
+///
+/// The corners settle it. For any set E (a segment, an arc, a box),
+/// G(p) = (|p - q| + m)^2 - d(p, E)^2 is the largest over the points x of
+/// E of (|p - q| + m)^2 - |p - x|^2, each of which is convex in p
+/// (|p - q|^2 - |p - x|^2 is linear, 2m|p - q| convex): so G is convex,
+/// and below zero over the square as soon as it is at the four corners.
+class Dominance {
+ public:
+  Dominance(const Square& s, Point q, double margin) : corner_{{s.x0, s.y0}, {s.x1, s.y0}, {s.x0, s.y1}, {s.x1, s.y1}} {
+    for (int i = 0; i < 4; ++i) {
+      const double dx = corner_[i].x - q.x, dy = corner_[i].y - q.y, beyond = std::sqrt(dx * dx + dy * dy) + margin;
+      beyond2_[i] = beyond * beyond;
+    }
+  }
+  bool dominated(const Kernel& k) const {
+    for (int i = 0; i < 4; ++i)
+      if (!(distance2(k, corner_[i]) > beyond2_[i])) return false;
+    return true;
+  }
+  bool dominated(const Box& b) const {
+    for (int i = 0; i < 4; ++i)
+      if (!(box_distance2(b, corner_[i]) > beyond2_[i])) return false;
+    return true;
+  }
+
+ private:
+  Point corner_[4];
+  double beyond2_[4];  // (|corner - q| + margin)^2, which the squared distance must pass
+};
+
 inline Box merge(const Box& a, const Box& b) {
   return {std::min(a.min_x, b.min_x), std::min(a.min_y, b.min_y), std::max(a.max_x, b.max_x),
           std::max(a.max_y, b.max_y)};
@@ -253,6 +299,9 @@ struct RegionIndex::Impl {
     std::uint32_t first = 0, count = 0;
     double nearest = 0;  // the cell centre's distance to the boundary
     bool wide = false;   // too many: the cell's leaves keep no list
+    // Far from the boundary: the window is what the tree found undominated
+    // over the cell, and the cell is split only for its covers.
+    bool sparse = false;
   };
   /// One building thread's scratch: a mark per element, distances from a
   /// centre, a cell's leaves' lists, and the tile being built (origin x0,
@@ -298,17 +347,31 @@ struct RegionIndex::Impl {
   bool tree_within(Point p, double radius, std::vector<std::uint32_t>& out, std::size_t cap = SIZE_MAX) const;
   bool tree_ray_parity(Point p) const;
 
+  struct Nearest {  // an element nearest to a point, and how near
+    double distance;
+    std::uint32_t element;
+  };
+  /// tree_within(c, reach) less the elements the test finds dominated;
+  /// false past `cap` of them or kUndominatedVisits nodes.
+  bool tree_undominated(Point c, double reach, const Dominance& test, std::vector<std::uint32_t>& out,
+                        std::size_t cap) const;
+  /// The test over the square round c of half side `half`, by the point
+  /// of `nearest` (c's nearest element) nearest to c.
+  Dominance dominance(Point c, double half, Nearest nearest) const;
+
   /// Tile (tx, ty), built now if no thread has built it yet.
   const Tile& tile_at(std::size_t tx, std::size_t ty) const;
   void build_tile(Workspace& w, Tile& t) const;
   /// The windows of block [x0, x0 + span)^2 of cells (in w's tile), from the tree.
   void ask_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span) const;
   void split_block(Workspace& w, std::size_t x0, std::size_t y0, std::size_t span, std::vector<std::uint32_t>& list,
-                   double nearest) const;
+                   Nearest nearest) const;
   /// Appends to `out` the elements of `in` that may be nearest to a point of
-  /// the square round c of half side `half`; returns c's distance to the nearest of them.
-  double prune(Workspace& w, Point c, double half, const std::uint32_t* in, std::size_t count,
-               std::vector<std::uint32_t>& out) const;
+  /// the square round c of half side `half`; returns the nearest of them to c.
+  Nearest prune(Workspace& w, Point c, double half, const std::uint32_t* in, std::size_t count,
+                std::vector<std::uint32_t>& out) const;
+  /// Drops from list[from, end) the elements dominance(c, half, nearest) finds dominated.
+  void drop_dominated(std::vector<std::uint32_t>& list, std::size_t from, Point c, double half, Nearest nearest) const;
   /// The tile's leaves and which elements may touch each.
   void build_covers(Workspace& w, Tile& t) const;
   void build_lists(Workspace& w, Tile& t) const;
@@ -329,6 +392,9 @@ struct RegionIndex::Impl {
   /// The tile and leaf p falls in and its centre; false outside the grid
   /// (or without one), or in a tile not built unless `build`.
   bool locate(Point p, bool build, const Tile*& tile, std::size_t& leaf, Point& leaf_centre) const;
+  Point cell_centre(std::size_t ix, std::size_t iy) const {
+    return {ox + (double(ix) + 0.5) * size, oy + (double(iy) + 0.5) * size};
+  }
   /// Centre of leaf (x, y) of cell (ix, iy), the same point for building and querying.
   Point centre(std::size_t ix, std::size_t iy, std::uint32_t split, std::uint32_t x, std::uint32_t y) const {
     // split is a power of two up to 32: times its inverse is the same as over it, to the bit.
