@@ -73,16 +73,18 @@ void RegionIndex::Impl::tree_nearest(Point p, double& best2, std::uint32_t& best
   }
 }
 
-bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::uint32_t>& out, std::size_t cap) const {
+bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::uint32_t>& out, std::size_t cap,
+                                    const Dominance* less, std::size_t visits) const {
   const double r2 = radius * radius;
   std::uint32_t stack[128];
   std::size_t top = 0;
   stack[top++] = 0;
   while (top > 0) {
+    if (visits-- == 0) return false;
     const std::uint32_t index = stack[--top];
     const Node& node = nodes[index];
-    if (box_distance2(node.box, p) > r2) continue;
-    if (box_far2(node.box, p) <= r2) {
+    if (box_distance2(node.box, p) > r2 || (less && less->dominated(node.box))) continue;
+    if (!less && box_far2(node.box, p) <= r2) {
       // Every element of a box within the radius is: past the cap, stop
       // (a wide cell's window fails fast); else take them all without a
       // distance each (a subtree's elements are a run of `order`, starting
@@ -101,7 +103,8 @@ bool RegionIndex::Impl::tree_within(Point p, double radius, std::vector<std::uin
       continue;
     }
     for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-      if (distance2(kernels[order[i]], p) <= r2) out.push_back(order[i]);
+      const std::uint32_t e = order[i];
+      if (distance2(kernels[e], p) <= r2 && !(less && less->dominated(kernels[e]))) out.push_back(e);
     }
     if (out.size() > cap) return false;
   }

@@ -9,6 +9,17 @@
 #include "io/error.hpp"
 
 namespace tk::cad {
+namespace {
+
+/// The first and last of n cells of side `step` from `origin` that [lo, hi] meets (clamped to the row).
+std::pair<std::size_t, std::size_t> cells_spanned(double lo, double hi, double origin, double step, std::size_t n) {
+  const auto at = [&](double x) {
+    return std::size_t(std::clamp(std::floor((x - origin) / step), 0.0, double(n - 1)));
+  };
+  return {at(lo), at(hi)};
+}
+
+}  // namespace
 
 std::uint32_t RegionIndex::Impl::build_node(std::uint32_t begin, std::uint32_t end) {
   const auto index = static_cast<std::uint32_t>(nodes.size());
@@ -69,8 +80,7 @@ void RegionIndex::Impl::build_grid() {
 void RegionIndex::Impl::build_touches() {
   const double pad = 1e-6 * size;
   const auto span = [&](double lo, double hi, double origin, std::size_t n) {
-    const auto at = [&](double x) { return std::clamp(std::floor((x - origin) / size), 0.0, double(n - 1)); };
-    return std::pair{std::size_t(at(lo - pad)), std::size_t(at(hi + pad))};
+    return cells_spanned(lo - pad, hi + pad, origin, size, n);
   };
   struct Mark {
     std::uint32_t cell;
@@ -103,8 +113,7 @@ void RegionIndex::Impl::build_touches() {
 void RegionIndex::Impl::build_covers(Workspace& w, Tile& t) const {
   const double pad = 1e-6 * size;
   const auto span = [&](double lo, double hi, double origin, double step, std::size_t n) {
-    const auto at = [&](double x) { return std::clamp(std::floor((x - origin) / step), 0.0, double(n - 1)); };
-    return std::pair{std::size_t(at(lo - pad)), std::size_t(at(hi + pad))};
+    return cells_spanned(lo - pad, hi + pad, origin, step, n);
   };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (leaf, element)
   std::uint32_t leaf_count = 0;
@@ -201,8 +210,9 @@ void RegionIndex::Impl::build_leaf(Workspace& w, Tile& t, std::size_t x, std::si
   std::sort(listed.begin(), listed.end(), [&](std::uint32_t a, std::uint32_t b) {
     return std::pair{near[a], a} < std::pair{near[b], b};
   });
-  if (listed.size() > kLeafDominance && !window.sparse)
-    drop_dominated(listed, 1, c, size / coarse.split / 2, {near[listed[0]], listed[0]});
+  // (A leaf that is its whole cell has its cell's window, pruned so already.)
+  if (listed.size() > kLeafDominance && coarse.split > 1)
+    drop_dominated(listed, c, size / coarse.split / 2, {near[listed[0]], listed[0]});
   const double nearest = listed.empty() ? (window.nearest + from_middle) * (1 + 1e-12) : near[listed[0]];
   leaf.nearest = float_above(nearest);
   leaf.complete = window.wide                      ? 0

@@ -45,12 +45,8 @@ void RegionIndex::Impl::split_block(Workspace& w, std::size_t x0, std::size_t y0
   if (span == 1) {
     // Less those that cannot win anywhere in the cell: cheap once a cell,
     // and it spares every leaf's list and the leaves themselves.
-    if (list.size() > 1) drop_dominated(list, 0, cell_centre(x0, y0), size / 2, nearest);
-    CellWindow& window = w.windows[w.local(x0, y0)];
-    window.first = static_cast<std::uint32_t>(w.window_elements.size());
-    window.count = static_cast<std::uint32_t>(list.size());
-    window.nearest = nearest.distance;
-    w.window_elements.insert(w.window_elements.end(), list.begin(), list.end());
+    if (list.size() > 1) drop_dominated(list, centre(x0, y0, 1, 0, 0), size / 2, nearest);
+    store_window(w, x0, y0, list, nearest.distance, false);
     return;
   }
   const std::size_t half_span = span / 2;
@@ -88,16 +84,23 @@ void RegionIndex::Impl::ask_block(Workspace& w, std::size_t x0, std::size_t y0, 
   }
   // A cell with too many near enough (far from the boundary, or deep inside
   // a finely divided outline): the tree again, less the elements dominated over the cell.
-  CellWindow& window = w.windows[w.local(x0, y0)];
   list.clear();
-  if (tree_undominated(c, reach, dominance(c, size / 2, {nearest, best}), list, kUndominatedWindow)) {
-    window.first = static_cast<std::uint32_t>(w.window_elements.size());
-    window.count = static_cast<std::uint32_t>(list.size());
-    window.nearest = nearest, window.sparse = true;
-    w.window_elements.insert(w.window_elements.end(), list.begin(), list.end());
+  const Dominance less = dominance(c, size / 2, {nearest, best});
+  if (tree_within(c, reach, list, kUndominatedWindow, &less, kUndominatedVisits)) {
+    store_window(w, x0, y0, list, nearest, true);
   } else {
+    CellWindow& window = w.windows[w.local(x0, y0)];
     window.wide = true, window.nearest = nearest;
   }
+}
+
+void RegionIndex::Impl::store_window(Workspace& w, std::size_t x, std::size_t y, const std::vector<std::uint32_t>& list,
+                                     double nearest, bool sparse) const {
+  CellWindow& window = w.windows[w.local(x, y)];
+  window.first = static_cast<std::uint32_t>(w.window_elements.size());
+  window.count = static_cast<std::uint32_t>(list.size());
+  window.nearest = nearest, window.sparse = sparse;
+  w.window_elements.insert(w.window_elements.end(), list.begin(), list.end());
 }
 
 /// Crossing parity of the segment from `from` to `to` with `elements`

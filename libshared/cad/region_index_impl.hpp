@@ -342,19 +342,17 @@ struct RegionIndex::Impl {
 
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);
   void tree_nearest(Point p, double& best2, std::uint32_t& best) const;
-  /// The elements within `radius` of p (and any whose padded box is);
-  /// false (out unfinished) as soon as there are more than `cap`.
-  bool tree_within(Point p, double radius, std::vector<std::uint32_t>& out, std::size_t cap = SIZE_MAX) const;
+  /// The elements within `radius` of p (and any whose padded box is),
+  /// less those `less` finds dominated (whole boxes at once); false (out
+  /// unfinished) as soon as there are more than `cap`, or past `visits` of the tree's nodes.
+  bool tree_within(Point p, double radius, std::vector<std::uint32_t>& out, std::size_t cap = SIZE_MAX,
+                   const Dominance* less = nullptr, std::size_t visits = SIZE_MAX) const;
   bool tree_ray_parity(Point p) const;
 
   struct Nearest {  // an element nearest to a point, and how near
     double distance;
     std::uint32_t element;
   };
-  /// tree_within(c, reach) less the elements the test finds dominated;
-  /// false past `cap` of them or kUndominatedVisits nodes.
-  bool tree_undominated(Point c, double reach, const Dominance& test, std::vector<std::uint32_t>& out,
-                        std::size_t cap) const;
   /// The test over the square round c of half side `half`, by the point
   /// of `nearest` (c's nearest element) nearest to c.
   Dominance dominance(Point c, double half, Nearest nearest) const;
@@ -370,8 +368,11 @@ struct RegionIndex::Impl {
   /// the square round c of half side `half`; returns the nearest of them to c.
   Nearest prune(Workspace& w, Point c, double half, const std::uint32_t* in, std::size_t count,
                 std::vector<std::uint32_t>& out) const;
-  /// Drops from list[from, end) the elements dominance(c, half, nearest) finds dominated.
-  void drop_dominated(std::vector<std::uint32_t>& list, std::size_t from, Point c, double half, Nearest nearest) const;
+  /// Drops from `list` the elements dominance(c, half, nearest) finds dominated.
+  void drop_dominated(std::vector<std::uint32_t>& list, Point c, double half, Nearest nearest) const;
+  /// Cell (x, y)'s window: `list`, c's nearest distance `nearest`.
+  void store_window(Workspace& w, std::size_t x, std::size_t y, const std::vector<std::uint32_t>& list, double nearest,
+                    bool sparse) const;
   /// The tile's leaves and which elements may touch each.
   void build_covers(Workspace& w, Tile& t) const;
   void build_lists(Workspace& w, Tile& t) const;
@@ -392,9 +393,6 @@ struct RegionIndex::Impl {
   /// The tile and leaf p falls in and its centre; false outside the grid
   /// (or without one), or in a tile not built unless `build`.
   bool locate(Point p, bool build, const Tile*& tile, std::size_t& leaf, Point& leaf_centre) const;
-  Point cell_centre(std::size_t ix, std::size_t iy) const {
-    return {ox + (double(ix) + 0.5) * size, oy + (double(iy) + 0.5) * size};
-  }
   /// Centre of leaf (x, y) of cell (ix, iy), the same point for building and querying.
   Point centre(std::size_t ix, std::size_t iy, std::uint32_t split, std::uint32_t x, std::uint32_t y) const {
     // split is a power of two up to 32: times its inverse is the same as over it, to the bit.
