@@ -297,6 +297,14 @@ void find_t_junctions(const std::vector<Segment>& kept, const std::vector<bool>&
   }
   sort_cells(grid);
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  // Most segments of a cell lie farther than the tolerance from p even by
+  // their boxes: they are passed over without the distance (std::hypot's
+  // cost was most of this function's). The margin covers the rounding of
+  // the box and of the distance, so only segments the distance would pass
+  // over are.
+  std::vector<Box> boxes(kept.size());
+  for (std::size_t k = 0; k < kept.size(); ++k)
+    if (used[k]) boxes[k] = bounding_box(kept[k]);
   std::vector<std::size_t> first_end(cluster_point.size(), SIZE_MAX);
   for (std::size_t e = 0; e < cluster.size(); ++e)
     if (used[e / 2] && first_end[cluster[e]] == SIZE_MAX) first_end[cluster[e]] = e;
@@ -304,11 +312,14 @@ void find_t_junctions(const std::vector<Segment>& kept, const std::vector<bool>&
     if (first_end[c] == SIZE_MAX) continue;
     const Point p = cluster_point[c];
     const CellKey key = cell_of(p, cell);
+    const double reach = tolerance * (1 + 1e-9) + 1e-12 * (std::abs(p.x) + std::abs(p.y));
     auto it = std::lower_bound(grid.begin(), grid.end(), CellEntry{key, 0});
     for (; it != grid.end() && std::get<0>(*it) == key; ++it) {
       const std::size_t k = std::get<1>(*it);
       const Segment& s = kept[k];
       if (cluster[2 * k] == c || cluster[2 * k + 1] == c) continue;
+      const Box& b = boxes[k];
+      if (p.x < b.min_x - reach || p.x > b.max_x + reach || p.y < b.min_y - reach || p.y > b.max_y + reach) continue;
       if (distance(nearest_point(s, p), p) > tolerance || distance(s.start, p) <= tolerance ||
           distance(s.end, p) <= tolerance)
         continue;

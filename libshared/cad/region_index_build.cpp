@@ -50,6 +50,38 @@ std::uint32_t RegionIndex::Impl::build_node(std::uint32_t begin, std::uint32_t e
   return index;
 }
 
+std::uint32_t RegionIndex::Impl::build_wide(std::uint32_t node) {
+  std::uint32_t below[4];
+  std::size_t n = 0;
+  const auto take = [&](std::uint32_t b) {
+    if (nodes[b].count > 0) {
+      below[n++] = b;
+    } else {
+      below[n++] = b + 1, below[n++] = nodes[b].right;
+    }
+  };
+  if (nodes[node].count > 0) {  // a leaf root
+    below[n++] = node;
+  } else {
+    take(node + 1), take(nodes[node].right);
+  }
+  const auto index = static_cast<std::uint32_t>(wide.size());
+  wide.emplace_back();
+  for (std::size_t k = 0; k < 4; ++k) {
+    Box box{kInf, kInf, -kInf, -kInf};
+    std::uint32_t child = kNoChild, count = 0;
+    if (k < n) {
+      const Node& b = nodes[below[k]];
+      box = b.box, count = b.count;
+      child = b.count > 0 ? kLeafChild | b.first : build_wide(below[k]);
+    }
+    Wide& w = wide[index];  // after the recursion, which may have moved it
+    w.min_x[k] = box.min_x, w.min_y[k] = box.min_y, w.max_x[k] = box.max_x, w.max_y[k] = box.max_y;
+    w.child[k] = child, w.count[k] = count;
+  }
+  return index;
+}
+
 void RegionIndex::Impl::build_grid() {
   Box all = boxes.front();
   for (const Box& b : boxes) all = merge(all, b);
@@ -301,6 +333,10 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops, Layout layout) : impl_(
   for (std::uint32_t i = 0; i < m.order.size(); ++i) m.order[i] = i;
   m.nodes.reserve(m.segments.size());
   m.build_node(0, static_cast<std::uint32_t>(m.order.size()));
+  m.wide.reserve(m.nodes.size() / 3 + 1);
+  m.build_wide(0);
+  m.ordered_kernels.reserve(m.order.size());
+  for (const std::uint32_t e : m.order) m.ordered_kernels.push_back(m.kernels[e]);
   m.grid_wanted = layout == Layout::grid;  // laid out by the first query() (Impl::ensure_grid)
 }
 

@@ -272,6 +272,17 @@ struct RegionIndex::Impl {
   std::vector<Box> boxes;
   std::vector<Node> nodes;
   std::vector<std::uint32_t> order;
+  /// The box tree again, two of its levels to a node, for the nearest-
+  /// element search: half the steps, four boxes at a time (tree_nearest
+  /// took 1.5 to 2 times as long over the binary nodes).
+  static constexpr std::uint32_t kLeafChild = 1u << 31, kNoChild = UINT32_MAX;
+  struct Wide {
+    double min_x[4], min_y[4], max_x[4], max_y[4];  // the children's boxes
+    std::uint32_t child[4];  // a Wide node, or kLeafChild | the leaf's first in `order`, or kNoChild
+    std::uint32_t count[4];  // a leaf's elements
+  };
+  std::vector<Wide> wide;
+  std::vector<Kernel> ordered_kernels;  // kernels[order[i]] at i: a leaf's elements side by side
 
   /// The grid's cells, kBlockCells a side to a tile, each tile built whole
   /// by the first query that lands in it: a check along a tool path builds
@@ -341,6 +352,8 @@ struct RegionIndex::Impl {
   }
 
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);
+  /// The Wide node over binary node `node`: its grandchildren (or children that are leaves).
+  std::uint32_t build_wide(std::uint32_t node);
   void tree_nearest(Point p, double& best2, std::uint32_t& best) const;
   /// The elements within `radius` of p (and any whose padded box is),
   /// less those `less` finds dominated (whole boxes at once); false (out

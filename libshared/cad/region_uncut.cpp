@@ -58,6 +58,10 @@ class ExactGaps {
     return q.distance - radius_;
   }
   std::size_t last_element() const { return hint_; }
+  /// Whether a contour's element is a line (not an arc).
+  bool straight(std::size_t element) const {
+    return contour_ && element < contour_->elements().size() && !is_arc(contour_->elements()[element]);
+  }
   /// The contour's point nearest to the last point asked.
   Point last_nearest() const { return nearest_; }
   /// The contour's elements that can be nearest within `spread` of
@@ -81,50 +85,101 @@ class ExactGaps {
   Point nearest_;
 };
 
-/// One element's samples: each gap exact or, where `exact` is 0, an upper
-/// bound only (the sample's side of the threshold is certain either way).
+/// One element's samples, each point computed when asked (most are
+/// settled in runs, by bounds, without one): each gap exact or, where
+/// `exact` is 0, not kept (the sample's side of the threshold is certain).
 struct Samples {
-  std::vector<Point> points;
+  const Segment* segment = nullptr;
+  std::size_t last = 0;  // the samples are 0 ... last, at t = i / last
   std::vector<double> gaps;
   std::vector<unsigned char> exact, uncut;
   std::vector<std::size_t> elements;  // the contour's nearest, where exact
   std::vector<Point> nearest;         // and its nearest point
-  void reset(std::size_t count) {
+  void reset(const Segment& s, std::size_t last_sample) {
+    segment = &s, last = last_sample;
+    const std::size_t count = last + 1;
     elements.resize(count);
     nearest.resize(count);
-    points.resize(count);
     gaps.assign(count, 0);
     exact.assign(count, 0);
     uncut.assign(count, 0);
   }
+  Point point(std::size_t i) const { return point_at(*segment, static_cast<double>(i) / last); }
 };
 
+/// The last sample after `from` (up to `last`) whose distance along the
+/// element from it, at most (j - from) * spacing, is within `room` (below
+/// it when `strict`); `from` when there is none.
+std::size_t last_within(std::size_t from, double room, double spacing, bool strict, std::size_t last) {
+  const auto within = [&](std::size_t j) {
+    const double along = static_cast<double>(j - from) * spacing;
+    return strict ? along < room : along <= room;
+  };
+  if (!(room > 0)) return from;
+  const double steps = room / spacing;  // infinite for a zero spacing: all the samples are one point
+  std::size_t j = steps < static_cast<double>(last - from) ? from + static_cast<std::size_t>(steps) : last;
+  while (j > from && !within(j)) --j;
+  return j;
+}
+
 /// Sorts every sample to its side of the threshold, asking the exact gap
-/// only where the bounds leave it open.
-void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, UncutQueryCounts& counts) {
+/// only where the bounds leave it open. Runs of samples are settled at
+/// once: by the Lipschitz bound from the last exact sample (a sample lies
+/// at most `spacing` per step from it along the element), and where the
+/// distance to the last answer's element puts a sample within reach, on a
+/// `straight` element along a straight one of the contour by convexity
+/// (the distance from a point moving along a line to a segment is convex,
+/// so it stays below the threshold between two samples that are).
+void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, double spacing, bool straight,
+              UncutQueryCounts& counts) {
+  const auto settle = [&](std::size_t from, std::size_t to, bool uncut) {
+    std::fill(at.uncut.begin() + static_cast<std::ptrdiff_t>(from),
+              at.uncut.begin() + static_cast<std::ptrdiff_t>(to) + 1, uncut);
+  };
   // The last answer's element bounds the gap from above; tried only after
   // a sample within reach (along material left uncut it fails every time).
   bool last_within_reach = true;
   std::size_t anchor = SIZE_MAX;  // the last sample whose gap is exact
-  for (std::size_t i = 0; i < at.points.size(); ++i) {
-    const Point p = at.points[i];
+  for (std::size_t i = 0; i <= at.last;) {
     if (at.exact[i]) {  // known already (the element before ended here)
       last_within_reach = !at.uncut[i];
-      anchor = i;
+      anchor = i++;
       continue;
     }
     if (anchor != SIZE_MAX) {
-      const double step = apart_by(p, at.points[anchor]);
-      const double upper = at.gaps[anchor] + step + slack;
-      if (at.gaps[anchor] - step - slack > threshold || upper <= threshold) {
-        at.gaps[i] = upper;
-        at.uncut[i] = upper > threshold;
+      const double g = at.gaps[anchor];
+      const bool above =
+          g > threshold;  // uncut while g - along - slack > threshold; cut while g + along + slack <= threshold
+      const std::size_t reach =
+          last_within(anchor, above ? g - threshold - slack : threshold - g - slack, spacing, above, at.last);
+      if (reach >= i) {
+        settle(i, reach, above);
+        i = reach + 1;
         continue;
       }
     }
+    const Point p = at.point(i);
+    const std::size_t element = gaps.last_element();
     double bound = 0;
-    if (last_within_reach && gaps.gap_to(gaps.last_element(), p, bound) && bound + slack <= threshold) {
-      at.gaps[i] = bound + slack;
+    if (last_within_reach && gaps.gap_to(element, p, bound) && bound + slack <= threshold) {
+      std::size_t reach = last_within(i, threshold - bound - slack, spacing, false, at.last);
+      const auto cut_at = [&](std::size_t j) {
+        double b = 0;
+        return gaps.gap_to(element, at.point(j), b) && b + slack <= threshold;
+      };
+      if (straight && gaps.straight(element) && reach < at.last) {
+        std::size_t beyond = at.last;  // cut_at(reach) holds; beyond: the last, or one where it fails
+        if (cut_at(beyond)) {
+          reach = beyond;
+        } else {
+          while (beyond - reach > 1) {
+            const std::size_t mid = reach + (beyond - reach) / 2;
+            (cut_at(mid) ? reach : beyond) = mid;
+          }
+        }
+      }
+      settle(i, reach, false);
+      i = reach + 1;
       continue;
     }
     at.gaps[i] = gaps.at(p, counts.sampling);
@@ -133,7 +188,7 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, Uncu
     at.nearest[i] = gaps.last_nearest();
     at.uncut[i] = at.gaps[i] > threshold;
     last_within_reach = !at.uncut[i];
-    anchor = i;
+    anchor = i++;
   }
 }
 
@@ -152,7 +207,7 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, Uncu
 std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, ExactGaps& gaps, double spacing,
                           double radius, bool straight, double slack, UncutQueryCounts& counts) {
   const auto ask = [&](std::size_t i) {
-    at.gaps[i] = gaps.at(at.points[i], counts.deepest);
+    at.gaps[i] = gaps.at(at.point(i), counts.deepest);
     at.exact[i] = 1;
     at.elements[i] = gaps.last_element();
     at.nearest[i] = gaps.last_nearest();
@@ -171,7 +226,7 @@ std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, Exac
     if (straight)  // the samples between are no farther from the contour than from l's or r's nearest point
       for (const std::size_t end : {l, r}) {
         const Point a = at.nearest[end];
-        most = std::min(most, std::max(apart_by(at.points[l + 1], a), apart_by(at.points[r - 1], a)) - radius);
+        most = std::min(most, std::max(apart_by(at.point(l + 1), a), apart_by(at.point(r - 1), a)) - radius);
       }
     return most + slack;
   };
@@ -246,35 +301,35 @@ class GoldenSearch {
   // Questions asked of the tree before the elements round the bracket are
   // listed (a gear's searches mostly end within two; a comb's ask dozens).
   static constexpr std::size_t kAskedAlone = 2;
-  struct Range {
-    double low, high;
-    bool exact;  // the gap itself (low and high), a point asked before
-  };
-  /// Bounds from the known points' gaps alone (Lipschitz); `closest`, the
-  /// known point nearest to p, whose element bounds the gap best.
-  Range bounds(Point p, std::size_t& closest) const {
-    Range r{-HUGE_VAL, HUGE_VAL, false};
+  /// Bounds on p's gap (low, high): from the known points' gaps alone
+  /// (Lipschitz); `closest`, the known point nearest to p, whose element
+  /// bounds the gap best. True when p was asked before (low = high = its gap).
+  /// (Plain doubles, not a struct: copying one stalled on its two stores.)
+  bool bounds(Point p, double& low, double& high, std::size_t& closest) const {
+    low = -HUGE_VAL, high = HUGE_VAL;
     double closest_apart = HUGE_VAL;
     for (std::size_t i = 0; i < size_; ++i) {
       const Known& k = known_[i];
-      if (k.p.x == p.x && k.p.y == p.y) return {k.gap, k.gap, true};
+      if (k.p.x == p.x && k.p.y == p.y) {
+        low = high = k.gap;
+        return true;
+      }
       const double apart = apart_by(p, k.p);
-      r.low = std::max(r.low, k.gap - apart - slack_);
-      r.high = std::min(r.high, k.gap + apart + slack_);
+      low = std::max(low, k.gap - apart - slack_);
+      high = std::min(high, k.gap + apart + slack_);
       if (apart < closest_apart) closest_apart = apart, closest = i;
     }
-    return r;
+    return false;
   }
   /// The bound by the closest known point's element, the tighter one.
-  void tighten(Range& r, Point p, std::size_t closest) const {
+  void tighten(double& high, Point p, std::size_t closest) const {
     double by_element = 0;
-    if (!r.exact && size_ > 0 && gaps_.gap_to(known_[closest].element, p, by_element))
-      r.high = std::min(r.high, by_element + slack_);
+    if (size_ > 0 && gaps_.gap_to(known_[closest].element, p, by_element)) high = std::min(high, by_element + slack_);
   }
   double exact(Point p) {
     std::size_t closest = 0;
-    const Range r = bounds(p, closest);
-    if (r.exact) return r.low;
+    double low, high;
+    if (bounds(p, low, high, closest)) return low;
     if (!nearby_ && ++asked_ > kAskedAlone && size_ > 0) {
       // A search that keeps asking: list the contour's elements that can be
       // nearest within the bracket once (bounded by the gaps known), so
@@ -292,16 +347,17 @@ class GoldenSearch {
   bool deeper(Point a, Point b) {
     for (;;) {
       std::size_t closest_a = 0, closest_b = 0;
-      Range ra = bounds(a, closest_a), rb = bounds(b, closest_b);
-      if (ra.exact && rb.exact) return ra.low > rb.low;
-      if (ra.low > rb.high) return true;
-      if (ra.high < rb.low) return false;
-      tighten(ra, a, closest_a);
-      tighten(rb, b, closest_b);
-      if (ra.low > rb.high) return true;
-      if (ra.high < rb.low) return false;
+      double low_a, high_a, low_b, high_b;
+      const bool exact_a = bounds(a, low_a, high_a, closest_a), exact_b = bounds(b, low_b, high_b, closest_b);
+      if (exact_a && exact_b) return low_a > low_b;
+      if (low_a > high_b) return true;
+      if (high_a < low_b) return false;
+      if (!exact_a) tighten(high_a, a, closest_a);
+      if (!exact_b) tighten(high_b, b, closest_b);
+      if (low_a > high_b) return true;
+      if (high_a < low_b) return false;
       // Ask the less certain of the two; its answer may settle the other.
-      const bool ask_a = !ra.exact && (rb.exact || ra.high - ra.low >= rb.high - rb.low);
+      const bool ask_a = !exact_a && (exact_b || high_a - low_a >= high_b - low_b);
       exact(ask_a ? a : b);
     }
   }
@@ -371,15 +427,15 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
     for (const Segment& s : loop.segments) {
       const double length = segment_length(s);
       const std::size_t samples = std::min<std::size_t>(10000, 1 + static_cast<std::size_t>(length / step));
-      at.reset(samples + 1);
-      for (std::size_t i = 0; i <= samples; ++i) at.points[i] = point_at(s, static_cast<double>(i) / samples);
+      at.reset(s, samples);
       counts.samples += samples + 1;
-      if (carried.known && at.points[0].x == carried.p.x && at.points[0].y == carried.p.y) {
+      const Point first = at.point(0);
+      if (carried.known && first.x == carried.p.x && first.y == carried.p.y) {
         at.gaps[0] = carried.gap, at.exact[0] = 1, at.uncut[0] = carried.gap > threshold;
         at.elements[0] = carried.element, at.nearest[0] = carried.nearest;
       }
-      classify(at, gaps, threshold, slack, counts);
       const double spacing = length / static_cast<double>(samples) * (1 + 1e-12);
+      classify(at, gaps, threshold, slack, spacing, !is_arc(s), counts);
       for (std::size_t i = 0; i <= samples;) {
         if (!at.uncut[i]) {
           ++i;
@@ -392,12 +448,12 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
         const double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
         GoldenSearch search(s, gaps, slack, counts.refining);
         for (const std::size_t k : {deepest == 0 ? deepest : deepest - 1, std::min(deepest + 1, samples), deepest})
-          if (at.exact[k]) search.know({at.points[k], at.gaps[k], at.elements[k]});
+          if (at.exact[k]) search.know({at.point(k), at.gaps[k], at.elements[k]});
         const double depth = search.depth(lo, hi, at.gaps[deepest]);
         spans.push_back({point_at(s, static_cast<double>(begin) / samples),
                          point_at(s, static_cast<double>(i - 1) / samples), depth, s.entity, s.source_line});
       }
-      carried = {at.points[samples], at.nearest[samples], at.gaps[samples], at.elements[samples],
+      carried = {at.point(samples), at.nearest[samples], at.gaps[samples], at.elements[samples],
                  at.exact[samples] != 0};
     }
     join_at_corners(spans, first_of_loop);

@@ -13,8 +13,6 @@ namespace tk::cad {
 
 namespace {
 
-constexpr double kLineBulge = 1e-12;
-
 /// An arc in the frame of its chord, mirrored so that it always bulges
 /// toward -across: a point q has local coordinates u = (q - mid).along,
 /// v = (q - mid).across; the centre is (0, centre_offset), the arc's middle
@@ -57,8 +55,6 @@ Point local_at(const ArcFrame& f, double psi) {
 
 }  // namespace
 
-bool is_arc(const Segment& segment) { return std::abs(segment.bulge) > kLineBulge; }
-
 ArcShape arc_shape(const Segment& segment) {
   const ArcFrame f = arc_frame(segment);
   ArcShape shape;
@@ -78,12 +74,7 @@ double segment_length(const Segment& segment) {
   return chord * (1 + b * b) * std::atan(b) / b;  // radius * |sweep|
 }
 
-Point point_at(const Segment& segment, double t) {
-  if (t <= 0) return segment.start;
-  if (t >= 1) return segment.end;
-  if (!is_arc(segment))
-    return {segment.start.x + t * (segment.end.x - segment.start.x),
-            segment.start.y + t * (segment.end.y - segment.start.y)};
+Point arc_point_at(const Segment& segment, double t) {
   const ArcFrame f = arc_frame(segment);
   const Point q = local_at(f, (2 * t - 1) * f.half_sweep);
   return global(f, q.x, q.y);

@@ -23,15 +23,24 @@ struct Box {
   double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
 };
 
-/// A bulge this small (|bulge| <= 1e-12) is a line.
-bool is_arc(const Segment& segment);
+/// A bulge this small (|bulge| <= 1e-12) is a line. Inline, as is
+/// point_at's line case: the uncut search asks them millions of times.
+inline bool is_arc(const Segment& segment) { return std::abs(segment.bulge) > 1e-12; }
 /// Only for is_arc(segment).
 ArcShape arc_shape(const Segment& segment);
 /// The bulge of an arc from its centre and signed sweep (helper for readers).
 double bulge_of_sweep(double sweep);
 double segment_length(const Segment& segment);
+/// point_at() of an arc, for 0 < t < 1.
+Point arc_point_at(const Segment& segment, double t);
 /// Point at fraction t in [0, 1] of the length.
-Point point_at(const Segment& segment, double t);
+inline Point point_at(const Segment& segment, double t) {
+  if (t <= 0) return segment.start;
+  if (t >= 1) return segment.end;
+  if (is_arc(segment)) return arc_point_at(segment, t);
+  return {segment.start.x + t * (segment.end.x - segment.start.x),
+          segment.start.y + t * (segment.end.y - segment.start.y)};
+}
 /// Unit direction of travel at fraction t.
 Point tangent_at(const Segment& segment, double t);
 /// Nearest point of the segment to p; *t_out gets its fraction of the length.
