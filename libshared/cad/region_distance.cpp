@@ -269,6 +269,13 @@ RegionIndex::Nearby::Nearby(const RegionIndex& index, Point centre, double sprea
   for (const std::uint32_t e : found) elements_.push_back({std::sqrt(distance2(m.kernels[e], centre)) - margin, e});
   std::sort(elements_.begin(), elements_.end(),
             [](const Element& a, const Element& b) { return a.from_centre < b.from_centre; });
+  // The first is nearest everywhere in the spread when even its farthest
+  // (its distance from the centre plus the spread) is nearer than the
+  // second's nearest (its distance less the spread) and within reach.
+  if (elements_.empty()) return;
+  const double farthest = elements_[0].from_centre + 2 * margin + spread;
+  if (farthest <= reach && (elements_.size() == 1 || farthest < elements_[1].from_centre - spread))
+    sole_ = elements_[0].index;
 }
 
 RegionQuery RegionIndex::Nearby::nearest(Point p) const {

@@ -54,6 +54,10 @@ class RegionIndex {
    public:
     Nearby(const RegionIndex& index, Point centre, double spread, double reach);
     RegionQuery nearest(Point p) const;
+    /// The element strictly nearer than every other at each point within
+    /// the spread, and within reach of it, if there is one (SIZE_MAX if
+    /// not): nearest(p) names it there, and its distance is distance_to(sole(), p).
+    std::size_t sole() const { return sole_; }
 
    private:
     struct Element {
@@ -64,6 +68,7 @@ class RegionIndex {
     Point centre_;
     double spread_, reach2_;
     std::vector<Element> elements_;
+    std::size_t sole_ = SIZE_MAX;
   };
   /// The distance from p to one element, as nearest() computes it (no
   /// trigonometry: the element's frame is prepared).

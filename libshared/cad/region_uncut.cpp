@@ -192,6 +192,44 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, doub
   }
 }
 
+/// A stretch of an element where one element of the contour is nearest
+/// throughout: points within `spread` of `centre`.
+struct SoleStretch {
+  std::size_t element = SIZE_MAX;
+  Point centre;
+  double spread = 0;
+};
+
+/// Where one element of the contour is nearest at both ends of a straight
+/// run (a slot's flat floor, whose gaps are all equal, so that no bound
+/// settles any), whether it is nearest all along (RegionIndex::Nearby::sole);
+/// if so, every sample's exact gap is its distance, with no search (the
+/// nearest point is left unknown), and `sole` says where that holds.
+bool counted_sole(Samples& at, std::size_t begin, std::size_t last, ExactGaps& gaps, double slack,
+                  UncutQueryCounts& counts, SoleStretch& sole) {
+  const Point a = at.point(begin), b = at.point(last);
+  const Point centre{(a.x + b.x) / 2, (a.y + b.y) / 2};
+  const double spread = apart_by(a, b) / 2 * (1 + 1e-9) + slack;  // the samples lie on the chord, but for rounding
+  // Tried only on a run short beside its gaps: a longer one (a gear's flank)
+  // lists many elements and seldom has one nearest all along (tried on
+  // every run, the gear's search took twice the time).
+  if (!(4 * spread <= std::min(at.gaps[begin], at.gaps[last]))) return false;
+  // No gap in the run exceeds an end's by more than the way from it (Lipschitz).
+  const double largest_gap = std::min(at.gaps[begin], at.gaps[last]) + 2 * spread + slack;
+  const std::optional<RegionIndex::Nearby> nearby = gaps.nearby(centre, spread, largest_gap);
+  if (!nearby || nearby->sole() != at.elements[begin]) return false;
+  for (std::size_t i = begin + 1; i < last; ++i) {
+    if (at.exact[i]) continue;
+    ++counts.deepest;
+    gaps.gap_to(at.elements[begin], at.point(i), at.gaps[i]);
+    at.exact[i] = 1;
+    at.elements[i] = at.elements[begin];
+    at.nearest[i] = {HUGE_VAL, HUGE_VAL};  // unknown: bounds nothing
+  }
+  sole = {at.elements[begin], centre, spread};
+  return true;
+}
+
 /// The run [begin, last]'s first deepest sample by exact gaps (the first
 /// of the greatest, as a scan would choose), by branch and bound: between
 /// two exact samples l < r, spaced at most `spacing` apart along the
@@ -205,7 +243,7 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, doub
 /// or r's nearest point is convex along the line, so largest at the samples
 /// next to l and r.
 std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, ExactGaps& gaps, double spacing,
-                          double radius, bool straight, double slack, UncutQueryCounts& counts) {
+                          double radius, bool straight, double slack, UncutQueryCounts& counts, SoleStretch& sole) {
   const auto ask = [&](std::size_t i) {
     at.gaps[i] = gaps.at(at.point(i), counts.deepest);
     at.exact[i] = 1;
@@ -215,6 +253,14 @@ std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, Exac
   for (const std::size_t end : {begin, last})
     if (!at.exact[end]) ask(end);
   std::size_t deepest = begin;
+  const auto improve = [&](std::size_t i) {  // the scan's rule: the first of equal gaps
+    if (at.gaps[i] > at.gaps[deepest] || (at.gaps[i] == at.gaps[deepest] && i < deepest)) deepest = i;
+  };
+  if (straight && last - begin >= 2 && at.elements[begin] == at.elements[last] &&
+      counted_sole(at, begin, last, gaps, slack, counts, sole)) {
+    for (std::size_t i = begin; i <= last; ++i) improve(i);
+    return deepest;
+  }
   struct Stretch {
     double bound;
     std::size_t l, r;
@@ -232,9 +278,6 @@ std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, Exac
   };
   const auto consider = [&](std::size_t l, std::size_t r) {
     if (r - l >= 2) open.push({bound(l, r), l, r});
-  };
-  const auto improve = [&](std::size_t i) {  // the scan's rule: the first of equal gaps
-    if (at.gaps[i] > at.gaps[deepest] || (at.gaps[i] == at.gaps[deepest] && i < deepest)) deepest = i;
   };
   for (std::size_t i = begin, l = begin; i <= last; ++i) {
     if (!at.exact[i]) continue;
@@ -276,11 +319,13 @@ class GoldenSearch {
     next_ = (next_ + 1) % kKept;
     size_ = std::min(size_ + 1, kKept);
   }
-  double depth(double lo, double hi, double sampled_depth) {
+  /// `sole`: where one element is known nearest throughout (first_deepest's), if anywhere.
+  double depth(double lo, double hi, double sampled_depth, const SoleStretch& sole) {
     // Every point asked lies within the bracket (centre_, spread_).
     centre_ = point_at(s_, 0.5 * (lo + hi));
     spread_ = segment_length(s_) * 0.5 * (hi - lo) * (1 + 1e-9) +
               1e-12 * (std::abs(centre_.x) + std::abs(centre_.y) + segment_length(s_));
+    if (sole.element != SIZE_MAX && apart_by(centre_, sole.centre) + spread_ <= sole.spread) sole_ = sole.element;
     const double golden = (std::sqrt(5.0) - 1) / 2;
     for (int k = 0; k < 40; ++k) {
       const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
@@ -290,7 +335,8 @@ class GoldenSearch {
         lo = a;
       }
     }
-    return std::max(sampled_depth, exact(point_at(s_, 0.5 * (lo + hi))));
+    const Point last = point_at(s_, 0.5 * (lo + hi));
+    return std::max(sampled_depth, sole_ != SIZE_MAX ? sole_gap(last) : exact(last));
   }
 
  private:
@@ -338,13 +384,26 @@ class GoldenSearch {
       for (std::size_t i = 0; i < size_; ++i)
         largest_gap = std::min(largest_gap, known_[i].gap + slack_ + apart_by(known_[i].p, centre_) + spread_);
       nearby_ = gaps_.nearby(centre_, spread_, largest_gap);
+      if (nearby_) sole_ = nearby_->sole();
     }
     const double gap = gaps_.at(p, count_, nearby_ ? &*nearby_ : nullptr);
     know({p, gap, gaps_.last_element()});
     return gap;
   }
+  /// The exact gap where one element is nearest throughout the bracket:
+  /// its distance, as the index would answer (no search, no bounds).
+  double sole_gap(Point p) {
+    ++count_;
+    double gap = 0;
+    gaps_.gap_to(sole_, p, gap);
+    return gap;
+  }
   /// gap(a) > gap(b), the exact gaps' answer.
   bool deeper(Point a, Point b) {
+    // Along a slot's flat floor the gap barely changes: the bounds settle
+    // nothing and each step asked the contour (a comb's refinement was
+    // three quarters of its uncut search).
+    if (sole_ != SIZE_MAX) return sole_gap(a) > sole_gap(b);
     for (;;) {
       std::size_t closest_a = 0, closest_b = 0;
       double low_a, high_a, low_b, high_b;
@@ -369,6 +428,7 @@ class GoldenSearch {
   Known known_[kKept];
   std::size_t next_ = 0, size_ = 0;
   std::optional<RegionIndex::Nearby> nearby_;
+  std::size_t sole_ = SIZE_MAX;  // nearby_'s sole element: nearest throughout the bracket
   Point centre_;
   double spread_ = 0;
   std::size_t asked_ = 0;
@@ -443,13 +503,15 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
         }
         const std::size_t begin = i;
         while (i <= samples && at.uncut[i]) ++i;
-        const std::size_t deepest = first_deepest(at, begin, i - 1, gaps, spacing, radius, !is_arc(s), slack, counts);
+        SoleStretch sole;
+        const std::size_t deepest =
+            first_deepest(at, begin, i - 1, gaps, spacing, radius, !is_arc(s), slack, counts, sole);
         const double lo = static_cast<double>(deepest == 0 ? 0 : deepest - 1) / samples;
         const double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
         GoldenSearch search(s, gaps, slack, counts.refining);
         for (const std::size_t k : {deepest == 0 ? deepest : deepest - 1, std::min(deepest + 1, samples), deepest})
           if (at.exact[k]) search.know({at.point(k), at.gaps[k], at.elements[k]});
-        const double depth = search.depth(lo, hi, at.gaps[deepest]);
+        const double depth = search.depth(lo, hi, at.gaps[deepest], sole);
         spans.push_back({point_at(s, static_cast<double>(begin) / samples),
                          point_at(s, static_cast<double>(i - 1) / samples), depth, s.entity, s.source_line});
       }

@@ -12,8 +12,10 @@
 
 namespace tk::cad {
 
-/// How many exact distances (searches of the contour's index) the uncut
-/// search asked, by stage: for tests and measurements.
+/// How many exact gaps the uncut search computed, by stage: by a search
+/// of the contour's index, or, where one element is known to be nearest
+/// throughout (a slot's floor), as that element's distance. For tests and
+/// measurements.
 struct UncutQueryCounts {
   std::size_t samples = 0;   ///< points sampled along the drawing
   std::size_t sampling = 0;  ///< exact answers to tell uncut samples from cut ones

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -61,6 +62,52 @@ TEST(RegionNearby, AnswersAsBruteForceWithinItsSpreadAndOutside) {
     for (int i = 0; i < 10; ++i)
       expect_brute_force(short_reach, set.loops, around(random, centre, 0, spread), "reach too short");
   }
+}
+
+TEST(RegionNearby, ASoleElementIsNearestThroughoutBySearchOfAll) {
+  // sole(), where it names an element, must be nearer than every other at
+  // each point of the spread (brute force over all the elements, not the
+  // list), and its distance there the answer's; it must name one often
+  // enough on small spreads that the check means something.
+  std::mt19937_64 random(23);
+  const LoopSet set = build_loops(parts::random_star_with_hole(random, test_volume(200, 60)), 1e-9);
+  const RegionIndex index(set.loops, RegionIndex::Layout::tree);
+  std::vector<Segment> all;
+  for (const Loop& loop : set.loops) all.insert(all.end(), loop.segments.begin(), loop.segments.end());
+  std::uniform_real_distribution<double> coordinate(-45, 45), unit(0, 1);
+  int named = 0, spots = test_volume(400, 80);
+  for (int spot = 0; spot < spots; ++spot) {
+    const Point centre{coordinate(random), coordinate(random)};
+    const double spread = 0.5 * unit(random) * unit(random);
+    const double reach = index.nearest(centre).distance + spread + unit(random);
+    const RegionIndex::Nearby nearby(index, centre, spread, reach);
+    const std::size_t sole = nearby.sole();
+    // Promised a reach short of the boundary, the list may lack the
+    // nearest: no element can be named sole.
+    EXPECT_EQ(RegionIndex::Nearby(index, centre, spread, 0.5 * index.nearest(centre).distance).sole(), SIZE_MAX);
+    if (sole == SIZE_MAX) continue;
+    ++named;
+    for (int i = 0; i < 20; ++i) {
+      const Point p = around(random, centre, 0, spread);
+      const double own = distance(nearest_point(all[sole], p), p);
+      for (std::size_t e = 0; e < all.size(); ++e) {
+        if (e != sole) {
+          ASSERT_LT(own, distance(nearest_point(all[e], p), p)) << "element " << e << " as near";
+        }
+      }
+      const RegionQuery q = nearby.nearest(p);
+      ASSERT_EQ(q.element, sole);
+      ASSERT_EQ(q.distance, index.distance_to(sole, p));
+    }
+  }
+  EXPECT_GT(named, spots / 10) << "sole() named an element at " << named << " of " << spots << " spots";
+  // Two elements equally near the centre: neither is sole.
+  const std::vector<Segment> sides{
+      {{0, 0}, {10, 0}, 0}, {{10, 0}, {10, 10}, 0}, {{10, 10}, {0, 10}, 0}, {{0, 10}, {0, 0}, 0}};
+  const LoopSet square = build_loops(sides, 1e-9);
+  const RegionIndex square_index(square.loops, RegionIndex::Layout::tree);
+  EXPECT_EQ(RegionIndex::Nearby(square_index, {5, 5}, 0.1, 10).sole(), SIZE_MAX);
+  EXPECT_NE(RegionIndex::Nearby(square_index, {5, 1}, 0.1, 10).sole(), SIZE_MAX);
 }
 
 TEST(RegionNearby, NamesTheLowerOfEquallyNearElements) {
