@@ -304,6 +304,32 @@ struct Known {
   std::size_t element;
 };
 
+/// The golden-section search's ratio and steps (the search that defines the depth).
+const double kGolden = (std::sqrt(5.0) - 1) / 2;
+constexpr int kGoldenSteps = 40;
+
+/// Whether the golden-section search over [lo, hi] on a straight element
+/// cannot end deeper than the deepest sample (whose gap is `deepest_gap`,
+/// its nearest element `element` and point `nearest`): then the depth is
+/// that sample's, and the search need not run. Each step keeps a golden
+/// fraction of the bracket, so the point it ends on, the middle of the
+/// last, lies at least half the last's width inside [lo, hi]; there no gap
+/// exceeds the distance to `nearest`, or to `element` if it is a line (both
+/// convex along the element), which are largest at its ends. A deepest
+/// sample at the element's end (a gear's root) is so settled: the gap
+/// falls away from it, even over that last half width.
+bool ends_no_deeper(const Segment& s, double lo, double hi, double deepest_gap, Point nearest, std::size_t element,
+                    const ExactGaps& gaps, double radius, double slack) {
+  double last_width = hi - lo;
+  for (int k = 0; k < kGoldenSteps; ++k) last_width *= kGolden;
+  const Point a = point_at(s, lo + 0.45 * last_width), b = point_at(s, hi - 0.45 * last_width);  // 0.45: rounding
+  double most = std::max(apart_by(a, nearest), apart_by(b, nearest)) - radius;
+  double to_a = 0, to_b = 0;
+  if (gaps.straight(element) && gaps.gap_to(element, a, to_a) && gaps.gap_to(element, b, to_b))
+    most = std::min(most, std::max(to_a, to_b));
+  return most + slack <= deepest_gap;
+}
+
 /// The golden-section search between the deepest sample's neighbours, in
 /// its usual form (both inner points computed every step), each step's
 /// comparison decided as the exact gaps would decide it but mostly from
@@ -326,9 +352,8 @@ class GoldenSearch {
     spread_ = segment_length(s_) * 0.5 * (hi - lo) * (1 + 1e-9) +
               1e-12 * (std::abs(centre_.x) + std::abs(centre_.y) + segment_length(s_));
     if (sole.element != SIZE_MAX && apart_by(centre_, sole.centre) + spread_ <= sole.spread) sole_ = sole.element;
-    const double golden = (std::sqrt(5.0) - 1) / 2;
-    for (int k = 0; k < 40; ++k) {
-      const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+    for (int k = 0; k < kGoldenSteps; ++k) {
+      const double a = hi - kGolden * (hi - lo), b = lo + kGolden * (hi - lo);
       if (deeper(point_at(s_, a), point_at(s_, b))) {
         hi = b;
       } else {
@@ -508,10 +533,14 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
             first_deepest(at, begin, i - 1, gaps, spacing, radius, !is_arc(s), slack, counts, sole);
         const double lo = static_cast<double>(deepest == 0 ? 0 : deepest - 1) / samples;
         const double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
-        GoldenSearch search(s, gaps, slack, counts.refining);
-        for (const std::size_t k : {deepest == 0 ? deepest : deepest - 1, std::min(deepest + 1, samples), deepest})
-          if (at.exact[k]) search.know({at.point(k), at.gaps[k], at.elements[k]});
-        const double depth = search.depth(lo, hi, at.gaps[deepest], sole);
+        double depth = at.gaps[deepest];
+        if (is_arc(s) ||
+            !ends_no_deeper(s, lo, hi, depth, at.nearest[deepest], at.elements[deepest], gaps, radius, slack)) {
+          GoldenSearch search(s, gaps, slack, counts.refining);
+          for (const std::size_t k : {deepest == 0 ? deepest : deepest - 1, std::min(deepest + 1, samples), deepest})
+            if (at.exact[k]) search.know({at.point(k), at.gaps[k], at.elements[k]});
+          depth = search.depth(lo, hi, at.gaps[deepest], sole);
+        }
         spans.push_back({point_at(s, static_cast<double>(begin) / samples),
                          point_at(s, static_cast<double>(i - 1) / samples), depth, s.entity, s.source_line});
       }
