@@ -319,7 +319,7 @@ constexpr int kGoldenSteps = 40;
 /// sample at the element's end (a gear's root) is so settled: the gap
 /// falls away from it, even over that last half width.
 bool ends_no_deeper(const Segment& s, double lo, double hi, double deepest_gap, Point nearest, std::size_t element,
-                    const ExactGaps& gaps, double radius, double slack) {
+                    const ExactGaps& gaps, double radius, double margin) {
   double last_width = hi - lo;
   for (int k = 0; k < kGoldenSteps; ++k) last_width *= kGolden;
   const Point a = point_at(s, lo + 0.45 * last_width), b = point_at(s, hi - 0.45 * last_width);  // 0.45: rounding
@@ -327,7 +327,7 @@ bool ends_no_deeper(const Segment& s, double lo, double hi, double deepest_gap, 
   double to_a = 0, to_b = 0;
   if (gaps.straight(element) && gaps.gap_to(element, a, to_a) && gaps.gap_to(element, b, to_b))
     most = std::min(most, std::max(to_a, to_b));
-  return most + slack <= deepest_gap;
+  return most + margin <= deepest_gap;
 }
 
 /// The golden-section search between the deepest sample's neighbours, in
@@ -498,6 +498,13 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
   if (contour)
     for (const Segment& s : contour->elements()) magnitude = std::max(magnitude, rounding_scale(s));
   const double slack = 1e-12 * (1 + radius) + 3e-14 * magnitude;
+  // ends_no_deeper()'s margin: its one bound is two distances (each within
+  // some 16 ulps of the coordinates' and radii's size, which the magnitude
+  // is at least twice) and a point's rounding. A third of the slack: the
+  // last half width it must fit into is 2.7e-10 of a 0.125 mm sample
+  // spacing, and a 100k gear's slack (its coordinates in the thousands)
+  // left no room.
+  const double ends_margin = 1e-12 * (1 + radius) + 1e-14 * magnitude;
   Samples at;
   // The last sample's exact gap, if it was asked: the next element starts
   // at the same point (the same question, the same answer).
@@ -535,7 +542,7 @@ std::vector<UncutSpan> find_uncut(const std::vector<Loop>& drawn, const RegionIn
         const double hi = static_cast<double>(std::min(deepest + 1, samples)) / samples;
         double depth = at.gaps[deepest];
         if (is_arc(s) ||
-            !ends_no_deeper(s, lo, hi, depth, at.nearest[deepest], at.elements[deepest], gaps, radius, slack)) {
+            !ends_no_deeper(s, lo, hi, depth, at.nearest[deepest], at.elements[deepest], gaps, radius, ends_margin)) {
           GoldenSearch search(s, gaps, slack, counts.refining);
           for (const std::size_t k : {deepest == 0 ? deepest : deepest - 1, std::min(deepest + 1, samples), deepest})
             if (at.exact[k]) search.know({at.point(k), at.gaps[k], at.elements[k]});
