@@ -282,7 +282,10 @@ struct RegionIndex::Impl {
     std::uint32_t count[4];  // a leaf's elements
   };
   std::vector<Wide> wide;
-  std::vector<Kernel> ordered_kernels;  // kernels[order[i]] at i: a leaf's elements side by side
+  // kernels[order[i]] at i: a leaf's elements side by side, for tree_nearest.
+  // (Not for tree_within: the grid's build reads `kernels` for the same
+  // elements just after, and the second array cost its whole grid some 9 %.)
+  std::vector<Kernel> ordered_kernels;
 
   /// The grid's cells, kBlockCells a side to a tile, each tile built whole
   /// by the first query that lands in it: a check along a tool path builds

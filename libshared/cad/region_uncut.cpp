@@ -8,8 +8,11 @@
 /// samples need no search of the contour: one exactly known a little way
 /// back already puts them above the threshold (or below it), and within a
 /// run a branch and bound asks only the samples that could still be the
-/// deepest. A margin covers the rounding of the bounds, so each decision
-/// is the one the exact gaps would make.
+/// deepest. Where one element of the contour is provably nearest all along
+/// a stretch (a slot's floor), gaps there are its distance, no search; and
+/// the golden-section search is skipped where it provably cannot end
+/// deeper than the deepest sample. A margin covers the rounding of the
+/// bounds, so each decision is the one the exact gaps would make.
 #include "cad/region_uncut.hpp"
 
 #include <algorithm>
@@ -205,8 +208,8 @@ struct SoleStretch {
 /// settles any), whether it is nearest all along (RegionIndex::Nearby::sole);
 /// if so, every sample's exact gap is its distance, with no search (the
 /// nearest point is left unknown), and `sole` says where that holds.
-bool counted_sole(Samples& at, std::size_t begin, std::size_t last, ExactGaps& gaps, double slack,
-                  UncutQueryCounts& counts, SoleStretch& sole) {
+bool settled_by_sole(Samples& at, std::size_t begin, std::size_t last, ExactGaps& gaps, double slack,
+                     UncutQueryCounts& counts, SoleStretch& sole) {
   const Point a = at.point(begin), b = at.point(last);
   const Point centre{(a.x + b.x) / 2, (a.y + b.y) / 2};
   const double spread = apart_by(a, b) / 2 * (1 + 1e-9) + slack;  // the samples lie on the chord, but for rounding
@@ -257,7 +260,7 @@ std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, Exac
     if (at.gaps[i] > at.gaps[deepest] || (at.gaps[i] == at.gaps[deepest] && i < deepest)) deepest = i;
   };
   if (straight && last - begin >= 2 && at.elements[begin] == at.elements[last] &&
-      counted_sole(at, begin, last, gaps, slack, counts, sole)) {
+      settled_by_sole(at, begin, last, gaps, slack, counts, sole)) {
     for (std::size_t i = begin; i <= last; ++i) improve(i);
     return deepest;
   }
@@ -304,9 +307,11 @@ struct Known {
   std::size_t element;
 };
 
-/// The golden-section search's ratio and steps (the search that defines the depth).
+/// The golden-section search's ratio and steps (the search that defines the
+/// depth), and the width of its last bracket as a fraction of its first.
 const double kGolden = (std::sqrt(5.0) - 1) / 2;
 constexpr int kGoldenSteps = 40;
+const double kGoldenLastWidth = std::pow(kGolden, kGoldenSteps);
 
 /// Whether the golden-section search over [lo, hi] on a straight element
 /// cannot end deeper than the deepest sample (whose gap is `deepest_gap`,
@@ -320,8 +325,7 @@ constexpr int kGoldenSteps = 40;
 /// falls away from it, even over that last half width.
 bool ends_no_deeper(const Segment& s, double lo, double hi, double deepest_gap, Point nearest, std::size_t element,
                     const ExactGaps& gaps, double radius, double margin) {
-  double last_width = hi - lo;
-  for (int k = 0; k < kGoldenSteps; ++k) last_width *= kGolden;
+  const double last_width = (hi - lo) * kGoldenLastWidth;
   const Point a = point_at(s, lo + 0.45 * last_width), b = point_at(s, hi - 0.45 * last_width);  // 0.45: rounding
   double most = std::max(apart_by(a, nearest), apart_by(b, nearest)) - radius;
   double to_a = 0, to_b = 0;
@@ -335,7 +339,9 @@ bool ends_no_deeper(const Segment& s, double lo, double hi, double deepest_gap, 
 /// comparison decided as the exact gaps would decide it but mostly from
 /// bounds: from points already known exactly, a gap is at least theirs
 /// less the distance (Lipschitz) and at most the distance to their nearest
-/// elements. Only a comparison the bounds leave open asks the contour.
+/// elements. Only a comparison the bounds leave open asks the contour;
+/// where one element is nearest throughout the bracket (`sole_`), each
+/// comparison is of the distances to it.
 class GoldenSearch {
  public:
   GoldenSearch(const Segment& s, ExactGaps& gaps, double slack, std::size_t& count)
