@@ -108,6 +108,17 @@ struct Stages {
   OffsetStageTimes offset;
 };
 
+/// DXF to region and its indexes in one go, as dxf2region writes a region.
+double time_total(const std::string& path) {
+  return bench::time_cpu([&] {
+    const Part part = load_part(path, {}, [](const std::string&) {});
+    OffsetOptions plain;
+    plain.tool_radius = 1;
+    const RegionOffset region = offset_region(part.loops.loops, *part.index, plain);
+    if (!region.contour) bench::fail("no contour for " + path);
+  });
+}
+
 /// The stages one at a time (as load_part and offset_region run them), then
 /// the whole from DXF to ready indexes in one go.
 Stages time_stages(const std::string& path) {
@@ -128,14 +139,21 @@ Stages time_stages(const std::string& path) {
   options.tool_radius = 1;
   options.stage_times = &s.offset;
   offset_region(set.loops, *index, options);
-  s.total = bench::time_cpu([&] {
-    const Part part = load_part(path, {}, [](const std::string&) {});
-    OffsetOptions plain;
-    plain.tool_radius = 1;
-    const RegionOffset region = offset_region(part.loops.loops, *part.index, plain);
-    if (!region.contour) bench::fail("no contour for " + path);
-  });
+  s.total = time_total(path);
   return s;
+}
+
+/// The exponent of the total's growth from the 10k part to the 100k one,
+/// from rounds that time the two alternately: the median of the rounds'
+/// ratios, so that a burst of load on this shared machine falls on both
+/// sizes of a round rather than on one size's every run.
+double growth_exponent(const std::string& path_10k, const std::string& path_100k, int rounds) {
+  std::vector<double> ratios;
+  for (int r = 0; r < rounds; ++r) {
+    const double small = time_total(path_10k), large = time_total(path_100k);
+    ratios.push_back(large / small);
+  }
+  return std::log10(bench::median(ratios));
 }
 
 Stages median_stages(const std::vector<Stages>& runs) {
@@ -268,7 +286,7 @@ int main(int argc, char** argv) {
   const char* only = std::getenv("BENCH_REGION_BUILD_SHAPES");
   for (const Shape& shape : kShapes) {
     if (only && std::string(only).find(shape.name) == std::string::npos) continue;
-    double at_10k = 0, at_100k = 0;
+    std::string path_10k, path_100k;
     for (std::size_t n : sizes()) {
       const std::string path = (dir / (std::string(shape.name) + "_" + std::to_string(n) + ".dxf")).string();
       write_dxf(path, shape.make(n));
@@ -287,17 +305,21 @@ int main(int argc, char** argv) {
           m.offset.uncut * 1e3, m.total * 1e3, m.first * 1e3, m.tiles * 1e3, q.index_build * 1e3, q.rtree_build * 1e3,
           q.random / 1e6, q.rtree_random / 1e6, q.path / 1e6, q.rtree_path / 1e6);
       std::fflush(stdout);
-      if (n == 10000) at_10k = m.total, total_10k = std::max(total_10k, m.total);
-      if (n == 100000) at_100k = m.total, total_100k = std::max(total_100k, m.total);
+      if (n == 10000) path_10k = path, total_10k = std::max(total_10k, m.total);
+      if (n == 100000) path_100k = path, total_100k = std::max(total_100k, m.total);
       if (n == 10000) checkable_10k = std::max(checkable_10k, m.total + m.first);
       if (n == 100000) checkable_100k = std::max(checkable_100k, m.total + m.first);
       if (n == 10000) whole_10k = std::max(whole_10k, m.total + m.first + m.tiles);
       if (n == 100000) whole_100k = std::max(whole_100k, m.total + m.first + m.tiles);
       worst_random = std::min(worst_random, q.random), worst_path = std::min(worst_path, q.path);
     }
-    if (at_10k > 0 && at_100k > 0)
-      std::printf("FIGURE region_build_exponent_%s %.2f (goal <= 1.2, 10k to 100k)\n", shape.name,
-                  std::log10(at_100k / at_10k));
+    if (!path_10k.empty() && !path_100k.empty()) {
+      const int rounds = std::max(repeats, 5);
+      std::printf(
+          "FIGURE region_build_exponent_%s %.2f (goal <= 1.2, 10k to 100k; median of %d rounds alternating them)\n",
+          shape.name, growth_exponent(path_10k, path_100k, rounds), rounds);
+      std::fflush(stdout);
+    }
   }
   std::printf(
       "(index: the drawing's box tree; TOTAL: DXF to region and its indexes, as dxf2region writes a region; first: "

@@ -70,10 +70,21 @@ void RegionIndex::Impl::tree_nearest(Point p, double& best2, std::uint32_t& best
     }
     const Wide& node = wide[w.child];
     double box2[4];
-    for (std::size_t k = 0; k < 4; ++k) {
-      const double dx = std::max(std::max(node.min_x[k] - p.x, 0.0), p.x - node.max_x[k]);
-      const double dy = std::max(std::max(node.min_y[k] - p.y, 0.0), p.y - node.max_y[k]);
-      box2[k] = dx * dx + dy * dy;
+    if (node.oriented) {
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double u = node.ux[k] * p.x + node.uy[k] * p.y, v = node.ux[k] * p.y - node.uy[k] * p.x;
+        const double du = std::max(std::max(node.lo_u[k] - u, u - node.hi_u[k]), 0.0);
+        const double dv = std::max(std::max(node.lo_v[k] - v, v - node.hi_v[k]), 0.0);
+        // Less a relative margin for the projections' rounding far from the part.
+        box2[k] = (du * du + dv * dv) * (1 - 1e-12);
+      }
+    } else {  // boxes: u = x, v = y
+      for (std::size_t k = 0; k < 4; ++k) {
+        // (Both sides first, then zero: maxsd without a branch.)
+        const double dx = std::max(std::max(node.lo_u[k] - p.x, p.x - node.hi_u[k]), 0.0);
+        const double dy = std::max(std::max(node.lo_v[k] - p.y, p.y - node.hi_v[k]), 0.0);
+        box2[k] = dx * dx + dy * dy;
+      }
     }
     // The children within reach, sorted into the stack in place, the
     // farthest deepest (the nearest is popped first). In place: copied from

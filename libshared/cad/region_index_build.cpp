@@ -11,6 +11,11 @@
 namespace tk::cad {
 namespace {
 
+// A child's rectangle is taken along its chord where that is this much smaller
+// than its box: a stretch of a curve or a slanted line. (Elsewhere the box
+// serves as well, and a node of boxes alone is searched without projections.)
+constexpr double kOrientedArea = 0.2;
+
 /// The first and last of n cells of side `step` from `origin` that [lo, hi] meets (clamped to the row).
 std::pair<std::size_t, std::size_t> cells_spanned(double lo, double hi, double origin, double step, std::size_t n) {
   const auto at = [&](double x) {
@@ -50,7 +55,7 @@ std::uint32_t RegionIndex::Impl::build_node(std::uint32_t begin, std::uint32_t e
   return index;
 }
 
-std::uint32_t RegionIndex::Impl::build_wide(std::uint32_t node) {
+std::uint32_t RegionIndex::Impl::build_wide(std::uint32_t node, Frame& whole) {
   std::uint32_t below[4];
   std::size_t n = 0;
   const auto take = [&](std::uint32_t b) {
@@ -67,19 +72,76 @@ std::uint32_t RegionIndex::Impl::build_wide(std::uint32_t node) {
   }
   const auto index = static_cast<std::uint32_t>(wide.size());
   wide.emplace_back();
+  // The whole node's rectangle comes from its children's: their chords' ends and their corners.
+  Point chord_ends[8], corners[16];
+  std::size_t chord_count = 0, corner_count = 0;
   for (std::size_t k = 0; k < 4; ++k) {
-    Box box{kInf, kInf, -kInf, -kInf};
+    Frame f;
     std::uint32_t child = kNoChild, count = 0;
     if (k < n) {
       const Node& b = nodes[below[k]];
-      box = b.box, count = b.count;
-      child = b.count > 0 ? kLeafChild | b.first : build_wide(below[k]);
+      count = b.count;
+      if (b.count > 0) {
+        child = kLeafChild | b.first;
+        Point leaf_ends[8], points[16];
+        std::size_t point_count = 0;
+        for (std::uint32_t i = 0; i < b.count; ++i) {
+          const std::uint32_t e = order[b.first + i];
+          leaf_ends[2 * i] = ends[2 * e], leaf_ends[2 * i + 1] = ends[2 * e + 1];
+          if (kernels[e].side == 0) {  // a line lies between its ends
+            points[point_count++] = ends[2 * e], points[point_count++] = ends[2 * e + 1];
+          } else {  // an arc within its box
+            const Box& c = boxes[e];
+            for (const Point q :
+                 {Point{c.min_x, c.min_y}, Point{c.max_x, c.min_y}, Point{c.min_x, c.max_y}, Point{c.max_x, c.max_y}})
+              points[point_count++] = q;
+          }
+        }
+        f = frame(leaf_ends, 2 * b.count, points, point_count, b.box);
+      } else {
+        child = build_wide(below[k], f);
+      }
+      chord_ends[chord_count++] = f.a, chord_ends[chord_count++] = f.b;
+      for (const double u : {f.lo_u, f.hi_u})
+        for (const double v : {f.lo_v, f.hi_v}) corners[corner_count++] = {u * f.ux - v * f.uy, u * f.uy + v * f.ux};
     }
     Wide& w = wide[index];  // after the recursion, which may have moved it
-    w.min_x[k] = box.min_x, w.min_y[k] = box.min_y, w.max_x[k] = box.max_x, w.max_y[k] = box.max_y;
+    w.ux[k] = f.ux, w.uy[k] = f.uy, w.lo_u[k] = f.lo_u, w.hi_u[k] = f.hi_u, w.lo_v[k] = f.lo_v, w.hi_v[k] = f.hi_v;
     w.child[k] = child, w.count[k] = count;
+    w.oriented = (k > 0 && w.oriented) || f.ux != 1;
   }
+  whole = frame(chord_ends, chord_count, corners, corner_count, nodes[node].box);
   return index;
+}
+
+RegionIndex::Impl::Frame RegionIndex::Impl::frame(const Point* chord_ends, std::size_t end_count, const Point* points,
+                                                  std::size_t point_count, const Box& box) const {
+  Frame f{1, 0, box.min_x, box.max_x, box.min_y, box.max_y, chord_ends[0], chord_ends[0]};
+  // The chord: the end farthest from the first, and the one farthest from that.
+  double widest = 0;
+  const auto farthest = [&](Point from, Point& to) {
+    widest = 0;
+    for (std::size_t i = 0; i < end_count; ++i) {
+      const double dx = chord_ends[i].x - from.x, dy = chord_ends[i].y - from.y;
+      if (dx * dx + dy * dy > widest) widest = dx * dx + dy * dy, to = chord_ends[i];
+    }
+  };
+  farthest(chord_ends[0], f.a);
+  farthest(f.a, f.b);
+  if (!(widest > 0)) return f;
+  const double chord = std::sqrt(widest);
+  Frame along{(f.b.x - f.a.x) / chord, (f.b.y - f.a.y) / chord, kInf, -kInf, kInf, -kInf, f.a, f.b};
+  for (std::size_t i = 0; i < point_count; ++i) {
+    const Point q = points[i];
+    const double u = along.ux * q.x + along.uy * q.y, v = along.ux * q.y - along.uy * q.x;
+    along.lo_u = std::min(along.lo_u, u), along.hi_u = std::max(along.hi_u, u);
+    along.lo_v = std::min(along.lo_v, v), along.hi_v = std::max(along.hi_v, v);
+  }
+  // Padded as the boxes are, beyond the projections' (and the corners') rounding.
+  const double pad = 2 * rounding;
+  along.lo_u -= pad, along.hi_u += pad, along.lo_v -= pad, along.hi_v += pad;
+  const double area = (along.hi_u - along.lo_u) * (along.hi_v - along.lo_v);
+  return area < kOrientedArea * (box.max_x - box.min_x) * (box.max_y - box.min_y) ? along : f;
 }
 
 void RegionIndex::Impl::build_grid() {
@@ -334,7 +396,8 @@ RegionIndex::RegionIndex(const std::vector<Loop>& loops, Layout layout) : impl_(
   m.nodes.reserve(m.segments.size());
   m.build_node(0, static_cast<std::uint32_t>(m.order.size()));
   m.wide.reserve(m.nodes.size() / 3 + 1);
-  m.build_wide(0);
+  Impl::Frame whole;
+  m.build_wide(0, whole);
   m.ordered_kernels.reserve(m.order.size());
   for (const std::uint32_t e : m.order) m.ordered_kernels.push_back(m.kernels[e]);
   m.grid_wanted = layout == Layout::grid;  // laid out by the first query() (Impl::ensure_grid)

@@ -276,12 +276,30 @@ struct RegionIndex::Impl {
   /// element search: half the steps, four boxes at a time (tree_nearest
   /// took 1.5 to 2 times as long over the binary nodes).
   static constexpr std::uint32_t kLeafChild = 1u << 31, kNoChild = UINT32_MAX;
-  struct Wide {
-    double min_x[4], min_y[4], max_x[4], max_y[4];  // the children's boxes
+  struct alignas(64) Wide {
+    // Child k's elements lie in the rectangle lo_u <= u.x <= hi_u, lo_v <= v.x <= hi_v,
+    // u = (ux, uy) a unit vector, v = (-uy, ux). Along the chord of a finely
+    // divided curve it is far thinner than the axis-aligned box, whose corner
+    // reaches toward a point R off the curve: offsetting a 100k-element wavy
+    // ring, the tree's searches visited 18 nodes each over boxes, 9.4 over
+    // rectangles. (The fields a node of boxes alone reads come first, in
+    // three cache lines.)
+    double lo_u[4], hi_u[4], lo_v[4], hi_v[4];
     std::uint32_t child[4];  // a Wide node, or kLeafChild | the leaf's first in `order`, or kNoChild
     std::uint32_t count[4];  // a leaf's elements
+    bool oriented;           // whether any child's u is not (1, 0) (else the rectangles are boxes)
+    double ux[4], uy[4];
   };
   std::vector<Wide> wide;
+  struct Frame {  // one child's rectangle as in Wide; while building, the chord it runs along
+    double ux = 1, uy = 0, lo_u = kInf, hi_u = -kInf, lo_v = kInf, hi_v = -kInf;
+    Point a, b;
+  };
+  /// The rectangle about `points` along the chord of `chord_ends` (two far
+  /// apart of them), or `box` unless the rectangle is much the smaller.
+  /// A leaf's from its elements, an inner node's from its children's chords and corners.
+  Frame frame(const Point* chord_ends, std::size_t end_count, const Point* points, std::size_t point_count,
+              const Box& box) const;
   // kernels[order[i]] at i: a leaf's elements side by side, for tree_nearest.
   // (Not for tree_within: the grid's build reads `kernels` for the same
   // elements just after, and the second array cost its whole grid some 9 %.)
@@ -356,7 +374,7 @@ struct RegionIndex::Impl {
 
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);
   /// The Wide node over binary node `node`: its grandchildren (or children that are leaves).
-  std::uint32_t build_wide(std::uint32_t node);
+  std::uint32_t build_wide(std::uint32_t node, Frame& whole);
   void tree_nearest(Point p, double& best2, std::uint32_t& best) const;
   /// The elements within `radius` of p (and any whose padded box is),
   /// less those `less` finds dominated (whole boxes at once); false (out
