@@ -6,7 +6,8 @@
 /// first deepest sample, refined by a golden-section search. The gap is
 /// 1-Lipschitz along the drawing (|g(p) - g(q)| <= |p - q|), so most
 /// samples need no search of the contour: one exactly known a little way
-/// back already puts them above the threshold (or below it), and within a
+/// back, or the element's far end (asked first on a long element), already
+/// puts them above the threshold (or below it), and within a
 /// run a branch and bound asks only the samples that could still be the
 /// deepest. Where one element of the contour is provably nearest all along
 /// a stretch (a slot's floor), gaps there are its distance, no search; and
@@ -125,6 +126,9 @@ std::size_t last_within(std::size_t from, double room, double spacing, bool stri
   return j;
 }
 
+/// Samples from which an element's far end is asked first (classify()).
+constexpr std::size_t kFarEndFirst = 8;
+
 /// Sorts every sample to its side of the threshold, asking the exact gap
 /// only where the bounds leave it open. Runs of samples are settled at
 /// once: by the Lipschitz bound from the last exact sample (a sample lies
@@ -139,6 +143,20 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, doub
     std::fill(at.uncut.begin() + static_cast<std::ptrdiff_t>(from),
               at.uncut.begin() + static_cast<std::ptrdiff_t>(to) + 1, uncut);
   };
+  const auto ask = [&](std::size_t i, const Point& p) {
+    at.gaps[i] = gaps.at(p, counts.sampling);
+    at.exact[i] = 1;
+    at.elements[i] = gaps.last_element();
+    at.nearest[i] = gaps.last_nearest();
+    at.uncut[i] = at.gaps[i] > threshold;
+  };
+  // A long element's far end first: its gap bounds every sample before it
+  // (Lipschitz, backward), and deep in material left uncut (a slot's wall
+  // running down from the tool's reach) that settles most of the element at
+  // once, where the forward bounds only doubled their reach question by
+  // question. The answer is carried on to the next element.
+  const std::size_t end = at.last;
+  if (end >= kFarEndFirst && !at.exact[end]) ask(end, at.point(end));
   // The last answer's element bounds the gap from above; tried only after
   // a sample within reach (along material left uncut it fails every time).
   bool last_within_reach = true;
@@ -148,6 +166,14 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, doub
       last_within_reach = !at.uncut[i];
       anchor = i++;
       continue;
+    }
+    if (at.exact[end]) {  // from i on to the end, the end's bound only tightens
+      const double g = at.gaps[end], along = static_cast<double>(end - i) * spacing;
+      if (g - along - slack > threshold || g + along + slack <= threshold) {
+        settle(i, end - 1, g > threshold);
+        i = end;
+        continue;
+      }
     }
     if (anchor != SIZE_MAX) {
       const double g = at.gaps[anchor];
@@ -185,11 +211,7 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, doub
       i = reach + 1;
       continue;
     }
-    at.gaps[i] = gaps.at(p, counts.sampling);
-    at.exact[i] = 1;
-    at.elements[i] = gaps.last_element();
-    at.nearest[i] = gaps.last_nearest();
-    at.uncut[i] = at.gaps[i] > threshold;
+    ask(i, p);
     last_within_reach = !at.uncut[i];
     anchor = i++;
   }
