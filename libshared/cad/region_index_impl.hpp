@@ -285,10 +285,10 @@ struct RegionIndex::Impl {
     // rectangles. (The fields a node of boxes alone reads come first, in
     // three cache lines.)
     double lo_u[4], hi_u[4], lo_v[4], hi_v[4];
-    std::uint32_t child[4];  // a Wide node, or kLeafChild | the leaf's first in `order`, or kNoChild
-    std::uint32_t count[4];  // a leaf's elements
-    bool oriented;           // whether any child's u is not (1, 0) (else the rectangles are boxes)
-    double ux[4], uy[4];
+    std::uint32_t child[4];           // a Wide node, or kLeafChild | the leaf's first in `order`, or kNoChild
+    std::uint32_t count[4];           // a leaf's elements
+    bool oriented;                    // whether any child's u is not (1, 0) (else the rectangles are boxes)
+    alignas(16) double ux[4], uy[4];  // (aligned for SSE2 loads)
   };
   std::vector<Wide> wide;
   struct Frame {  // one child's rectangle as in Wide; while building, the chord it runs along
@@ -375,6 +375,8 @@ struct RegionIndex::Impl {
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end);
   /// The Wide node over binary node `node`: its grandchildren (or children that are leaves).
   std::uint32_t build_wide(std::uint32_t node, Frame& whole);
+  /// The squared distances from p to node's four rectangles (region_distance.cpp).
+  [[gnu::always_inline]] static inline void child_distances(const Wide& node, Point p, double* box2);
   void tree_nearest(Point p, double& best2, std::uint32_t& best) const;
   /// The elements within `radius` of p (and any whose padded box is),
   /// less those `less` finds dominated (whole boxes at once); false (out
