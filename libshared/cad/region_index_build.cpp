@@ -108,7 +108,8 @@ std::uint32_t RegionIndex::Impl::build_wide(std::uint32_t node, Frame& whole) {
     Wide& w = wide[index];  // after the recursion, which may have moved it
     w.ux[k] = f.ux, w.uy[k] = f.uy, w.lo_u[k] = f.lo_u, w.hi_u[k] = f.hi_u, w.lo_v[k] = f.lo_v, w.hi_v[k] = f.hi_v;
     w.child[k] = child, w.count[k] = count;
-    w.oriented = (k > 0 && w.oriented) || f.ux != 1;
+    // u = (1, 0) exactly: a nearly level chord's ux rounds to 1 while its uy is not 0.
+    w.oriented = (k > 0 && w.oriented) || f.ux != 1 || f.uy != 0;
   }
   whole = frame(chord_ends, chord_count, corners, corner_count, nodes[node].box);
   return index;

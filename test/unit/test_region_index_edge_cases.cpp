@@ -2,8 +2,8 @@
 /// @brief RegionIndex against brute_force_query where its grid is at an
 /// extreme: a strip thousands of times longer than thick (more than 4,096
 /// cells a side, which the grid once capped), outlines split into many
-/// collinear pieces and drawn twice over (exact ties everywhere), and
-/// boundaries of one or two elements.
+/// collinear pieces and drawn twice over (exact ties everywhere), an edge
+/// nearly but not quite level, and boundaries of one or two elements.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -75,6 +75,25 @@ TEST(RegionIndexEdgeCases, CollinearAndDuplicatedPiecesMatchBruteForce) {
   std::vector<Point> points = probe::probe_points(random, loops, 3000);
   for (int y = -8; y <= 72; y += 2)
     for (int x = -8; x <= 72; ++x) points.push_back({x * 1.0, y * 1.0});  // integer points: exact ties
+  probe::compare(loops, points);
+}
+
+/// An edge so nearly level (a rise of 9e-9 a millimetre) that the chords
+/// along it round to u = (1, 9e-9) with ux exactly 1: the tree's rectangles
+/// there are oriented all the same, and a search that took a node of them
+/// for axis-aligned boxes misjudged them by the rise times x (some 9e-6 mm
+/// here), passing over a vertex's lower-indexed element for its equally
+/// near neighbour (element 21 named at vertex 21, where brute force names 20).
+TEST(RegionIndexEdgeCases, ANearlyLevelEdgeMatchesBruteForce) {
+  std::vector<Point> v;
+  const double rise = 9e-9;
+  for (int i = 0; i <= 400; ++i) v.push_back({1000.0 + i, 1 + rise * i});
+  v.push_back({1400, 60}), v.push_back({1000, 60});
+  const std::vector<Loop> loops{closed(v)};
+  std::mt19937_64 random(44);
+  std::vector<Point> points = probe::probe_points(random, loops, 1000);
+  for (int i = 0; i <= 400; ++i)  // on every vertex of the level edge, and a hair either side of it
+    for (const double off : {0.0, 1e-9, -1e-9}) points.push_back({1000.0 + i, 1 + rise * i + off});
   probe::compare(loops, points);
 }
 
