@@ -109,6 +109,13 @@ struct Samples {
     uncut.assign(count, 0);
   }
   Point point(std::size_t i) const { return point_at(*segment, static_cast<double>(i) / last); }
+  /// Sample i (at p) asked of the contour: its exact gap, nearest element and point.
+  void ask(std::size_t i, Point p, ExactGaps& contour, std::size_t& count) {
+    gaps[i] = contour.at(p, count);
+    exact[i] = 1;
+    elements[i] = contour.last_element();
+    nearest[i] = contour.last_nearest();
+  }
 };
 
 /// The last sample after `from` (up to `last`) whose distance along the
@@ -143,11 +150,8 @@ void classify(Samples& at, ExactGaps& gaps, double threshold, double slack, doub
     std::fill(at.uncut.begin() + static_cast<std::ptrdiff_t>(from),
               at.uncut.begin() + static_cast<std::ptrdiff_t>(to) + 1, uncut);
   };
-  const auto ask = [&](std::size_t i, const Point& p) {
-    at.gaps[i] = gaps.at(p, counts.sampling);
-    at.exact[i] = 1;
-    at.elements[i] = gaps.last_element();
-    at.nearest[i] = gaps.last_nearest();
+  const auto ask = [&](std::size_t i, Point p) {
+    at.ask(i, p, gaps, counts.sampling);
     at.uncut[i] = at.gaps[i] > threshold;
   };
   // A long element's far end first: its gap bounds every sample before it
@@ -269,12 +273,7 @@ bool settled_by_sole(Samples& at, std::size_t begin, std::size_t last, ExactGaps
 /// next to l and r.
 std::size_t first_deepest(Samples& at, std::size_t begin, std::size_t last, ExactGaps& gaps, double spacing,
                           double radius, bool straight, double slack, UncutQueryCounts& counts, SoleStretch& sole) {
-  const auto ask = [&](std::size_t i) {
-    at.gaps[i] = gaps.at(at.point(i), counts.deepest);
-    at.exact[i] = 1;
-    at.elements[i] = gaps.last_element();
-    at.nearest[i] = gaps.last_nearest();
-  };
+  const auto ask = [&](std::size_t i) { at.ask(i, at.point(i), gaps, counts.deepest); };
   for (const std::size_t end : {begin, last})
     if (!at.exact[end]) ask(end);
   std::size_t deepest = begin;
